@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Builds ALP85 and runs every test through CTest.
+#   scripts/test.sh               release build (-Werror) + all tests, then the same under ASan+UBSan
+#   scripts/test.sh --fast        release build + all tests only
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+sanitize=1
+[ "${1:-}" = "--fast" ] && sanitize=0
+jobs=$(nproc)
+
+run_suite() {  # build dir, extra cmake args...
+  local dir=$1; shift
+  cmake -S . -B "$dir" -G Ninja -DALP85_WERROR=ON "$@" >/dev/null
+  cmake --build "$dir" -j "$jobs"
+  (cd "$dir" && ctest --output-on-failure -j "$jobs")
+}
+
+echo "== release build and tests (build/)"
+run_suite build -DCMAKE_BUILD_TYPE=Release
+
+if [ $sanitize -eq 1 ]; then
+  echo "== ASan + UBSan build and tests (build-asan/)"
+  run_suite build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DALP85_SANITIZE=ON -DALP85_BENCH=OFF
+fi
