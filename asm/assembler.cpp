@@ -11,7 +11,7 @@ namespace alp85::asm85 {
 namespace {
 
 constexpr int kMaxPasses = 10;
-constexpr std::size_t kMaxLinesPerPass = 2'000'000;  // bounds REPT/macro bombs
+constexpr std::size_t kMaxLinesPerPass = 1'000'000;  // bounds REPT/macro bombs
 constexpr int kMaxIncludeDepth = 32;
 constexpr std::uintmax_t kMaxFileSize = 16u << 20;
 
@@ -232,7 +232,7 @@ bool Assembler::fetch(Line& out) {
         if (++lines_this_pass_ > kMaxLinesPerPass) {
             if (!limit_reported_) {
                 cur_line_ = &out;
-                error(0, "more than 2000000 lines in one pass (runaway REPT or macro recursion?)");
+                error(0, "more than 1000000 lines in one pass (runaway REPT or macro recursion?)");
                 limit_reported_ = true;
             }
             ended_ = true;
@@ -353,14 +353,14 @@ std::uint8_t Assembler::byte_of(const Value& v, int col) {
 
 void Assembler::emit(std::uint8_t b) {
     if (pc_ > 0xFFFF) {
-        if (!pc_overflow_reported_) error(0, "code beyond address 0FFFFH");
+        if (!pc_overflow_reported_) error(op_col_, "code beyond address 0FFFFH");
         pc_overflow_reported_ = true;
         ++pc_;
         return;
     }
     auto addr = static_cast<std::uint16_t>(pc_);
     if (!image_.write(addr, b) && !overlap_reported_) {
-        warning(0, fmt::format("overlapping ORG regions: address {:04X}H is written twice", addr));
+        warning(op_col_, fmt::format("overlapping ORG regions: address {:04X}H is written twice", addr));
         overlap_reported_ = true;
     }
     if (!listing_.empty()) {

@@ -181,7 +181,7 @@ private:
     std::string comment_delim_;  // inside M80 .COMMENT until this character
     const Line* cur_line_ = nullptr;
     std::string cur_text_;  // the current line as tokenized (for diagnostics)
-    int stmt_col_base_ = 0;
+    int op_col_ = 0;  // column of the current statement's operation, for emission warnings
 };
 
 bool is_register_name(const std::string& upper, int* value = nullptr);
