@@ -26,6 +26,7 @@ CpmMachine::CpmMachine(Variant variant) : ram_(0x10000, 0), cpu_(bus_, variant) 
 
 std::string CpmMachine::load_program(std::span<const std::uint8_t> image) {
     const std::size_t room = bdos_entry() - kTpa;
+    if (image.empty()) return "program is empty";
     if (image.size() > room)
         return "program is " + std::to_string(image.size()) + " bytes; the TPA holds " + std::to_string(room);
     std::copy(image.begin(), image.end(), ram_.begin() + kTpa);
