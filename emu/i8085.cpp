@@ -223,7 +223,7 @@ void I8085::execute() {
         sp = r_.sp, pc = r_.pc;                                                     \
     } while (0)
 #define SYNC(back) (t_ = t - (back))
-#define FETCH(addr)                                                        \
+#define FETCH_AT(addr, when)                                               \
     ({                                                                     \
         const std::uint16_t fa_ = (addr);                                  \
         const std::uint8_t* const fp_ = rp[fa_ >> 8];                      \
@@ -231,11 +231,12 @@ void I8085::execute() {
         if (fp_) [[likely]]                                                \
             fv_ = fp_[fa_ & 0xFF];                                         \
         else {                                                             \
-            fv_ = slow_read(fa_, t - 3);                                   \
+            fv_ = slow_read(fa_, (when));                                  \
             limit = limit_;                                                \
         }                                                                  \
         fv_;                                                               \
     })
+#define FETCH(addr) FETCH_AT(addr, t - 3)
 #define RDD(addr)                                                          \
     ({                                                                     \
         const std::uint16_t ra_ = (addr);                                  \
@@ -321,7 +322,7 @@ void I8085::execute() {
                 }                                                          \
             }                                                              \
         }                                                                  \
-        op = FETCH(pc);                                                    \
+        op = FETCH_AT(pc, t); /* the opcode fetch starts now */            \
         pc = static_cast<std::uint16_t>(pc + 1);                           \
         t += kBase<V>[op];                                                 \
         ++n;                                                               \
@@ -1132,6 +1133,7 @@ done:
 #undef LOAD_REGS
 #undef SYNC
 #undef FETCH
+#undef FETCH_AT
 #undef RDD
 #undef WR
 #undef DBG_IO
