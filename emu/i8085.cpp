@@ -906,7 +906,7 @@ op_B6:  // ORA M
     { const std::uint8_t v = RDD(HL()); a |= v; f = kSZP<V>[a]; }
     NEXT();
 op_B7:  // ORA A
-    a |= a; f = kSZP<V>[a];
+    f = kSZP<V>[a];  // A OR A = A
     NEXT();
 op_B8:  // CMP B
     alu_cmp<V>(a, f, b);
