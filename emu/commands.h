@@ -1,0 +1,12 @@
+// The alp85 subcommands; each lives in its own file (cmd_*.cpp) and registers itself on the app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace alp85::cli {
+
+// Each add_* registers a subcommand whose callback stores the process exit status in `status`.
+void add_cpm_command(CLI::App& app, int& status);
+void add_bench_command(CLI::App& app, int& status);
+
+}  // namespace alp85::cli

@@ -1,0 +1,22 @@
+// alp85: the ALP 85 emulator's command-line front end.
+#include <cstdio>
+#include <exception>
+
+#include "emu/commands.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"ALP85: emulator of the ALP 85 Intel 8085 board"};
+    app.require_subcommand(1);
+    int status = 0;
+    alp85::cli::add_cpm_command(app, status);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "alp85: %s\n", e.what());
+        return 1;
+    }
+    return status;
+}
