@@ -50,7 +50,8 @@ std::vector<std::uint8_t> encode(const std::vector<Section>& sections) {
 std::vector<Section> decode(const std::vector<std::uint8_t>& file) {
     if (file.size() < kHeaderSize || !std::equal(kMagic.begin(), kMagic.end(), file.begin()))
         throw SnapshotError("not an ALP85 snapshot (no ALP85SNP header)");
-    periph::ByteReader r(std::span(file).subspan(8, 12), "ALP85");
+    const std::span<const std::uint8_t> all(file);
+    periph::ByteReader r{all.subspan(8, 12), "ALP85"};
     const std::uint32_t version = r.u32();
     const std::uint32_t length = r.u32();
     const std::uint32_t crc = r.u32();
@@ -66,7 +67,7 @@ std::vector<Section> decode(const std::vector<std::uint8_t>& file) {
         throw SnapshotError("snapshot is corrupt (CRC-32 mismatch)");
 
     std::vector<Section> sections;
-    periph::ByteReader p(std::span(file).subspan(kHeaderSize), "ALP85");
+    periph::ByteReader p{all.subspan(kHeaderSize), "ALP85"};
     std::size_t left = length;
     while (left > 0) {
         if (left < 8) p.fail("section header cut short");

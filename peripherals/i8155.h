@@ -116,6 +116,8 @@ public:
     std::uint8_t read(std::uint8_t offset, std::uint64_t now);
     void write(std::uint8_t offset, std::uint8_t value, std::uint64_t now);
     // Memory space (IO/M low): the 256-byte RAM.
+    // The RAM itself, for a board that maps it straight into its CPU's page table.
+    std::span<std::uint8_t, 256> ram() { return s_.ram; }
     std::uint8_t read_memory(std::uint8_t address) const { return s_.ram[address]; }
     void write_memory(std::uint8_t address, std::uint8_t value) { s_.ram[address] = value; }
 
