@@ -1,0 +1,138 @@
+// asm85: the command-line front end of the assembler library.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include "asm/asm85.h"
+#include "asm/lexer.h"
+
+namespace {
+
+using namespace alp85::asm85;
+
+constexpr const char* kExamples = R"(Examples:
+  asm85 monitor.asm                      writes monitor.hex
+  asm85 prog.asm -o prog.hex --lst prog.lst --map prog.json
+  asm85 bdos.asm --bin bdos.bin --bin-start 0E800H --bin-end 0F5FFH --fill 0
+  asm85 test.asm --cpu 8085u -D DEBUG -D BAUD=9600 -I include/
+Diagnostics are written as file:line:col: error: message. Exit status is 1 when there is an
+error, and then no output file is written.)";
+
+// 0x1F, 1FH, 31: what a user may type for an address.
+std::optional<std::uint32_t> parse_address(const std::string& s) {
+    std::uint32_t v = 0;
+    if (s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
+        if (!parse_number(s.substr(2) + "H", 10, v)) return std::nullopt;
+    } else if (!parse_number(s, 10, v)) {
+        return std::nullopt;
+    }
+    return v;
+}
+
+// Writes through a temporary file and a rename, so a failure leaves no half-written output.
+bool write_file(const std::string& path, const void* data, std::size_t size) {
+    std::string tmp = path + ".tmp" + std::to_string(::getpid());
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) {
+            std::cerr << "asm85: error: cannot write " << path << "\n";
+            return false;
+        }
+        out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
+        if (!out) {
+            std::cerr << "asm85: error: cannot write " << path << "\n";
+            std::remove(tmp.c_str());
+            return false;
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::cerr << "asm85: error: cannot write " << path << "\n";
+        std::remove(tmp.c_str());
+        return false;
+    }
+    return true;
+}
+
+bool write_text(const std::string& path, const std::string& text) { return write_file(path, text.data(), text.size()); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"asm85: Intel 8080/8085 macro assembler (Intel ASM80, DR ASM/MAC and M80 dialects)", "asm85"};
+    std::string source, hex_out, bin_out, lst_out, map_out, cpu = "8085", bin_start, bin_end, fill = "0";
+    std::vector<std::string> defines, includes;
+    bool quiet = false, no_unused = false;
+    app.add_option("SOURCE", source, "Assembly source file")->required();
+    app.add_option("-o,--hex", hex_out, "Intel HEX output (default: SOURCE with .hex, when no other output is asked)");
+    app.add_option("--bin", bin_out, "Raw binary output");
+    app.add_option("--bin-start", bin_start, "First address of the binary (default: lowest emitted)");
+    app.add_option("--bin-end", bin_end, "Last address of the binary (default: highest emitted)");
+    app.add_option("--fill", fill, "Byte for gaps in the binary (default 0)");
+    app.add_option("--lst", lst_out, "Listing output");
+    app.add_option("--map", map_out, "JSON map output (symbols, byte -> source line)");
+    app.add_option("-D,--define", defines, "Define NAME or NAME=VALUE before assembly");
+    app.add_option("-I,--include", includes, "Directory searched by INCLUDE and MACLIB");
+    app.add_option("--cpu", cpu, "8080, 8085 (default) or 8085u (8085 with its undocumented instructions)")
+        ->check(CLI::IsMember({"8080", "8085", "8085u", "8085U"}));
+    app.add_flag("-q,--quiet", quiet, "Print errors only, no warnings");
+    app.add_flag("--no-unused-macro-warnings", no_unused, "Don't warn about macros that are never used");
+    app.footer(kExamples);
+    CLI11_PARSE(app, argc, argv);
+
+    Options opt;
+    opt.cpu = *parse_cpu(cpu);
+    opt.warn_unused_macros = !no_unused;
+    for (auto& d : defines) {
+        auto eq = d.find('=');
+        opt.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "" : d.substr(eq + 1));
+    }
+    for (auto& i : includes) opt.include_dirs.emplace_back(i);
+
+    Result r = assemble_file(source, opt);
+    for (auto& d : r.diagnostics) {
+        if (quiet && d.severity != Severity::Error) continue;
+        std::cerr << format_diagnostic(d);
+    }
+    if (!r.ok()) {
+        std::cerr << "asm85: " << r.error_count() << (r.error_count() == 1 ? " error" : " errors") << ", no output written\n";
+        return 1;
+    }
+
+    std::optional<std::uint32_t> first, last, fillv = parse_address(fill);
+    if (!bin_start.empty() && !(first = parse_address(bin_start))) {
+        std::cerr << "asm85: error: bad --bin-start '" << bin_start << "'\n";
+        return 1;
+    }
+    if (!bin_end.empty() && !(last = parse_address(bin_end))) {
+        std::cerr << "asm85: error: bad --bin-end '" << bin_end << "'\n";
+        return 1;
+    }
+    if (!fillv || *fillv > 0xFF || (first && *first > 0xFFFF) || (last && *last > 0xFFFF)) {
+        std::cerr << "asm85: error: --fill must be a byte and addresses at most 0FFFFH\n";
+        return 1;
+    }
+
+    if (hex_out.empty() && bin_out.empty() && lst_out.empty() && map_out.empty())
+        hex_out = std::filesystem::path(source).replace_extension(".hex").string();
+    bool ok = true;
+    if (!hex_out.empty()) ok = write_text(hex_out, write_intel_hex(r.image)) && ok;
+    if (!bin_out.empty()) {
+        std::uint16_t lo = first ? static_cast<std::uint16_t>(*first) : r.image.empty() ? 0 : r.image.lowest();
+        std::uint16_t hi = last ? static_cast<std::uint16_t>(*last) : r.image.empty() ? 0 : r.image.highest();
+        if (r.image.empty() && !first && !last) {
+            ok = write_file(bin_out, "", 0) && ok;
+        } else if (hi < lo) {
+            std::cerr << "asm85: error: --bin-end is below --bin-start\n";
+            ok = false;
+        } else {
+            auto bytes = write_binary(r.image, lo, hi, static_cast<std::uint8_t>(*fillv));
+            ok = write_file(bin_out, bytes.data(), bytes.size()) && ok;
+        }
+    }
+    if (!lst_out.empty()) ok = write_text(lst_out, write_listing(r)) && ok;
+    if (!map_out.empty()) ok = write_text(map_out, write_json_map(r)) && ok;
+    return ok ? 0 : 1;
+}
