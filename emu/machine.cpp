@@ -118,6 +118,9 @@ void Machine::wire() {
         bus_.map_io(r.first, r.last, dev);
     }
     // Interrupt wiring (board::kInterruptWiring).
+    // SHIFT and CNTL/STB are grounded on the ALP 85 (docs/peripherals.md): key codes carry 0 there.
+    kdc_.set_shift(false, 0);
+    kdc_.set_cntl_stb(false, 0);
     rio_.on_timer_out([this](bool level, std::uint64_t) { cpu_.set_trap(level); });
     kdc_.on_irq([this](bool level, std::uint64_t) { cpu_.set_rst55(level); });
     kdc_.set_return_lines_source([this](std::uint8_t sl) { return keypad_.return_lines(sl); });
@@ -137,9 +140,9 @@ std::span<std::uint8_t> Machine::storage(board::Memory id) {
     return {};
 }
 
-void Machine::load(std::uint16_t address, std::span<const std::uint8_t> bytes) {
-    // Check the whole range first, so a failed load changes nothing.
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
+namespace {
+void check_on_board(std::uint16_t address, std::size_t size) {
+    for (std::size_t i = 0; i < size; ++i) {
         const std::uint32_t a = address + static_cast<std::uint32_t>(i);
         const bool mapped = a <= 0xFFFF && std::any_of(board::kMemoryMap.begin(), board::kMemoryMap.end(),
                                                        [a](const board::MemoryRegion& r) {
@@ -148,11 +151,18 @@ void Machine::load(std::uint16_t address, std::span<const std::uint8_t> bytes) {
         if (!mapped)
             throw std::out_of_range(fmt::format("address {:04X}H is not on the ALP 85 (no memory there)", a));
     }
-    for (std::size_t i = 0; i < bytes.size(); ++i) poke(static_cast<std::uint16_t>(address + i), bytes[i]);
+}
+}  // namespace
+
+void Machine::load(std::uint16_t address, std::span<const std::uint8_t> bytes) {
+    load(std::vector<ImageSegment>{{address, {bytes.begin(), bytes.end()}}});
 }
 
 void Machine::load(const std::vector<ImageSegment>& image) {
-    for (const ImageSegment& s : image) load(s.address, s.bytes);  // checks each before writing it
+    // Check the whole image first, so a failed load changes nothing.
+    for (const ImageSegment& s : image) check_on_board(s.address, s.bytes.size());
+    for (const ImageSegment& s : image)
+        for (std::size_t i = 0; i < s.bytes.size(); ++i) poke(static_cast<std::uint16_t>(s.address + i), s.bytes[i]);
 }
 
 bool Machine::poke(std::uint16_t address, std::uint8_t value) {
