@@ -9,5 +9,6 @@ namespace alp85::cli {
 void add_cpm_command(CLI::App& app, int& status);
 void add_bench_command(CLI::App& app, int& status);
 void add_script_command(CLI::App& app, int& status);
+void add_run_command(CLI::App& app, int& status);
 
 }  // namespace alp85::cli

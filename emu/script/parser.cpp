@@ -454,6 +454,10 @@ private:
         if (at_word("DISPLAY")) {
             ++pos_;
             c.op = Op::PrintDisplay;
+            if (at_word("TEXT")) {  // the display as quoted text instead of seven-segment art
+                ++pos_;
+                c.text = "text";
+            }
             return true;
         }
         c.op = Op::Print;

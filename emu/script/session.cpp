@@ -446,7 +446,8 @@ Session::Outcome Session::execute(const Command& c) {
             }
             return {};
         case Op::PrintDisplay:
-            if (out)
+            if (out && c.text == "text") *out << '"' << m.display_text() << "\"\n";
+            else if (out)
                 for (const std::string& line : m.display_art()) *out << line << '\n';
             return {};
         case Op::Print:

@@ -119,6 +119,7 @@ TEST(ScriptParser, EachCommandsShape) {
     EXPECT_EQ(one("set reg PC 0800H").reg, Reg::PC);
     EXPECT_EQ(one("save a.snap").op, Op::Save);
     EXPECT_EQ(one("print display").op, Op::PrintDisplay);
+    EXPECT_EQ(one("print display text").text, "text");
 }
 
 TEST(ScriptParser, ErrorsPointAtTheirColumn) {
