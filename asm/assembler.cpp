@@ -1,5 +1,6 @@
 // The pass driver: line fetching from files and expansions, symbols, values and emission.
 #include "asm/assembler.h"
+#include "asm/instructions.h"
 
 #include <algorithm>
 #include <fstream>
@@ -11,7 +12,7 @@ namespace alp85::asm85 {
 namespace {
 
 constexpr int kMaxPasses = 10;
-constexpr std::size_t kMaxLinesPerPass = 2'000'000;  // bounds REPT/macro bombs
+constexpr std::size_t kMaxLinesPerPass = 1'000'000;  // bounds REPT/macro bombs
 constexpr int kMaxIncludeDepth = 32;
 constexpr std::uintmax_t kMaxFileSize = 16u << 20;
 
@@ -232,7 +233,7 @@ bool Assembler::fetch(Line& out) {
         if (++lines_this_pass_ > kMaxLinesPerPass) {
             if (!limit_reported_) {
                 cur_line_ = &out;
-                error(0, "more than 2000000 lines in one pass (runaway REPT or macro recursion?)");
+                error(0, "more than 1000000 lines in one pass (runaway REPT or macro recursion?)");
                 limit_reported_ = true;
             }
             ended_ = true;
@@ -278,15 +279,15 @@ void Assembler::diag(Severity s, int col, const std::string& msg) {
 }
 
 Value Assembler::lookup(const Token& t, bool registers) {
+    // As in ASM80 and DR ASM, register names are predefined symbols (B=0 ... A=7, SP=PSW=6) in
+    // every expression: `UR EQU B` then `MOV UR,A` is period practice.
+    (void)registers;
     int rv = 0;
-    if (registers && is_register_name(t.text, &rv)) return {static_cast<std::uint16_t>(rv), true};
-    auto it = syms_.find(t.text);
+    if (is_register_name(t.text, &rv)) return {static_cast<std::uint16_t>(rv), true};
+    auto it = syms_.find(key(t.text));
     if (it != syms_.end() && it->second.pass >= pass_ - 1) return {it->second.value, true};
     if (pass_ > 1) {
-        if (is_register_name(t.text))
-            error(t.col, "register '" + t.text + "' where a value is expected");
-        else
-            error(t.col, "undefined symbol '" + t.text + "'");
+        error(t.col, "undefined symbol '" + t.text + "'");
     }
     return {0, false};
 }
@@ -296,6 +297,8 @@ bool Assembler::expr(const std::vector<Token>& toks, std::size_t& pos, Value& ou
     ctx.pc = static_cast<std::uint16_t>(pc_ & 0xFFFF);
     ctx.lookup = [this, registers](const Token& t) { return lookup(t, registers); };
     ctx.error = [this](int col, const std::string& m) { error(col, m); };
+    ctx.is_mnemonic = [this](const std::string& w) { return find_mnemonic(w) != nullptr && syms_.count(w) == 0; };
+    ctx.instruction = [this, &toks](std::size_t first, std::size_t last) { return instruction_value(toks, first, last); };
     return eval_expr(toks, pos, ctx, out);
 }
 
@@ -308,7 +311,8 @@ bool Assembler::expr_all(const std::vector<Token>& toks, std::size_t pos, Value&
     return true;
 }
 
-void Assembler::define(const std::string& name, int col, std::uint16_t value, SymbolKind kind) {
+void Assembler::define(const std::string& full_name, int col, std::uint16_t value, SymbolKind kind) {
+    const std::string name = key(full_name);
     if (is_operator_word(name)) {
         error(col, "'" + name + "' is an operator and can't be a symbol");
         return;
@@ -327,6 +331,7 @@ void Assembler::define(const std::string& name, int col, std::uint16_t value, Sy
                 warning(col, fmt::format("'{}' is set on the command line to {:04X}H; this definition ({:04X}H) is ignored", name, e.value, value));
             return;
         }
+        if (kind == SymbolKind::Equ && e.kind == SymbolKind::Equ && e.value == value) return;  // ASM80 allows
         if (kind == SymbolKind::Set && e.kind == SymbolKind::Set) {
             e.value = value;
             e.file = file;
@@ -353,14 +358,14 @@ std::uint8_t Assembler::byte_of(const Value& v, int col) {
 
 void Assembler::emit(std::uint8_t b) {
     if (pc_ > 0xFFFF) {
-        if (!pc_overflow_reported_) error(0, "code beyond address 0FFFFH");
+        if (!pc_overflow_reported_) error(op_col_, "code beyond address 0FFFFH");
         pc_overflow_reported_ = true;
         ++pc_;
         return;
     }
     auto addr = static_cast<std::uint16_t>(pc_);
     if (!image_.write(addr, b) && !overlap_reported_) {
-        warning(0, fmt::format("overlapping ORG regions: address {:04X}H is written twice", addr));
+        warning(op_col_, fmt::format("overlapping ORG regions: address {:04X}H is written twice", addr));
         overlap_reported_ = true;
     }
     if (!listing_.empty()) {

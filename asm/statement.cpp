@@ -108,7 +108,7 @@ void Assembler::process_statement(const std::vector<Token>& toks, const Line& li
             label = toks[0].text;
             label_col = toks[0].col;
             p = 1;
-        } else if (!is_op_word(toks[0].text) && (toks[1].kind == Tok::End || op_at(1))) {
+        } else if (!is_op_word(toks[0].text) && ((toks[1].kind == Tok::End && toks[0].col == 0) || op_at(1))) {
             label = toks[0].text;  // a label without a colon (DR ASM, Intel's names)
             label_col = toks[0].col;
             p = 1;
@@ -126,6 +126,7 @@ void Assembler::process_statement(const std::vector<Token>& toks, const Line& li
     }
     const std::string op = punct(p, '=') ? std::string("=") : toks[p].text;
     const std::size_t args = p + 1;
+    op_col_ = toks[p].col;
     if (is_conditional_word(op)) {
         conditional(op, toks, args, line);
         return;

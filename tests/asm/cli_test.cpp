@@ -1,0 +1,85 @@
+// The asm85 executable: outputs, exit status, and no output file when there is an error.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "helpers.h"
+
+namespace alp85::asm85::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Cli : public ::testing::Test {
+protected:
+    fs::path dir;
+    void SetUp() override {
+        dir = fs::temp_directory_path() / ("asm85_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+    void write(const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; }
+    std::string read(const std::string& name) {
+        std::ifstream in(dir / name, std::ios::binary);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    }
+    int run(const std::string& args) {
+        std::string cmd = "cd '" + dir.string() + "' && '" ASM85_EXE "' " + args + " >out.txt 2>err.txt";
+        int st = std::system(cmd.c_str());
+        return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    }
+};
+
+TEST_F(Cli, WritesHexByDefault) {
+    write("p.asm", "\tORG 100H\n\tDB 1,2,3\n");
+    EXPECT_EQ(run("p.asm"), 0);
+    EXPECT_EQ(read("p.hex"), ":03010000010203F6\n:00000001FF\n");
+}
+
+TEST_F(Cli, AllOutputs) {
+    write("p.asm", "\tORG 100H\nS:\tDB 1\n\tDS 2\n\tDB 2\n\tEND S\n");
+    EXPECT_EQ(run("p.asm -o x.hex --bin x.bin --fill 0FFH --lst x.lst --map x.json"), 0) << read("err.txt");
+    EXPECT_EQ(read("x.bin"), std::string("\x01\xFF\xFF\x02", 4));
+    EXPECT_NE(read("x.lst").find("LOC  OBJ"), std::string::npos);
+    EXPECT_NE(read("x.json").find("\"symbols\""), std::string::npos);
+    EXPECT_EQ(run("p.asm --bin y.bin --bin-start 0FEH --bin-end 0x101"), 0);
+    EXPECT_EQ(read("y.bin"), std::string("\x00\x00\x01\x00", 4));
+}
+
+TEST_F(Cli, ErrorsMeanExit1AndNoOutput) {
+    write("bad.asm", "\tNOP\n\tJMP NOWHERE\n\tFOO\n");
+    write("old.hex", "previous");
+    EXPECT_EQ(run("bad.asm -o old.hex --bin b.bin --lst b.lst --map b.json"), 1);
+    EXPECT_EQ(read("old.hex"), "previous");
+    EXPECT_FALSE(fs::exists(dir / "b.bin"));
+    EXPECT_FALSE(fs::exists(dir / "b.lst"));
+    EXPECT_FALSE(fs::exists(dir / "b.json"));
+    std::string err = read("err.txt");
+    EXPECT_NE(err.find("bad.asm:2:6: error: undefined symbol 'NOWHERE'\n\tJMP NOWHERE\n\t    ^\n"), std::string::npos) << err;
+    EXPECT_NE(err.find("bad.asm:3:2: error: unknown instruction or directive 'FOO'"), std::string::npos) << err;
+}
+
+TEST_F(Cli, DefinesIncludesAndCpu) {
+    fs::create_directories(dir / "inc");
+    write("inc/k.inc", "K EQU 7\n");
+    write("p.asm", "\tINCLUDE k.inc\n\tDB K,V\n\tRIM\n");
+    EXPECT_EQ(run("p.asm -I inc -D V=3 -o p.hex"), 0) << read("err.txt");
+    // :03 0000 00 07 03 20 -> 03+07+03+20 = 2DH -> D3H.
+    EXPECT_EQ(read("p.hex"), ":03000000070320D3\n:00000001FF\n");
+    EXPECT_EQ(run("p.asm -I inc -D V=3 --cpu 8080 -o q.hex"), 1);
+    EXPECT_FALSE(fs::exists(dir / "q.hex"));
+}
+
+TEST_F(Cli, MissingSourceAndHelp) {
+    EXPECT_EQ(run("nothere.asm"), 1);
+    EXPECT_NE(read("err.txt").find("nothere.asm: error: cannot read source file"), std::string::npos);
+    EXPECT_EQ(run("--help"), 0);
+    EXPECT_NE(read("out.txt").find("Examples:"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test

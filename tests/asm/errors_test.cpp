@@ -1,0 +1,108 @@
+// Each class of error: its message and its file:line:col; every error of a run is reported.
+#include "helpers.h"
+
+namespace alp85::asm85::test {
+namespace {
+
+struct Case {
+    const char* src;
+    int line, col;
+    const char* message;
+};
+
+TEST(Errors, MessagesAndLocations) {
+    const Case cases[] = {
+        {"\tFOO A\n", 1, 2, "unknown instruction or directive 'FOO'"},
+        {"\tMOV A\n", 1, 2, "MOV takes 2 operands, not 1"},
+        {"\tNOP 1\n", 1, 6, "NOP takes 0 operands, not 1"},
+        {"\tMOV M,M\n", 1, 6, "invalid operand for MOV: MOV M,M does not exist"},
+        {"\tPUSH SP\n", 1, 7, "invalid operand for PUSH: PUSH SP does not exist"},
+        {"\tLXI A,0\n", 1, 6, "invalid operand for LXI: LXI A does not exist"},
+        {"\tMOV A,9\n", 1, 8, "register number must be 0 to 7"},
+        {"\tRST 8\n", 1, 6, "RST number must be 0 to 7"},
+        {"\tJMP NOWHERE\n", 1, 6, "undefined symbol 'NOWHERE'"},
+        {"\tDB 1/0\n", 1, 6, "division by zero"},
+        {"\tDB 'abc\n", 1, 5, "unterminated string"},
+        {"\tDB 12G\n", 1, 5, "invalid number '12G'"},
+        {"\tDB 8B\n", 1, 5, "invalid number '8B'"},
+        {"\tDW 70000\n", 1, 5, "number '70000' does not fit in 16 bits"},
+        {"\tDB (1+2\n", 1, 9, "expected ')'"},
+        {"\tDB 1+\n", 1, 7, "missing operand"},
+        {"\tLXI H,'ABC'\n", 1, 8, "string of more than 2 characters in an expression"},
+        {"X EQU 1\nX EQU 2\n", 2, 1, "'X' is already defined (first defined at t.asm:1)"},
+        {"A EQU 1\n", 1, 1, "'A' is a register name and can't be a symbol"},
+        {"\tENDIF\n", 1, 2, "ENDIF without IF"},
+        {"\tELSE\n", 1, 2, "ELSE without IF"},
+        {"\tENDM\n", 1, 2, "ENDM without MACRO, REPT, IRP or IRPC"},
+        {"\tEXITM\n", 1, 1, "EXITM outside a macro or repeat block"},
+        {"\tDB\n", 1, 4, "missing data"},
+        {"\tEQU 5\n", 1, 2, "EQU needs a name in the label field"},
+        {"\tORG 0FFFFH\n\tDW 1\n", 2, 2, "code beyond address 0FFFFH"},
+        {"M\tMACRO\n\tM\n\tENDM\n\tM\n", 2, 3, "macros nested more than 100 deep (a macro that calls itself?)"},
+        {"M\tMACRO A1\n\tENDM\n\tM 1,2\n", 3, 4, "macro M takes 1 argument(s), 2 given"},
+        {"\t.Z80\n", 1, 2, "Z80 mnemonics are not supported (asm85 is an 8080/8085 assembler)"},
+    };
+    for (auto& c : cases) {
+        auto r = assemble(c.src);
+        ASSERT_FALSE(r.ok()) << c.src;
+        auto e = first_error(r);
+        EXPECT_EQ(e.message, c.message) << c.src;
+        EXPECT_EQ(e.file, "t.asm") << c.src;
+        EXPECT_EQ(e.line, c.line) << c.src;
+        EXPECT_EQ(e.col, c.col) << c.src;
+    }
+}
+
+TEST(Errors, UnclosedBlocks) {
+    auto r = assemble("\tNOP\n\tIF 1\n\tNOP\n");
+    ASSERT_EQ(r.error_count(), 1);
+    EXPECT_EQ(first_error(r).message, "IF without ENDIF");
+    EXPECT_EQ(first_error(r).line, 2);
+    r = assemble("M\tMACRO\n\tNOP\n");
+    EXPECT_EQ(first_error(r).message, "missing ENDM for this block");
+    EXPECT_EQ(first_error(r).line, 1);
+}
+
+TEST(Errors, EveryErrorIsReported) {
+    auto r = assemble("\tFOO\n\tNOP\n\tJMP X1\n\tBAR\n\tMVI A,Y1\n");
+    ASSERT_EQ(r.error_count(), 4) << diags(r);
+    std::vector<int> lines;
+    for (auto& d : r.diagnostics) lines.push_back(d.line);
+    EXPECT_EQ(lines, (std::vector<int>{1, 3, 4, 5}));
+}
+
+TEST(Errors, FormatHasTheLineAndACaret) {
+    auto r = assemble("\tNOP\n\tMVI\tA,ZZ\n");
+    ASSERT_EQ(r.error_count(), 1);
+    EXPECT_EQ(format_diagnostic(r.diagnostics[0]), "t.asm:2:8: error: undefined symbol 'ZZ'\n\tMVI\tA,ZZ\n\t   \t  ^\n");
+}
+
+TEST(Errors, ErrorsInsideAMacroNameTheInvocation) {
+    auto r = assemble("M\tMACRO\n\tJMP NOPE\n\tENDM\n\tNOP\n\tM\n");
+    ASSERT_EQ(r.error_count(), 1);
+    EXPECT_EQ(r.diagnostics[0].line, 2);
+    ASSERT_GE(r.diagnostics.size(), 2u);
+    EXPECT_EQ(r.diagnostics[1].severity, Severity::Note);
+    EXPECT_EQ(r.diagnostics[1].line, 5);
+}
+
+TEST(Errors, Warnings) {
+    auto r = assemble("\tMVI A,123H\n\tMVI A,-1\n\tANI NOT 80H\n");
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.warning_count(), 1);
+    EXPECT_EQ(r.diagnostics[0].message, "value 0123H truncated to byte 23H");
+    EXPECT_EQ(r.diagnostics[0].col, 8);
+    r = assemble("\tORG 0\n\tDB 1,2\n\tORG 1\n\tDB 3\n");
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.warning_count(), 1);
+    EXPECT_EQ(r.diagnostics[0].message, "overlapping ORG regions: address 0001H is written twice");
+    EXPECT_EQ(r.diagnostics[0].line, 4);
+}
+
+TEST(Errors, RunawayInputStops) {
+    auto r = assemble("\tREPT 60000\n\tREPT 60000\n\tNOP\n\tENDM\n\tENDM\n");
+    EXPECT_FALSE(r.ok());
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test
