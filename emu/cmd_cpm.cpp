@@ -1,6 +1,7 @@
 // alp85 cpm PROGRAM.COM [--cpu 8080|8085] [--max-cycles N] [--stats]
 // Runs a CP/M .COM program (e.g. the period 8080/8085 CPU diagnostics) on the CP/M machine.
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -40,17 +41,21 @@ int run_cpm(const CpmArgs& args) {
         return 1;
     }
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpu_start = std::clock();
     const CpmMachine::Result r = machine.run(args.max_cycles, [](char ch) {
         std::fputc(ch, stdout);
         if (ch == '\n') std::fflush(stdout);
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     std::fflush(stdout);
     if (!r.message.empty()) std::fprintf(stderr, "\nalp85 cpm: %s: %s\n", args.program.c_str(), r.message.c_str());
     if (args.stats) {
-        std::fprintf(stderr, "\ncpu:          i%s\ninstructions: %llu\nT-states:     %llu\nwall time:    %.3f s\n",
+        std::fprintf(stderr,
+                     "\ncpu:          i%s\ninstructions: %llu\nT-states:     %llu\nwall time:    %.3f s (process CPU "
+                     "time %.3f s)\n",
                      args.cpu.c_str(), static_cast<unsigned long long>(r.instructions),
-                     static_cast<unsigned long long>(r.tstates), seconds);
+                     static_cast<unsigned long long>(r.tstates), seconds, cpu_seconds);
         if (seconds > 0)
             std::fprintf(stderr, "T-states/s:   %.4g (%.1f MHz equivalent)\n", r.tstates / seconds,
                          r.tstates / seconds / 1e6);

@@ -103,7 +103,8 @@ template <Variant V>
     f = static_cast<std::uint8_t>(kSZP<V>[a] | ac);
 }
 
-// INR/DCR leave CY alone. AC: carry out of bit 3 (DCR adds FFH).
+// INR/DCR leave CY alone. AC: carry out of bit 3 (DCR adds FFH). On the 8085 they set V and K
+// like any ALU addition of +1/-1: V only for 7FH+1 and 80H-1.
 template <Variant V>
 [[gnu::always_inline]] inline std::uint8_t inr(std::uint8_t x, std::uint8_t& f) {
     const std::uint8_t r = static_cast<std::uint8_t>(x + 1);
