@@ -57,12 +57,29 @@ std::uint8_t I8279::scan_lines(std::uint64_t now) const {
     return static_cast<std::uint8_t>(d % (sixteen_digits() ? 16 : 8));
 }
 
+bool I8279::may_change() const {
+    // Scanning can only change something while a key is closed, a key is being tracked, or the
+    // sensor RAM differs from the matrix.
+    if (s_.candidate >= 0 || s_.locked >= 0) return true;
+    for (unsigned r = 0; r < rows(); ++r) {
+        if (s_.matrix[r] != 0xFF) return true;
+        if (sensor_mode() && s_.fifo[r] != s_.matrix[r]) return true;
+    }
+    return std::any_of(s_.nkro.begin(), s_.nkro.end(), [](std::uint8_t k) { return k != 0; });
+}
+
+void I8279::mark_dirty() {
+    if (may_change()) {
+        s_.dirty = true;
+        s_.quiet = 0;
+    }
+}
+
 void I8279::resample() {
     for (unsigned r = 0; r < 8; ++r) {
         s_.matrix[r] = (source_ && r < rows()) ? source_(scan_value(r)) : 0xFF;
     }
-    s_.dirty = true;
-    s_.quiet = 0;
+    mark_dirty();
 }
 
 std::uint8_t I8279::digit_output(unsigned position) const {
@@ -276,7 +293,7 @@ std::uint8_t I8279::read(std::uint8_t a0, std::uint64_t now) {
     if (a0 & 1) return peek_status(now);
     if (s_.read_display) {
         const std::uint8_t v = s_.display_ram[s_.display_address];
-        if (s_.display_ai) s_.display_address = (s_.display_address + 1) & 15;
+        if (s_.display_ai) s_.display_address = static_cast<std::uint8_t>((s_.display_address + 1) % address_wrap());
         return v;
     }
     if (sensor_mode()) {
@@ -286,7 +303,7 @@ std::uint8_t I8279::read(std::uint8_t a0, std::uint64_t now) {
         } else {
             s_.sensor_irq = false;  // without auto-increment the first read clears IRQ
             update_irq(now);
-            s_.dirty = true;        // writing into the sensor RAM may resume
+            mark_dirty();           // writing into the sensor RAM may resume
         }
         return v;
     }
@@ -318,8 +335,10 @@ void I8279::write(std::uint8_t a0, std::uint8_t value, std::uint64_t now) {
     if (s_.inhibit_blank & 0x08) keep |= 0xF0;  // IW A protects bits 7-4
     if (s_.inhibit_blank & 0x04) keep |= 0x0F;  // IW B protects bits 3-0
     cell = static_cast<std::uint8_t>((cell & keep) | (value & ~keep));
-    if (right_entry()) s_.right_offset = static_cast<std::uint8_t>((s_.right_offset + 1) & 15);
-    if (s_.display_ai) s_.display_address = (s_.display_address + 1) & 15;
+    // Right entry: each entry shifts the picture one position left.
+    if (right_entry()) s_.right_offset = static_cast<std::uint8_t>((s_.right_offset + 1) % address_wrap());
+    // Auto-increment wraps after the last digit: the 9th (17th) character goes back to the left.
+    if (s_.display_ai) s_.display_address = static_cast<std::uint8_t>((s_.display_address + 1) % address_wrap());
 }
 
 void I8279::command(std::uint8_t value, std::uint64_t now) {
@@ -379,7 +398,7 @@ void I8279::command(std::uint8_t value, std::uint64_t now) {
                 s_.overrun = s_.underrun = s_.error = false;
                 s_.sensor_irq = false;
                 s_.sensor_address = 0;
-                s_.dirty = true;
+                mark_dirty();
                 update_irq(now);
             }
             if (ca) resync(now);  // clear all also resynchronises the internal timing
@@ -391,7 +410,7 @@ void I8279::command(std::uint8_t value, std::uint64_t now) {
             s_.special_error_mode = (value & 0x10) != 0;
             if (sensor_mode()) {
                 s_.sensor_irq = false;
-                s_.dirty = true;
+                mark_dirty();
                 update_irq(now);
             }
             break;

@@ -150,6 +150,7 @@ private:
     bool strobed_mode() const { return (s_.mode & 6) == 6; }
     bool nkro_mode() const { return (s_.mode & 6) == 2; }
     unsigned rows() const { return decoded() ? 4 : 8; }
+    unsigned address_wrap() const { return sixteen_digits() ? 16 : 8; }
     std::uint8_t scan_value(unsigned row) const;
     std::uint64_t clk_at(std::uint64_t t) const;
     std::uint64_t time_of_digit(std::uint64_t d) const;
@@ -158,6 +159,8 @@ private:
     void push_fifo(std::uint8_t entry, std::uint64_t at);
     std::uint8_t key_entry(int key) const;
     void update_irq(std::uint64_t at);
+    bool may_change() const;
+    void mark_dirty();
     void resample();
     void resync(std::uint64_t now);
     void command(std::uint8_t value, std::uint64_t now);
