@@ -121,6 +121,32 @@ TEST_F(I8155Test, PortCModesAlt1ToAlt4) {
     EXPECT_EQ(chip.read(I8155::kPortC, 5), 0xC0 | 0x20 | 0x04);  // both STB idle high
 }
 
+TEST_F(I8155Test, Alt3DrivesPc3ToPc5FromTheLatch) {
+    chip.write(I8155::kCommandStatus, 0x04, 0);  // ALT3
+    chip.write(I8155::kPortC, 0x3F, 1);
+    // PC3-5 follow the latch; PC0 (A INTR) and PC1 (A BF) are low; PC2 is the STB input.
+    EXPECT_EQ(chip.port_output(Port::C), 0x38);
+}
+
+TEST_F(I8155Test, WritingAnInputPortLoadsItsLatchForLater) {
+    chip.set_port_input(Port::A, 0x11);
+    chip.write(I8155::kPortA, 0x77, 0);  // port A is an input: the pins are read...
+    EXPECT_EQ(chip.read(I8155::kPortA, 1), 0x11);
+    chip.write(I8155::kCommandStatus, 0x01, 2);  // ...until it becomes an output
+    EXPECT_EQ(chip.read(I8155::kPortA, 3), 0x77);
+    EXPECT_EQ(chip.port_output(Port::A), 0x77);
+}
+
+TEST_F(I8155Test, OneMillisecondTickAtTheBoardClock) {
+    // 1 ms at 3.072 MHz = 3072 T-states = 0C00H: continuous square wave, TC every 3072 T.
+    load_count(0x0C00, kContSquare, 0);
+    chip.write(I8155::kCommandStatus, kStart, 10);
+    run_to(10 + 3 * 3072);
+    const std::vector<Edge> expect{{false, 10 + 1536}, {true, 10 + 3072}, {false, 10 + 3072 + 1536},
+                                   {true, 10 + 6144}, {false, 10 + 6144 + 1536}, {true, 10 + 9216}};
+    EXPECT_EQ(edges, expect);
+}
+
 TEST_F(I8155Test, StrobedInputHandshakeOnPortA) {
     std::vector<std::pair<Port, bool>> intr;
     chip.on_intr([&](Port p, bool level, std::uint64_t) { intr.emplace_back(p, level); });
