@@ -516,7 +516,7 @@ void I8279::load(std::span<const std::uint8_t> in) {
     }
     s.now = r.u64();
     r.expect_end();
-    if (s.next_digit * kClocksPerDigit < s.origin_clk) r.fail("scan state behind its own clock");
+    if (s.origin_t > s.now || s.next_digit * kClocksPerDigit < s.origin_clk) r.fail("scan state behind its own clock");
     s_ = s;
 }
 
