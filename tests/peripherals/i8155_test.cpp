@@ -318,6 +318,15 @@ TEST_F(I8155Test, StartWhileRunningTakesEffectAtTerminalCount) {
     EXPECT_EQ(edges, expect);
 }
 
+TEST_F(I8155Test, StartClearsTheTimerFlag) {
+    load_count(4, kContPulse, 0);
+    chip.write(I8155::kCommandStatus, kStart, 0);
+    chip.advance(9);  // TCs at 4 and 8 latched the flag
+    EXPECT_EQ(chip.peek_status() & I8155::kStTimer, I8155::kStTimer);
+    chip.write(I8155::kCommandStatus, kStart, 9);  // "starting a new count" resets it
+    EXPECT_EQ(chip.peek_status() & I8155::kStTimer, 0);
+}
+
 TEST_F(I8155Test, StartReloadsTheCountLengthAfterStop) {
     load_count(50, kContPulse, 0);
     chip.write(I8155::kCommandStatus, kStart, 0);
