@@ -193,6 +193,33 @@ TEST_F(I8155Test, StrobedOutputHandshakeOnPortB) {
     EXPECT_FALSE(chip.intr(Port::B));
 }
 
+TEST_F(I8155Test, StrobedInputOnPortBAndOutputOnPortA) {
+    chip.write(I8155::kCommandStatus, 0x39, 0);  // PA out, PB in, ALT4, INTE A and B
+    // Port B strobed input (PC5 = B STB).
+    chip.set_port_input(Port::B, 0xC3);
+    chip.set_stb(Port::B, false, 1);
+    chip.set_stb(Port::B, true, 2);
+    EXPECT_EQ(chip.read(I8155::kCommandStatus, 3),
+              I8155::kStInteA | I8155::kStInteB | I8155::kStBfB | I8155::kStIntrB);
+    EXPECT_EQ(chip.read(I8155::kPortB, 4), 0xC3);
+    EXPECT_EQ(chip.read(I8155::kCommandStatus, 5), I8155::kStInteA | I8155::kStInteB);
+    // Port A strobed output (PC2 = A STB).
+    chip.write(I8155::kPortA, 0x5A, 6);
+    EXPECT_EQ(chip.read(I8155::kCommandStatus, 7), I8155::kStInteA | I8155::kStInteB | I8155::kStBfA);
+    chip.set_stb(Port::A, false, 8);
+    chip.set_stb(Port::A, true, 9);
+    EXPECT_EQ(chip.read(I8155::kCommandStatus, 10), I8155::kStInteA | I8155::kStInteB | I8155::kStIntrA);
+    EXPECT_EQ(chip.port_output(Port::A), 0x5A);
+}
+
+TEST_F(I8155Test, NopTimerCommandLeavesTheCounterRunning) {
+    load_count(10, kContSquare, 0);
+    chip.write(I8155::kCommandStatus, kStart, 0);
+    chip.write(I8155::kCommandStatus, 0x01, 3);  // TM = 00: only the port bits change
+    EXPECT_TRUE(chip.state().running);
+    EXPECT_EQ(chip.next_event(), 5u);
+}
+
 TEST_F(I8155Test, ContinuousSquareWaveEvenCount) {
     // N = 10 started at T = 1000: high for N/2 = 5 clocks, low for 5, TC every 10 clocks.
     load_count(10, kContSquare, 990);

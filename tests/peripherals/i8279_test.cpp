@@ -321,6 +321,29 @@ TEST_F(I8279Test, SensorMatrixWithAutoIncrementNeedsEndInterrupt) {
     EXPECT_EQ(data(19842), 0xFE);
 }
 
+TEST_F(I8279Test, DecodedSensorMatrixScansFourRows) {
+    decoded = true;
+    cmd(0x05, 0);  // decoded sensor matrix
+    key(3, 1, true, 100);
+    // Four rows: row 3 is sampled at digits 3, 7, 11...: 3 * 1984 = 5952 T.
+    run_to(5951);
+    EXPECT_FALSE(chip.irq());
+    run_to(5952);
+    EXPECT_TRUE(chip.irq());
+    cmd(0x43, 6000);
+    EXPECT_EQ(data(6001), 0xFD);
+}
+
+TEST_F(I8279Test, StrobedInputWithDecodedDisplayScan) {
+    decoded = true;  // SL0-3 one-of-four low: the strobe samples the return lines at SL0 low
+    cmd(0x07, 0);
+    EXPECT_EQ(chip.display_digits(), 4u);
+    closed[0] = 0x01;
+    chip.inputs_changed(1);
+    chip.set_cntl_stb(true, 2);
+    EXPECT_EQ(data(3), 0xFE);
+}
+
 TEST_F(I8279Test, WriteAndReadDisplayRamWithAutoIncrement) {
     cmd(0x90, 0);  // write display RAM from 0, auto-increment
     const std::uint8_t codes[] = {0x76, 0x06, 0x48, 0x40, 0x40, 0x40, 0x40, 0x00};  // "H1=----"
