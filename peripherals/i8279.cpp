@@ -38,7 +38,8 @@ std::uint64_t I8279::clk_at(std::uint64_t t) const {
 }
 
 std::uint64_t I8279::time_of_digit(std::uint64_t d) const {
-    return s_.origin_t + (d * kClocksPerDigit - s_.origin_clk) * s_.prescaler;
+    const std::uint64_t c = d * kClocksPerDigit;
+    return c <= s_.origin_clk ? s_.origin_t : s_.origin_t + (c - s_.origin_clk) * s_.prescaler;
 }
 
 unsigned I8279::display_digits() const {
@@ -84,7 +85,7 @@ void I8279::resample() {
 
 std::uint8_t I8279::digit_output(unsigned position) const {
     const unsigned n = sixteen_digits() ? 16 : 8;
-    if (position >= display_digits()) return s_.blank_code;
+    if (position >= display_digits()) return 0x00;  // never scanned: dark
     const unsigned address = right_entry() ? (position + s_.right_offset) % n : position;
     std::uint8_t v = s_.display_ram[address];
     if (s_.inhibit_blank & 0x02) v = static_cast<std::uint8_t>((v & 0x0F) | (s_.blank_code & 0xF0));  // BL A
@@ -150,7 +151,7 @@ void I8279::process_digit(std::uint64_t d) {
     const unsigned nrows = rows();
     const unsigned row = static_cast<unsigned>(d % nrows);
     const std::uint8_t closed = static_cast<std::uint8_t>(~s_.matrix[row]);
-    const std::uint64_t debounce = 2ull * nrows;  // two full keyboard scans, in digit times
+    const std::uint64_t debounce = debounce_digits();
     const std::uint64_t at = time_of_digit(d);
     bool changed = false;
 
@@ -254,7 +255,7 @@ std::uint64_t I8279::next_event() const {
     std::uint64_t t = kNever;
     if (s_.du_until > s_.now) t = s_.du_until;
     if (strobed_mode()) return t;
-    const std::uint64_t debounce = 2ull * rows();
+    const std::uint64_t debounce = debounce_digits();
     if (s_.candidate >= 0) {
         t = std::min(t, time_of_digit(s_.candidate_digit + debounce));
     } else if (s_.dirty) {
@@ -265,7 +266,8 @@ std::uint64_t I8279::next_event() const {
             if (s_.nkro[k] == 1) t = std::min(t, time_of_digit(std::max(s_.nkro_digit[k] + debounce, s_.next_digit)));
         }
     }
-    return t;
+    // Never report the past: the board's scheduler must always move forward.
+    return t != kNever && t <= s_.now ? s_.now + 1 : t;
 }
 
 void I8279::inputs_changed(std::uint64_t now) {
@@ -514,7 +516,7 @@ void I8279::load(std::span<const std::uint8_t> in) {
     }
     s.now = r.u64();
     r.expect_end();
-    if (s.next_digit * kClocksPerDigit < s.origin_clk) r.fail("scan state behind its own clock");
+    if (s.origin_t > s.now || s.next_digit * kClocksPerDigit < s.origin_clk) r.fail("scan state behind its own clock");
     s_ = s;
 }
 

@@ -150,6 +150,7 @@ private:
     bool strobed_mode() const { return (s_.mode & 6) == 6; }
     bool nkro_mode() const { return (s_.mode & 6) == 2; }
     unsigned rows() const { return decoded() ? 4 : 8; }
+    std::uint64_t debounce_digits() const { return 2ull * rows(); }  // two full keyboard scans
     unsigned address_wrap() const { return sixteen_digits() ? 16 : 8; }
     std::uint8_t scan_value(unsigned row) const;
     std::uint64_t clk_at(std::uint64_t t) const;

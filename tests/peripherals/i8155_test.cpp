@@ -121,6 +121,32 @@ TEST_F(I8155Test, PortCModesAlt1ToAlt4) {
     EXPECT_EQ(chip.read(I8155::kPortC, 5), 0xC0 | 0x20 | 0x04);  // both STB idle high
 }
 
+TEST_F(I8155Test, Alt3DrivesPc3ToPc5FromTheLatch) {
+    chip.write(I8155::kCommandStatus, 0x04, 0);  // ALT3
+    chip.write(I8155::kPortC, 0x3F, 1);
+    // PC3-5 follow the latch; PC0 (A INTR) and PC1 (A BF) are low; PC2 is the STB input.
+    EXPECT_EQ(chip.port_output(Port::C), 0x38);
+}
+
+TEST_F(I8155Test, WritingAnInputPortLoadsItsLatchForLater) {
+    chip.set_port_input(Port::A, 0x11);
+    chip.write(I8155::kPortA, 0x77, 0);  // port A is an input: the pins are read...
+    EXPECT_EQ(chip.read(I8155::kPortA, 1), 0x11);
+    chip.write(I8155::kCommandStatus, 0x01, 2);  // ...until it becomes an output
+    EXPECT_EQ(chip.read(I8155::kPortA, 3), 0x77);
+    EXPECT_EQ(chip.port_output(Port::A), 0x77);
+}
+
+TEST_F(I8155Test, OneMillisecondTickAtTheBoardClock) {
+    // 1 ms at 3.072 MHz = 3072 T-states = 0C00H: continuous square wave, TC every 3072 T.
+    load_count(0x0C00, kContSquare, 0);
+    chip.write(I8155::kCommandStatus, kStart, 10);
+    run_to(10 + 3 * 3072);
+    const std::vector<Edge> expect{{false, 10 + 1536}, {true, 10 + 3072}, {false, 10 + 3072 + 1536},
+                                   {true, 10 + 6144}, {false, 10 + 6144 + 1536}, {true, 10 + 9216}};
+    EXPECT_EQ(edges, expect);
+}
+
 TEST_F(I8155Test, StrobedInputHandshakeOnPortA) {
     std::vector<std::pair<Port, bool>> intr;
     chip.on_intr([&](Port p, bool level, std::uint64_t) { intr.emplace_back(p, level); });
@@ -165,6 +191,33 @@ TEST_F(I8155Test, StrobedOutputHandshakeOnPortB) {
     EXPECT_EQ(chip.read(I8155::kPortC, 6) & 0x38, 0x08 | 0x20);  // B INTR, B STB high
     chip.write(I8155::kPortB, 0x11, 7);
     EXPECT_FALSE(chip.intr(Port::B));
+}
+
+TEST_F(I8155Test, StrobedInputOnPortBAndOutputOnPortA) {
+    chip.write(I8155::kCommandStatus, 0x39, 0);  // PA out, PB in, ALT4, INTE A and B
+    // Port B strobed input (PC5 = B STB).
+    chip.set_port_input(Port::B, 0xC3);
+    chip.set_stb(Port::B, false, 1);
+    chip.set_stb(Port::B, true, 2);
+    EXPECT_EQ(chip.read(I8155::kCommandStatus, 3),
+              I8155::kStInteA | I8155::kStInteB | I8155::kStBfB | I8155::kStIntrB);
+    EXPECT_EQ(chip.read(I8155::kPortB, 4), 0xC3);
+    EXPECT_EQ(chip.read(I8155::kCommandStatus, 5), I8155::kStInteA | I8155::kStInteB);
+    // Port A strobed output (PC2 = A STB).
+    chip.write(I8155::kPortA, 0x5A, 6);
+    EXPECT_EQ(chip.read(I8155::kCommandStatus, 7), I8155::kStInteA | I8155::kStInteB | I8155::kStBfA);
+    chip.set_stb(Port::A, false, 8);
+    chip.set_stb(Port::A, true, 9);
+    EXPECT_EQ(chip.read(I8155::kCommandStatus, 10), I8155::kStInteA | I8155::kStInteB | I8155::kStIntrA);
+    EXPECT_EQ(chip.port_output(Port::A), 0x5A);
+}
+
+TEST_F(I8155Test, NopTimerCommandLeavesTheCounterRunning) {
+    load_count(10, kContSquare, 0);
+    chip.write(I8155::kCommandStatus, kStart, 0);
+    chip.write(I8155::kCommandStatus, 0x01, 3);  // TM = 00: only the port bits change
+    EXPECT_TRUE(chip.state().running);
+    EXPECT_EQ(chip.next_event(), 5u);
 }
 
 TEST_F(I8155Test, ContinuousSquareWaveEvenCount) {
@@ -290,6 +343,15 @@ TEST_F(I8155Test, StartWhileRunningTakesEffectAtTerminalCount) {
     // Square wave to TC at 10, then pulses at 10 + 4 = 14 and 18.
     const std::vector<Edge> expect{{false, 5}, {true, 10}, {false, 14}, {true, 15}, {false, 18}};
     EXPECT_EQ(edges, expect);
+}
+
+TEST_F(I8155Test, StartClearsTheTimerFlag) {
+    load_count(4, kContPulse, 0);
+    chip.write(I8155::kCommandStatus, kStart, 0);
+    chip.advance(9);  // TCs at 4 and 8 latched the flag
+    EXPECT_EQ(chip.peek_status() & I8155::kStTimer, I8155::kStTimer);
+    chip.write(I8155::kCommandStatus, kStart, 9);  // "starting a new count" resets it
+    EXPECT_EQ(chip.peek_status() & I8155::kStTimer, 0);
 }
 
 TEST_F(I8155Test, StartReloadsTheCountLengthAfterStop) {

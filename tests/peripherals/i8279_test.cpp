@@ -321,6 +321,29 @@ TEST_F(I8279Test, SensorMatrixWithAutoIncrementNeedsEndInterrupt) {
     EXPECT_EQ(data(19842), 0xFE);
 }
 
+TEST_F(I8279Test, DecodedSensorMatrixScansFourRows) {
+    decoded = true;
+    cmd(0x05, 0);  // decoded sensor matrix
+    key(3, 1, true, 100);
+    // Four rows: row 3 is sampled at digits 3, 7, 11...: 3 * 1984 = 5952 T.
+    run_to(5951);
+    EXPECT_FALSE(chip.irq());
+    run_to(5952);
+    EXPECT_TRUE(chip.irq());
+    cmd(0x43, 6000);
+    EXPECT_EQ(data(6001), 0xFD);
+}
+
+TEST_F(I8279Test, StrobedInputWithDecodedDisplayScan) {
+    decoded = true;  // SL0-3 one-of-four low: the strobe samples the return lines at SL0 low
+    cmd(0x07, 0);
+    EXPECT_EQ(chip.display_digits(), 4u);
+    closed[0] = 0x01;
+    chip.inputs_changed(1);
+    chip.set_cntl_stb(true, 2);
+    EXPECT_EQ(data(3), 0xFE);
+}
+
 TEST_F(I8279Test, WriteAndReadDisplayRamWithAutoIncrement) {
     cmd(0x90, 0);  // write display RAM from 0, auto-increment
     const std::uint8_t codes[] = {0x76, 0x06, 0x48, 0x40, 0x40, 0x40, 0x40, 0x00};  // "H1=----"
@@ -364,6 +387,52 @@ TEST_F(I8279Test, RightEntryShiftsInFromTheRight) {
     EXPECT_EQ(chip.digit_output(0), 0x00);
     EXPECT_EQ(chip.state().display_ram[0], 0x06);  // the RAM itself is filled from address 0
     EXPECT_EQ(chip.state().display_ram[1], 0x5B);
+}
+
+TEST_F(I8279Test, SixteenDigitRightEntryAndScanLines) {
+    cmd(0x18, 0);  // 16-digit right entry, encoded scan
+    EXPECT_EQ(chip.display_digits(), 16u);
+    EXPECT_EQ(chip.scan_lines(9 * kDigit), 9);  // SL0-3 count 0-15
+    cmd(0x90, 0);
+    for (std::uint8_t i = 1; i <= 3; ++i) chip.write(0, i, 1);
+    EXPECT_EQ(chip.digit_output(15), 3);
+    EXPECT_EQ(chip.digit_output(14), 2);
+    EXPECT_EQ(chip.digit_output(13), 1);
+    EXPECT_EQ(chip.digit_output(12), 0);
+}
+
+TEST_F(I8279Test, SixteenDigitModeScansTheKeyboardTwicePerDisplayCycle) {
+    // With 16 digits, keyboard row = digit mod 8 still: row 0 at digits 0, 8, 16, 24...
+    key(0, 0, true, 100);
+    run_to(47616);  // 24 * 1984, as with 8 digits
+    EXPECT_EQ(status(47616), 0x01);
+}
+
+TEST_F(I8279Test, SameInputsGiveTheSameOutputs) {
+    auto script = [](I8279& k, std::vector<std::uint64_t>& log) {
+        std::array<std::uint8_t, 8> m{};
+        k.set_return_lines_source([&m](std::uint8_t sl) { return static_cast<std::uint8_t>(~m[sl & 7]); });
+        k.on_irq([&log](bool level, std::uint64_t at) { log.push_back(at * 2 + (level ? 1 : 0)); });
+        k.reset(5);
+        for (unsigned i = 0; i < 12; ++i) {
+            const std::uint64_t t = 5 + 37123ull * i;
+            m[i % 3] = static_cast<std::uint8_t>(1u << (i % 8));
+            k.inputs_changed(t);
+            m[i % 3] = 0;
+            k.inputs_changed(t + 50000);
+            if (i % 4 == 3) {
+                k.write(1, 0x40, t + 60000);
+                log.push_back(k.read(0, t + 60001));
+            }
+        }
+        k.advance(10'000'000);
+    };
+    I8279 a, b;
+    std::vector<std::uint64_t> la, lb;
+    script(a, la);
+    script(b, lb);
+    EXPECT_FALSE(la.empty());
+    EXPECT_EQ(la, lb);
 }
 
 TEST_F(I8279Test, DisplayWriteInhibitProtectsNibbles) {
