@@ -42,7 +42,9 @@ TEST_F(MonitorStep, EachNextRunsExactlyOneInstruction) {
         EXPECT_EQ(r.pc, w.pc) << w.display;
         EXPECT_EQ(r.sp, w.sp) << w.display;
         EXPECT_EQ(r.a, w.a) << w.display;
-        if (r.sp == 0x20AE) EXPECT_EQ(b_.word(0x20AE), 0x1007);  // CALL's return address
+        if (r.sp == 0x20AE) {
+            EXPECT_EQ(b_.word(0x20AE), 0x1007);  // CALL's return address
+        }
     }
     b_.press(Key::Exec);
     EXPECT_EQ(b_.display(), "-       ");
