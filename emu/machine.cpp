@@ -26,18 +26,18 @@ public:
     bool stopped = false;
     Stop reason = Stop::Deadline;
     std::uint16_t hit_address = 0;
+    std::function<void(const I8085&)> trace;
 
     bool before_instruction(I8085& cpu) override {
         const std::uint16_t pc = cpu.regs().pc;
-        if (skip_armed) {
+        if (breakpoint[pc] && !(skip_armed && pc == skip_pc)) {
             skip_armed = false;
-            if (pc == skip_pc) return true;
-        }
-        if (breakpoint[pc]) {
             stopped = true;
             reason = Stop::Breakpoint;
             return false;
         }
+        skip_armed = false;
+        if (trace) trace(cpu);
         return true;
     }
     void on_read(I8085& cpu, std::uint16_t addr, std::uint8_t) override { check(cpu, addr); }
@@ -266,7 +266,7 @@ std::array<std::string, 7> Machine::display_art() const {
 void Machine::update_hooks() {
     Hooks& h = *hooks_;
     h.any_watch = h.watch.any();
-    cpu_.set_debug_hooks(h.breakpoint.any() || h.any_watch ? hooks_.get() : nullptr);
+    cpu_.set_debug_hooks(h.breakpoint.any() || h.any_watch || h.trace ? hooks_.get() : nullptr);
 }
 
 void Machine::add_breakpoint(std::uint16_t pc) {
@@ -282,6 +282,10 @@ void Machine::remove_breakpoint(std::uint16_t pc) {
 void Machine::clear_breakpoints() {
     hooks_->breakpoint.reset();
     breakpoints_.clear();
+    update_hooks();
+}
+void Machine::set_trace(std::function<void(const I8085&)> trace) {
+    hooks_->trace = std::move(trace);
     update_hooks();
 }
 void Machine::add_watchpoint(std::uint16_t address) {

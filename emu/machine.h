@@ -102,6 +102,9 @@ public:
     const std::vector<std::uint16_t>& breakpoints() const { return breakpoints_; }
     void add_watchpoint(std::uint16_t address);  // any data read or write of the address
     void clear_watchpoints();
+    // Called before every instruction while set (a trace); like breakpoints, it puts the CPU on its
+    // debug path only while installed.
+    void set_trace(std::function<void(const I8085&)> trace);
     // What stopped the last run at a watchpoint: the address accessed.
     std::uint16_t watch_hit() const { return watch_hit_; }
 

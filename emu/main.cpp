@@ -9,6 +9,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     int status = 0;
     alp85::cli::add_cpm_command(app, status);
+    alp85::cli::add_run_command(app, status);
+    alp85::cli::add_script_command(app, status);
 
     try {
         app.parse(argc, argv);

@@ -1,12 +1,11 @@
 #include "emu/snapshot_file.h"
 
+#include "emu/atomic_file.h"
+
 #include <zlib.h>
 
-#include <cstdio>
 #include <fstream>
 #include <iterator>
-#include <system_error>
-#include <unistd.h>
 
 namespace alp85::snapshot {
 namespace {
@@ -85,25 +84,10 @@ std::vector<Section> decode(const std::vector<std::uint8_t>& file) {
 }
 
 void write_atomic(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes) {
-    std::filesystem::path tmp = path;
-    tmp += ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw SnapshotError("cannot write snapshot '" + path.string() + "'");
-        out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-        out.flush();
-        if (!out) {
-            out.close();
-            std::error_code ec;
-            std::filesystem::remove(tmp, ec);
-            throw SnapshotError("cannot write snapshot '" + path.string() + "' (disk full?)");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw SnapshotError("cannot write snapshot '" + path.string() + "': " + ec.message());
+    try {
+        alp85::write_atomic(path, bytes);
+    } catch (const std::runtime_error& e) {
+        throw SnapshotError(std::string("snapshot: ") + e.what());
     }
 }
 
