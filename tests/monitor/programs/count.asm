@@ -1,5 +1,6 @@
 ; Breakpoint and VECT INTR target in RAM: counts its loops in COUNT for ever.
 COUNT   EQU     1100H
+        INCLUDE "../../../firmware/monitor/monitor.inc" ; SAVEA, SAVEPC, ... for scripts
         ORG     1000H
 START:  LXI     H,0             ; 1000H
         SHLD    COUNT           ; 1003H

@@ -1,4 +1,5 @@
 ; Single-step target in RAM: instructions of 4 to 18 T-states, a call and a HLT.
+        INCLUDE "../../../firmware/monitor/monitor.inc" ; SAVEA, SAVEPC, ... for scripts
         ORG     1000H
         MVI     A,01H           ; 1000H  7 T-states
         INR     A               ; 1002H  4
