@@ -30,6 +30,7 @@ KSTCNT  EQU     0FH             ; status: FIFO full (bit 3) and count (bits 2-0)
 
 RIOPORTS EQU    01H             ; 8155: port A output (motors), B and C input; timer NOP
 RIOSTART EQU    0C0H+RIOPORTS   ; the same ports, timer START
+RIOSTOP EQU     40H+RIOPORTS    ; the same ports, timer STOP
 TPULSE  EQU     80H             ; timer mode 10: a single low pulse at terminal count
 
 USERPC  EQU     0800H           ; the user EPROM: GO's default address
@@ -137,6 +138,8 @@ SAVE:   POP     H               ; the user's PC
         DAD     SP
         SHLD    USP             ; SP as it was before the RST or interrupt
         LXI     SP,MSTACK
+        MVI     A,RIOSTOP       ; a program's own timer would TRAP into the monitor: stop it
+        OUT     RIOCMD
         MOV     H,B
         MOV     L,C
         SHLD    SAVEC

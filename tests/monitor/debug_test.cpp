@@ -172,6 +172,20 @@ TEST_F(MonitorBreakpoints, ResetDuringARunGivesTheProgramItsBytesBack) {
     EXPECT_EQ(b_.display(), "0800.  --");  // RESET also forgot the breakpoints
 }
 
+TEST(MonitorTrap, AProgramsOwnTimerTrapsOnceIntoTheMonitorWhichStopsIt) {
+    Board b;
+    b.load("timer.asm");
+    b.run_ms(5);
+    b.go(0x1000);
+    // Stopped in its loop (JMP LOOP); the monitor takes every TRAP for a single step.
+    ASSERT_TRUE(b.wait_display("100C.  C3", 100));
+    EXPECT_FALSE(b.m.rio().state().running);
+    b.run_ms(50);
+    EXPECT_EQ(b.display(), "100C.  C3");
+    b.press(Key::Mem);  // and the monitor works on
+    EXPECT_EQ(b.display(), "0800.  00");
+}
+
 TEST(MonitorRst, AnyRestartOrARunIntoEmptyMemoryReturnsToTheMonitor) {
     Board b;
     // 1000H: MVI A,77H / RST 3; 1010H: JMP 3000H (nothing there: FFH = RST 7).
