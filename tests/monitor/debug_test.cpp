@@ -1,6 +1,9 @@
 // The monitor's debugging commands: single step (8155 timer -> TRAP), breakpoints (RST 1),
 // VECT INTR (RST 7.5) and RESET during a run. Programs: tests/monitor/programs/step.asm and
 // count.asm, in RAM; their addresses and T-states are in their comments.
+#include <algorithm>
+#include <iterator>
+
 #include "monitor_harness.h"
 
 namespace alp85::test {
@@ -71,6 +74,34 @@ TEST_F(MonitorStep, TrapIsTakenAsTheSteppedInstructionEnds) {
     b_.m.clear_breakpoints();
     b_.m.run_until(t + ms(60));
     EXPECT_EQ(b_.display(), "1004.  Cd");
+}
+
+TEST_F(MonitorStep, TimerCountMatchesTheRestoreSequence) {
+    // docs/monitor.md: the OUT that starts the timer (MVI A,0C1H / OUT 0F8H) is followed by
+    // LXI SP, POP B, POP D, POP PSW, LHLD, SPHL, LHLD, JMP, EI (or NOP), JMP: with OUT's own 10 T-states,
+    // 10+10+10+10+10+16+6+16+10+4+10 = 112 T-states from OUT to the program's first instruction.
+    const std::uint8_t pattern[] = {0x3E, 0xC1, 0xD3, 0xF8};
+    const std::uint8_t* rom = firmware::kMonitorRom;
+    const std::uint8_t* end = rom + firmware::kMonitorRom_size;
+    const std::uint8_t* at = std::search(rom, end, std::begin(pattern), std::end(pattern));
+    ASSERT_NE(at, end);
+    const auto out_pc = static_cast<std::uint16_t>(at - rom + 2);
+    b_.m.add_breakpoint(out_pc);
+    b_.m.add_breakpoint(0x1000);
+    const std::uint64_t t = b_.m.now();
+    b_.m.key_at(Key::Next, true, t);
+    b_.m.key_at(Key::Next, false, t + ms(30));
+    ASSERT_EQ(b_.m.run_until(t + ms(60)), Machine::Stop::Breakpoint);
+    ASSERT_EQ(b_.m.cpu().regs().pc, out_pc);
+    const std::uint64_t out_t = b_.m.now();
+    ASSERT_EQ(b_.m.run_until(t + ms(60)), Machine::Stop::Breakpoint);
+    ASSERT_EQ(b_.m.cpu().regs().pc, 0x1000);
+    EXPECT_EQ(b_.m.now() - out_t, 112u);
+    // The count: 112 - 7 (OUT's I/O write cycle starts 7 T-states in), single pulse mode (10).
+    EXPECT_EQ(b_.m.rio().state().count_length, 0x8000 | 105);
+    b_.m.clear_breakpoints();
+    b_.m.run_until(t + ms(60));
+    EXPECT_EQ(b_.display(), "1002.  3C");
 }
 
 TEST_F(MonitorStep, ExecTakesTheTypedAddressWithoutRunning) {
