@@ -209,7 +209,7 @@ COLD1:  MOV     M,A
         MVI     A,OPJMP
         STA     RV55
         STA     RV65
-        LXI     H,RSTENT
+        LXI     H,VECENT        ; an interrupt: IE was on, the PC is where it struck
         SHLD    RV55+1
         SHLD    RV65+1
         LXI     H,SIGNON

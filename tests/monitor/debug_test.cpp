@@ -217,6 +217,29 @@ TEST(MonitorTrap, AProgramsOwnTimerTrapsOnceIntoTheMonitorWhichStopsIt) {
     EXPECT_EQ(b.display(), "0800.  00");
 }
 
+TEST(MonitorRst55, TheRamVectorEntersTheMonitorUntilTheProgramReplacesIt) {
+    Board b;
+    b.load("rst55.asm");
+    b.run_ms(5);
+    b.go(0x1000);
+    b.run_ms(10);
+    // A key raises the 8279's IRQ: RST 5.5 -> 20DEH -> the monitor, which then reads that key
+    // (MEM) from the FIFO as its next command.
+    b.press(Key::Mem);
+    EXPECT_EQ(b.display(), "0800.  00");
+    const auto r = b.saved();
+    EXPECT_EQ(r.pc, 0x1004);
+    EXPECT_EQ(r.im, 0x0E);  // IE was on; masks 110
+    // The program's own routine in the vector: the key goes to it and the program runs on.
+    b.press(Key::Exec);
+    b.go(0x1007);
+    b.run_ms(10);
+    b.press(Key::K7);
+    EXPECT_EQ(b.byte(0x1100), 0x07);
+    EXPECT_FALSE(b.m.cpu().halted());
+    EXPECT_EQ(b.display(), "        ");  // still the program's (blank) display
+}
+
 TEST(MonitorRst, AnyRestartOrARunIntoEmptyMemoryReturnsToTheMonitor) {
     Board b;
     // 1000H: MVI A,77H / RST 3; 1010H: JMP 3000H (nothing there: FFH = RST 7).
