@@ -41,6 +41,11 @@ std::vector<std::string> expand_keys(const std::string& text, std::string& error
     return keys;
 }
 
+void add_display(std::vector<std::string>& lines, bool text_only) {
+    if (!text_only) lines.push_back("print display");
+    lines.push_back("print display text");
+}
+
 }  // namespace
 
 void add_run_command(CLI::App& app, int& status) {
@@ -56,7 +61,7 @@ void add_run_command(CLI::App& app, int& status) {
     cmd->add_option("--boot", args->boot, "Time to run after RESET before typing (default 500ms)");
     cmd->add_option("--for", args->run_for, "Time to run after the keys (default 1s)");
     cmd->add_flag("--no-monitor", args->no_monitor, "Do not load the built-in monitor ROM");
-    cmd->add_flag("--text", args->text, "Show the display as text instead of seven-segment art");
+    cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
     cmd->footer(
         "Examples:\n"
         "  alp85 run                                          # the monitor's sign-on\n"
@@ -84,7 +89,7 @@ void add_run_command(CLI::App& app, int& status) {
         lines.push_back("reset");
         lines.push_back("run " + args->boot);
         lines.push_back("print \"after RESET:\"");
-        lines.push_back(args->text ? "print display text" : "print display");
+        add_display(lines, args->text);
         std::string key_error;
         const auto keys = expand_keys(args->keys, key_error);
         if (!key_error.empty()) {
@@ -98,7 +103,7 @@ void add_run_command(CLI::App& app, int& status) {
             lines.push_back(type);
             lines.push_back("run " + args->run_for);
             lines.push_back(fmt::format("print \"after {}:\"", args->keys));
-            lines.push_back(args->text ? "print display text" : "print display");
+            add_display(lines, args->text);
         }
         std::vector<script::Command> commands;
         int n = 0;

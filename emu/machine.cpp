@@ -97,6 +97,10 @@ Machine::Machine(Options options)
       port8279_(std::make_unique<Port8279>(*this)),
       port8155_(std::make_unique<Port8155>(*this)),
       hooks_(std::make_unique<Hooks>()) {
+    // Erased EPROMs read FFH (every cell charged); RAM powers up as zeros here (the real parts
+    // are unpredictable, and a deterministic machine needs some fixed value).
+    monitor_.fill(0xFF);
+    user_.fill(0xFF);
     wire();
     reset();
 }

@@ -15,7 +15,7 @@ protected:
         b_.load("step.asm");
         ASSERT_TRUE(b_.wait_display("-ALP 85-", 10));
         b_.press(Key::Step);
-        EXPECT_EQ(b_.display(), "0800.  00");  // the saved PC and its byte
+        EXPECT_EQ(b_.display(), "0800.  FF");  // the saved PC and its byte (erased user EPROM)
         b_.type_hex(0x1000);
         EXPECT_EQ(b_.display(), "1000.  3E");
     }
@@ -214,7 +214,7 @@ TEST(MonitorTrap, AProgramsOwnTimerTrapsOnceIntoTheMonitorWhichStopsIt) {
     b.run_ms(50);
     EXPECT_EQ(b.display(), "100C.  C3");
     b.press(Key::Mem);  // and the monitor works on
-    EXPECT_EQ(b.display(), "0800.  00");
+    EXPECT_EQ(b.display(), "0800.  FF");  // erased user EPROM
 }
 
 TEST(MonitorRst55, TheRamVectorEntersTheMonitorUntilTheProgramReplacesIt) {
@@ -226,7 +226,7 @@ TEST(MonitorRst55, TheRamVectorEntersTheMonitorUntilTheProgramReplacesIt) {
     // A key raises the 8279's IRQ: RST 5.5 -> 20DEH -> the monitor, which then reads that key
     // (MEM) from the FIFO as its next command.
     b.press(Key::Mem);
-    EXPECT_EQ(b.display(), "0800.  00");
+    EXPECT_EQ(b.display(), "0800.  FF");  // erased user EPROM
     const auto r = b.saved();
     EXPECT_EQ(r.pc, 0x1004);
     EXPECT_EQ(r.im, 0x0E);  // IE was on; masks 110
