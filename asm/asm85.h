@@ -42,6 +42,9 @@ struct Options {
     // Reads a file's text; nullopt when it cannot. Defaults to reading regular files from disk.
     std::function<std::optional<std::string>(const std::filesystem::path&)> read_file;
     bool warn_unused_macros = true;
+    // Significant characters of a symbol name; 0 = all. Intel's ASM80 and M80 kept six, so a
+    // source may define RESTART and use RESTAR: assemble such a source with 6.
+    int name_length = 0;
 };
 
 enum class Severity : std::uint8_t { Note, Warning, Error };

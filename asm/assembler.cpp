@@ -1,5 +1,6 @@
 // The pass driver: line fetching from files and expansions, symbols, values and emission.
 #include "asm/assembler.h"
+#include "asm/instructions.h"
 
 #include <algorithm>
 #include <fstream>
@@ -278,15 +279,15 @@ void Assembler::diag(Severity s, int col, const std::string& msg) {
 }
 
 Value Assembler::lookup(const Token& t, bool registers) {
+    // As in ASM80 and DR ASM, register names are predefined symbols (B=0 ... A=7, SP=PSW=6) in
+    // every expression: `UR EQU B` then `MOV UR,A` is period practice.
+    (void)registers;
     int rv = 0;
-    if (registers && is_register_name(t.text, &rv)) return {static_cast<std::uint16_t>(rv), true};
-    auto it = syms_.find(t.text);
+    if (is_register_name(t.text, &rv)) return {static_cast<std::uint16_t>(rv), true};
+    auto it = syms_.find(key(t.text));
     if (it != syms_.end() && it->second.pass >= pass_ - 1) return {it->second.value, true};
     if (pass_ > 1) {
-        if (is_register_name(t.text))
-            error(t.col, "register '" + t.text + "' where a value is expected");
-        else
-            error(t.col, "undefined symbol '" + t.text + "'");
+        error(t.col, "undefined symbol '" + t.text + "'");
     }
     return {0, false};
 }
@@ -296,6 +297,8 @@ bool Assembler::expr(const std::vector<Token>& toks, std::size_t& pos, Value& ou
     ctx.pc = static_cast<std::uint16_t>(pc_ & 0xFFFF);
     ctx.lookup = [this, registers](const Token& t) { return lookup(t, registers); };
     ctx.error = [this](int col, const std::string& m) { error(col, m); };
+    ctx.is_mnemonic = [this](const std::string& w) { return find_mnemonic(w) != nullptr && syms_.count(w) == 0; };
+    ctx.instruction = [this, &toks](std::size_t first, std::size_t last) { return instruction_value(toks, first, last); };
     return eval_expr(toks, pos, ctx, out);
 }
 
@@ -308,7 +311,8 @@ bool Assembler::expr_all(const std::vector<Token>& toks, std::size_t pos, Value&
     return true;
 }
 
-void Assembler::define(const std::string& name, int col, std::uint16_t value, SymbolKind kind) {
+void Assembler::define(const std::string& full_name, int col, std::uint16_t value, SymbolKind kind) {
+    const std::string name = key(full_name);
     if (is_operator_word(name)) {
         error(col, "'" + name + "' is an operator and can't be a symbol");
         return;
@@ -327,6 +331,7 @@ void Assembler::define(const std::string& name, int col, std::uint16_t value, Sy
                 warning(col, fmt::format("'{}' is set on the command line to {:04X}H; this definition ({:04X}H) is ignored", name, e.value, value));
             return;
         }
+        if (kind == SymbolKind::Equ && e.kind == SymbolKind::Equ && e.value == value) return;  // ASM80 allows
         if (kind == SymbolKind::Set && e.kind == SymbolKind::Set) {
             e.value = value;
             e.file = file;

@@ -129,6 +129,15 @@ private:
 
     // --- instructions (instructions.cpp)
     bool try_instruction(const std::string& op, const Token& optok, const std::vector<Token>& toks, std::size_t p);
+    bool encode_instruction(const std::string& op, const Token& optok, const std::vector<Token>& toks, std::size_t p,
+                            std::vector<std::uint8_t>& out);
+    // ASM80: "(JMP X)" in an expression is the instruction's first byte. toks[first] is the mnemonic,
+    // toks[last] the closing parenthesis.
+    std::string key(const std::string& name) const {
+        return opt_.name_length > 0 && name.size() > static_cast<std::size_t>(opt_.name_length)
+                   ? name.substr(0, static_cast<std::size_t>(opt_.name_length)) : name;
+    }
+    Value instruction_value(const std::vector<Token>& toks, std::size_t first, std::size_t last);
 
     // --- directives (directives.cpp)
     bool try_directive(const std::string& op, const std::vector<Token>& toks, std::size_t p,
@@ -181,7 +190,8 @@ private:
     std::string comment_delim_;  // inside M80 .COMMENT until this character
     const Line* cur_line_ = nullptr;
     std::string cur_text_;  // the current line as tokenized (for diagnostics)
-    int op_col_ = 0;  // column of the current statement's operation, for emission warnings
+    int op_col_ = 0;
+    int insn_depth_ = 0;  // nesting of "(instruction)" values  // column of the current statement's operation, for emission warnings
 };
 
 bool is_register_name(const std::string& upper, int* value = nullptr);

@@ -223,7 +223,7 @@ bool Assembler::try_directive(const std::string& op, const std::vector<Token>& t
         return true;
     }
     if (op == ".ERRDEF" || op == ".ERRNDEF") {
-        bool def = toks[p].kind == Tok::Ident && syms_.count(toks[p].text) && syms_.at(toks[p].text).pass == pass_;
+        bool def = toks[p].kind == Tok::Ident && syms_.count(key(toks[p].text)) && syms_.at(key(toks[p].text)).pass == pass_;
         if ((op == ".ERRDEF") == def) error(opcol, op + " failed for '" + toks[p].text + "'");
         return true;
     }
@@ -321,7 +321,7 @@ void Assembler::conditional(const std::string& op, const std::vector<Token>& tok
             if (toks[p].kind != Tok::Ident) {
                 error(toks[p].col, op + " needs a symbol name");
             } else {
-                auto it = syms_.find(toks[p].text);
+                auto it = syms_.find(key(toks[p].text));
                 bool def = (it != syms_.end() && it->second.pass == pass_) || macros_.count(toks[p].text);
                 truth = (op == "IFDEF") == def;
             }

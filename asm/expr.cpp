@@ -160,6 +160,23 @@ private:
         return primary(out);
     }
 
+    bool parenthesized_instruction(Value& out) {
+        std::size_t first = pos_ + 1, i = first;
+        int depth = 0;
+        for (; toks_[i].kind != Tok::End; ++i) {
+            if (toks_[i].kind != Tok::Punct) continue;
+            if (toks_[i].punct == '(') ++depth;
+            if (toks_[i].punct == ')' && depth-- == 0) break;
+        }
+        if (toks_[i].kind == Tok::End) {
+            pos_ = i;
+            return fail("expected ')'");
+        }
+        out = ctx_.instruction(first, i);
+        pos_ = i + 1;
+        return true;
+    }
+
     bool primary(Value& out) {
         const Token& t = cur();
         switch (t.kind) {
@@ -195,6 +212,8 @@ private:
                     return true;
                 }
                 if (t.punct == '(') {
+                    if (ctx_.is_mnemonic && toks_[pos_ + 1].kind == Tok::Ident && ctx_.is_mnemonic(toks_[pos_ + 1].text))
+                        return parenthesized_instruction(out);
                     if (++depth_ > kMaxDepth) return fail("expression nested too deeply");
                     ++pos_;
                     if (!orxor(out)) return false;

@@ -23,6 +23,9 @@ struct ExprContext {
     std::function<Value(const Token&)> lookup;
     std::function<void(int col, const std::string& msg)> error;
     std::uint16_t pc = 0;  // '$'
+    // Whether a name is an instruction mnemonic, and the value of "(mnemonic operands)".
+    std::function<bool(const std::string&)> is_mnemonic;
+    std::function<Value(std::size_t first, std::size_t last)> instruction;
 };
 
 // Evaluates the expression starting at toks[pos]; stops before a ',' or the end token at nesting

@@ -51,6 +51,15 @@ std::vector<std::string> template_slots(std::string_view operands) {
 }
 
 bool Assembler::try_instruction(const std::string& op, const Token& optok, const std::vector<Token>& toks, std::size_t p) {
+    std::vector<std::uint8_t> out;
+    if (!encode_instruction(op, optok, toks, p, out)) return false;
+    for (auto b : out) emit(b);
+    return true;
+}
+
+// Encodes into `out` (always the instruction's full length; zeros where an operand failed).
+bool Assembler::encode_instruction(const std::string& op, const Token& optok, const std::vector<Token>& toks, std::size_t p,
+                                   std::vector<std::uint8_t>& out) {
     const auto* ops = find_mnemonic(op);
     if (!ops) return false;
     const isa::OpInfo& first = isa::kOpcodes[(*ops)[0]];
@@ -72,7 +81,7 @@ bool Assembler::try_instruction(const std::string& op, const Token& optok, const
         int col = starts.size() > slots.size() && !starts.empty() ? toks[starts[slots.size()]].col : optok.col;
         error(col, op + " takes " + std::to_string(slots.size()) + (slots.size() == 1 ? " operand" : " operands") +
                        ", not " + std::to_string(starts.size()));
-        pc_ += first.length;
+        out.assign(first.length, 0);
         return true;
     }
 
@@ -108,7 +117,7 @@ bool Assembler::try_instruction(const std::string& op, const Token& optok, const
         sel[i] = {false, "", v.v};
     }
     if (!ok) {
-        pc_ += first.length;
+        out.assign(first.length, 0);
         return true;
     }
     int chosen = -1;
@@ -140,7 +149,7 @@ bool Assembler::try_instruction(const std::string& op, const Token& optok, const
         for (std::size_t i = 0; i < slots.size(); ++i)
             if (!is_data_slot(slots[i])) shown += (shown.empty() ? "" : ",") + (sel[i].named ? sel[i].name : std::to_string(sel[i].value));
         error(toks[starts[bad]].col, "invalid operand for " + op + ": " + op + " " + shown + " does not exist");
-        pc_ += first.length;
+        out.assign(first.length, 0);
         return true;
     }
     const auto& info = isa::kOpcodes[static_cast<std::size_t>(chosen)];
@@ -149,7 +158,7 @@ bool Assembler::try_instruction(const std::string& op, const Token& optok, const
     } else if (info.set == isa::Set::Undoc8085 && cpu_ != Cpu::i8085u) {
         error(optok.col, op + " is an undocumented 8085 instruction; enable it with --cpu 8085u or the directive CPU 8085U");
     }
-    emit(static_cast<std::uint8_t>(chosen));
+    out.push_back(static_cast<std::uint8_t>(chosen));
     for (std::size_t i = 0; i < slots.size(); ++i) {
         if (!is_data_slot(slots[i])) continue;
         std::size_t pos = starts[i];
@@ -157,11 +166,30 @@ bool Assembler::try_instruction(const std::string& op, const Token& optok, const
         int col = toks[pos].col;
         bool good = expr(toks, pos, v);
         if (slots[i] == "d8" || slots[i] == "p8")
-            emit(good ? byte_of(v, col) : 0);
-        else
-            emit_word(good ? v.v : 0);
+            out.push_back(good ? byte_of(v, col) : 0);
+        else {
+            out.push_back(static_cast<std::uint8_t>(good ? v.v & 0xFF : 0));
+            out.push_back(static_cast<std::uint8_t>(good ? v.v >> 8 : 0));
+        }
     }
     return true;
+}
+
+Value Assembler::instruction_value(const std::vector<Token>& toks, std::size_t first, std::size_t last) {
+    std::vector<Token> sub(toks.begin() + static_cast<std::ptrdiff_t>(first), toks.begin() + static_cast<std::ptrdiff_t>(last));
+    Token end;
+    end.kind = Tok::End;
+    end.col = toks[last].col;
+    sub.push_back(end);
+    std::vector<std::uint8_t> bytes;
+    if (insn_depth_ >= 16) {
+        error(sub[0].col, "parenthesized instructions nested too deeply");
+        return {0, true};
+    }
+    ++insn_depth_;
+    encode_instruction(sub[0].text, sub[0], sub, 1, bytes);
+    --insn_depth_;
+    return {static_cast<std::uint16_t>(bytes.empty() ? 0 : bytes[0]), true};
 }
 
 }  // namespace alp85::asm85

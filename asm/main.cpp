@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
     std::string source, hex_out, bin_out, lst_out, map_out, cpu = "8085", bin_start, bin_end, fill = "0";
     std::vector<std::string> defines, includes;
     bool quiet = false, no_unused = false;
+    int name_length = 0;
     app.add_option("SOURCE", source, "Assembly source file")->required();
     app.add_option("-o,--hex", hex_out, "Intel HEX output (default: SOURCE with .hex, when no other output is asked)");
     app.add_option("--bin", bin_out, "Raw binary output");
@@ -77,6 +78,8 @@ int main(int argc, char** argv) {
     app.add_option("-I,--include", includes, "Directory searched by INCLUDE and MACLIB");
     app.add_option("--cpu", cpu, "8080, 8085 (default) or 8085u (8085 with its undocumented instructions)")
         ->check(CLI::IsMember({"8080", "8085", "8085u", "8085U"}));
+    app.add_option("--name-length", name_length, "Significant characters of a name (6 for Intel ASM80/M80 sources; default all)")
+        ->check(CLI::Range(0, 64));
     app.add_flag("-q,--quiet", quiet, "Print errors only, no warnings");
     app.add_flag("--no-unused-macro-warnings", no_unused, "Don't warn about macros that are never used");
     app.footer(kExamples);
@@ -85,6 +88,7 @@ int main(int argc, char** argv) {
     Options opt;
     opt.cpu = *parse_cpu(cpu);
     opt.warn_unused_macros = !no_unused;
+    opt.name_length = name_length;
     for (auto& d : defines) {
         auto eq = d.find('=');
         opt.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "" : d.substr(eq + 1));

@@ -15,6 +15,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
+#include <vector>
 
 #include "emu/bus.h"
 
@@ -99,6 +101,11 @@ public:
     bool hlda() const { return hlda_; }
     // What RIM would load into A now (without RIM's side effect on the TRAP-saved IE).
     std::uint8_t rim_value() const;
+
+    // Snapshot of everything above (registers, interrupt state, pins, counters); load throws
+    // periph::SnapshotError and leaves the CPU unchanged on a bad record (emu/i8085_snapshot.cpp).
+    void save(std::vector<std::uint8_t>& out) const;
+    void load(std::span<const std::uint8_t> in);
 
     // ---- pins (the board drives these between runs or from handlers) ------------------------------
     void set_trap(bool level);   // rising edge latched; taken while latched AND still high

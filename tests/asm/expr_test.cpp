@@ -98,3 +98,33 @@ TEST(Expr, ForwardReferenceInOrgAndDsSettles) {
 
 }  // namespace
 }  // namespace alp85::asm85::test
+
+namespace alp85::asm85::test {
+namespace {
+
+TEST(Expr, ParenthesizedInstructionIsItsOpcode) {
+    // ASM80: MVI A,(JMP X) loads C3H; CPI (DI) compares with F3H; (RST 0) is C7H.
+    EXPECT_EQ(ok_bytes("X:\tMVI A,(JMP X)\n\tCPI (DI)\n\tDB (RST 0),(MOV A,B)+1\n"),
+              (std::vector<int>{0x3E, 0xC3, 0xFE, 0xF3, 0xC7, 0x79}));
+}
+
+TEST(Expr, RegisterNamesAreValues) {
+    EXPECT_EQ(ok_bytes("UR\tEQU B\nLR\tEQU C\n\tMOV UR,A\n\tDB A,LR,PSW\n"), (std::vector<int>{0x47, 7, 1, 6}));
+}
+
+TEST(Expr, SixSignificantCharactersWhenAsked) {
+    Options o;
+    o.name_length = 6;
+    auto r = assemble_string("RESTART:\tNOP\n\tJMP RESTAR\n", o);
+    ASSERT_TRUE(r.ok()) << diags(r);
+    EXPECT_EQ(all_bytes(r), (std::vector<int>{0x00, 0xC3, 0x00, 0x00}));
+    EXPECT_FALSE(assemble("RESTART:\tNOP\n\tJMP RESTAR\n").ok());
+}
+
+TEST(Expr, IdenticalEquRedefinitionIsAccepted) {
+    EXPECT_TRUE(assemble("K EQU 2\nK EQU 2\n").ok());
+    EXPECT_FALSE(assemble("K EQU 2\nK EQU 3\n").ok());
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test

@@ -1,0 +1,75 @@
+// The ALP 85's memory map, I/O map and interrupt wiring, declared once. The Machine builds its
+// bus from these tables; the debugger and docs/board.md describe the board from them.
+//
+// Evidence (docs/board.md has the full argument): thesis Chapter II gives the parts (2 KB monitor
+// EPROM, 2 KB user EPROM, 4 KB RAM, 8155, 8279); the listing in Appendix B fixes the rest:
+// ORG 0800H, variables at 1B00H-1B54H, LXI SP,20B0H, IN 0FAH / OUT 0F9H, OUT 0E1H at MAIN.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+namespace alp85::board {
+
+enum class Memory : std::uint8_t { MonitorEprom, UserEprom, Ram, Ram8155 };
+enum class MemoryKind : std::uint8_t { Rom, Ram };
+
+struct MemoryRegion {
+    Memory id;
+    std::uint16_t base;
+    std::uint16_t size;
+    MemoryKind kind;
+    std::string_view name;   // short name for scripts and the debugger
+    std::string_view part;   // what the thesis says sits there
+};
+
+inline constexpr std::array<MemoryRegion, 4> kMemoryMap{{
+    {Memory::MonitorEprom, 0x0000, 0x0800, MemoryKind::Rom, "monitor", "2 KB monitor EPROM (2716)"},
+    {Memory::UserEprom, 0x0800, 0x0800, MemoryKind::Rom, "user", "2 KB user EPROM (2716): the thesis firmware, ORG 0800H"},
+    {Memory::Ram, 0x1000, 0x1000, MemoryKind::Ram, "ram", "4 KB static RAM (firmware variables at 1B00H)"},
+    {Memory::Ram8155, 0x2000, 0x0100, MemoryKind::Ram, "ram8155", "8155 RAM, IO/M low (firmware stack below 20B0H)"},
+}};
+
+enum class Device : std::uint8_t { Kdc8279, Rio8155 };
+
+struct IoRegion {
+    Device device;
+    std::uint8_t first;
+    std::uint8_t last;
+    std::string_view name;
+    std::string_view registers;  // how the chip's address lines see the ports
+};
+
+// Unmapped ports and memory read FFH (a floating, pulled-up data bus).
+inline constexpr std::array<IoRegion, 2> kIoMap{{
+    {Device::Kdc8279, 0xE0, 0xE1, "8279", "A0 = port bit 0: E0H data, E1H command/status"},
+    {Device::Rio8155, 0xF8, 0xFD, "8155",
+     "AD0-AD2 = port - F8H: F8H command/status, F9H port A (motor outputs), FAH port B "
+     "(transducer inputs), FBH port C, FCH timer low, FDH timer high"},
+}};
+
+enum class Source : std::uint8_t { Irq8279, TimerOut8155, VectIntrKey, ResetKey };
+enum class CpuPin : std::uint8_t { Rst55, Trap, Rst75, ResetIn };
+
+struct Wire {
+    Source source;
+    CpuPin pin;
+    std::string_view why;
+};
+
+inline constexpr std::array<Wire, 4> kInterruptWiring{{
+    {Source::Irq8279, CpuPin::Rst55, "key in the FIFO: the monitor may read keys by interrupt"},
+    {Source::TimerOut8155, CpuPin::Trap, "the monitor's single step: a timer pulse traps after one instruction"},
+    {Source::VectIntrKey, CpuPin::Rst75, "the VECT INTR key (rising edge latched by the 8085)"},
+    {Source::ResetKey, CpuPin::ResetIn, "the RESET key resets the CPU, and RESET OUT the 8155 and 8279"},
+}};
+
+// The board's clock: a 6.144 MHz crystal on X1/X2; the 8085 divides by two. CLK OUT (3.072 MHz,
+// one pulse per T-state) drives the 8155's TIMER IN and the 8279's CLK.
+inline constexpr std::uint32_t kCrystalHz = 6'144'000;
+inline constexpr std::uint32_t kCpuHz = kCrystalHz / 2;
+
+constexpr const MemoryRegion& region(Memory id) { return kMemoryMap[static_cast<std::size_t>(id)]; }
+
+}  // namespace alp85::board

@@ -1,0 +1,75 @@
+// The ALP85 command language (docs/scripting.md): one command per line, shared by `alp85 script`
+// and the debugger's prompt. A Command is a parsed line; symbols in it are resolved when it runs.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "peripherals/keypad.h"
+
+namespace alp85::script {
+
+struct Location {
+    std::string file;
+    int line = 0;
+    int col = 0;
+};
+
+// NUMBER, or SYMBOL with an optional +/- NUMBER. Resolved against the session's symbols.
+struct Value {
+    std::string symbol;  // upper case; empty for a plain number
+    std::int64_t number = 0;
+    int col = 0;
+    std::string text;    // as written, for messages
+};
+
+struct KeyRef {
+    enum class Kind : std::uint8_t { Matrix, Reset, Vect };
+    Kind kind = Kind::Matrix;
+    periph::Key key = periph::Key::K0;
+    std::string name;
+};
+
+enum class Reg : std::uint8_t { A, B, C, D, E, H, L, F, BC, DE, HL, SP, PC, PSW };
+enum class Compare : std::uint8_t { Lt, Le, Eq, Ge, Gt };
+
+enum class Op : std::uint8_t {
+    Load, Monitor, Reset,
+    Press, Type, KeyDown, KeyUp,
+    Run, RunUntil, WaitDisplay, Step,
+    Break, Delete, DeleteAll,
+    ExpectDisplay, ExpectMem, ExpectWord, ExpectReg, ExpectFlag, ExpectPort, ExpectSymbol, ExpectTime,
+    ExpectHalted, ExpectRunning,
+    SetMem, SetReg,
+    Save, Restore,
+    PrintDisplay, Print,
+};
+
+struct Command {
+    Op op = Op::Print;
+    Location where;
+    std::string line;                   // the source line, for reports
+    std::string text;                   // path, display text or message
+    std::optional<Value> address;       // load at / run until / break / expect & set mem, word
+    std::vector<Value> values;          // data bytes, register/port/symbol values
+    std::vector<KeyRef> keys;
+    std::uint64_t time = 0;             // run TIME, hold, timeout, expect time (T-states)
+    std::uint64_t gap = 0;              // press: gap after release
+    Reg reg = Reg::A;
+    std::uint8_t flag = 0;              // flag bit (isa::Flag)
+    std::string flag_name;
+    char port = 'A';
+    Compare compare = Compare::Eq;
+    std::string name;                   // expect symbol NAME
+    unsigned count = 1;                 // step N
+};
+
+// Default times (docs/scripting.md).
+inline constexpr std::uint64_t kDefaultHold = 92'160;      // 30 ms at 3.072 MHz
+inline constexpr std::uint64_t kDefaultGap = 92'160;       // 30 ms
+inline constexpr std::uint64_t kDefaultUntil = 30'720'000;  // 10 s
+inline constexpr std::uint64_t kDefaultWait = 15'360'000;   // 5 s
+
+}  // namespace alp85::script

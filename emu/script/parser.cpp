@@ -1,0 +1,593 @@
+#include "emu/script/parser.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "asm/isa.h"
+#include "emu/board_map.h"
+
+namespace alp85::script {
+namespace {
+
+struct Token {
+    std::string text;
+    int col = 0;        // 1-based
+    bool quoted = false;
+};
+
+std::string upper(std::string_view s) {
+    std::string u(s);
+    std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return u;
+}
+
+class LineParser {
+public:
+    LineParser(std::string_view line, const std::string& file, int line_no, std::vector<ParseError>& errors)
+        : line_(line), file_(file), line_no_(line_no), errors_(errors) {}
+
+    std::optional<Command> parse() {
+        if (!tokenize()) return std::nullopt;
+        if (tokens_.empty()) return std::nullopt;
+        Command c;
+        c.where = {file_, line_no_, tokens_[0].col};
+        c.line = std::string(line_);
+        const std::string verb = upper(tokens_[0].text);
+        pos_ = 1;
+        static const std::map<std::string, std::function<bool(LineParser&, Command&)>> verbs = {
+            {"LOAD", &LineParser::load},       {"MONITOR", &LineParser::monitor},
+            {"RESET", &LineParser::reset},     {"PRESS", &LineParser::press},
+            {"TYPE", &LineParser::type},       {"KEYDOWN", &LineParser::keydown},
+            {"KEYUP", &LineParser::keyup},     {"RUN", &LineParser::run},
+            {"WAIT", &LineParser::wait},       {"STEP", &LineParser::step},
+            {"BREAK", &LineParser::brk},       {"DELETE", &LineParser::del},
+            {"EXPECT", &LineParser::expect},   {"SET", &LineParser::set},
+            {"SAVE", &LineParser::save},       {"RESTORE", &LineParser::restore},
+            {"PRINT", &LineParser::print},
+        };
+        const auto it = verbs.find(verb);
+        if (it == verbs.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
+        if (!it->second(*this, c)) return std::nullopt;
+        if (pos_ < tokens_.size()) return fail(tokens_[pos_], fmt::format("unexpected '{}'", tokens_[pos_].text));
+        return c;
+    }
+
+private:
+    // ---- tokens --------------------------------------------------------------------------------
+    bool tokenize() {
+        std::size_t i = 0;
+        while (i < line_.size()) {
+            const char ch = line_[i];
+            if (std::isspace(static_cast<unsigned char>(ch))) {
+                ++i;
+                continue;
+            }
+            if (ch == '#' || ch == ';') break;
+            Token t;
+            t.col = static_cast<int>(i) + 1;
+            if (ch == '"') {
+                t.quoted = true;
+                ++i;
+                bool closed = false;
+                while (i < line_.size()) {
+                    if (line_[i] == '\\' && i + 1 < line_.size()) {
+                        t.text += line_[i + 1];
+                        i += 2;
+                    } else if (line_[i] == '"') {
+                        closed = true;
+                        ++i;
+                        break;
+                    } else {
+                        t.text += line_[i++];
+                    }
+                }
+                if (!closed) {
+                    error(t.col, "string has no closing quote");
+                    return false;
+                }
+            } else {
+                while (i < line_.size() && !std::isspace(static_cast<unsigned char>(line_[i])) && line_[i] != '"')
+                    t.text += line_[i++];
+            }
+            tokens_.push_back(std::move(t));
+        }
+        return true;
+    }
+
+    bool more() const { return pos_ < tokens_.size(); }
+    const Token& peek() const { return tokens_[pos_]; }
+    int end_col() const { return static_cast<int>(line_.size()) + 1; }
+    bool at_word(std::string_view w) const { return more() && !peek().quoted && upper(peek().text) == w; }
+
+    void error(int col, std::string message) {
+        errors_.push_back({{file_, line_no_, col}, std::move(message), std::string(line_)});
+    }
+    std::nullopt_t fail(const Token& t, std::string message) {
+        error(t.col, std::move(message));
+        return std::nullopt;
+    }
+    bool missing(std::string what) {
+        error(more() ? peek().col : end_col(), "expected " + what);
+        return false;
+    }
+
+    // ---- operands ------------------------------------------------------------------------------
+    bool word(std::string_view w) {
+        if (!at_word(w)) return missing(fmt::format("'{}'", upper(w)));
+        ++pos_;
+        return true;
+    }
+
+    bool string_operand(std::string& out, const char* what) {
+        if (!more()) return missing(what);
+        out = peek().text;
+        ++pos_;
+        return true;
+    }
+
+    bool quoted(std::string& out, const char* what) {
+        if (!more() || !peek().quoted) return missing(what);
+        out = peek().text;
+        ++pos_;
+        return true;
+    }
+
+    bool value(Value& v, const char* what) {
+        if (!more() || peek().quoted) return missing(what);
+        const Token& t = peek();
+        v.col = t.col;
+        v.text = t.text;
+        // SYMBOL[(+|-)NUMBER] or NUMBER
+        const std::string& s = t.text;
+        std::size_t split = s.find_first_of("+-", 1);
+        std::string head = s.substr(0, split);
+        std::int64_t offset = 0;
+        if (split != std::string::npos) {
+            const auto n = parse_number(std::string_view(s).substr(split + 1));
+            if (!n) {
+                error(t.col + static_cast<int>(split) + 1, fmt::format("bad number '{}'", s.substr(split + 1)));
+                return false;
+            }
+            offset = s[split] == '-' ? -*n : *n;
+        }
+        if (!head.empty() && std::isdigit(static_cast<unsigned char>(head[0]))) {
+            const auto n = parse_number(head);
+            if (!n) {
+                error(t.col, fmt::format("bad number '{}'", head));
+                return false;
+            }
+            v.number = *n + offset;
+        } else if (head.size() > 0 && (std::isalpha(static_cast<unsigned char>(head[0])) || head[0] == '_' ||
+                                       head[0] == '?' || head[0] == '@' || head[0] == '.')) {
+            v.symbol = upper(head);
+            v.number = offset;
+        } else {
+            error(t.col, fmt::format("expected {}, found '{}'", what, s));
+            return false;
+        }
+        ++pos_;
+        return true;
+    }
+
+    bool time(std::uint64_t& out, const char* what) {
+        if (!more() || peek().quoted) return missing(what);
+        const auto t = parse_time(peek().text);
+        if (!t) {
+            error(peek().col, fmt::format("bad time '{}' (a number with a unit: t, us, ms or s)", peek().text));
+            return false;
+        }
+        out = *t;
+        ++pos_;
+        return true;
+    }
+
+    bool key(KeyRef& k) {
+        if (!more() || peek().quoted) return missing("a key name");
+        const auto r = parse_key(peek().text);
+        if (!r) {
+            error(peek().col, fmt::format("unknown key '{}'", peek().text));
+            return false;
+        }
+        k = *r;
+        ++pos_;
+        return true;
+    }
+
+    bool reg(Reg& r) {
+        if (!more() || peek().quoted) return missing("a register");
+        const auto v = parse_reg(peek().text);
+        if (!v) {
+            error(peek().col, fmt::format("unknown register '{}'", peek().text));
+            return false;
+        }
+        r = *v;
+        ++pos_;
+        return true;
+    }
+
+    bool optional_time(std::string_view w, std::uint64_t& out) {
+        if (!at_word(w)) return true;
+        ++pos_;
+        return time(out, "a time");
+    }
+
+    // ---- verbs ---------------------------------------------------------------------------------
+    bool load(Command& c) {
+        c.op = Op::Load;
+        if (!string_operand(c.text, "a file name")) return false;
+        if (at_word("AT")) {
+            ++pos_;
+            Value v;
+            if (!value(v, "an address")) return false;
+            c.address = v;
+        }
+        return true;
+    }
+    bool monitor(Command& c) {
+        c.op = Op::Monitor;
+        return true;
+    }
+    bool reset(Command& c) {
+        c.op = Op::Reset;
+        return true;
+    }
+    bool press(Command& c) {
+        c.op = Op::Press;
+        KeyRef k;
+        if (!key(k)) return false;
+        c.keys.push_back(k);
+        c.time = kDefaultHold;
+        c.gap = kDefaultGap;
+        while (at_word("HOLD") || at_word("GAP")) {
+            if (at_word("HOLD")) {
+                if (!optional_time("HOLD", c.time)) return false;
+            } else if (!optional_time("GAP", c.gap)) {
+                return false;
+            }
+        }
+        return true;
+    }
+    bool type(Command& c) {
+        c.op = Op::Type;
+        c.time = kDefaultHold;
+        c.gap = kDefaultGap;
+        if (!more()) return missing("one or more key names");
+        while (more()) {
+            KeyRef k;
+            if (!key(k)) return false;
+            c.keys.push_back(k);
+        }
+        return true;
+    }
+    bool keydown(Command& c) {
+        c.op = Op::KeyDown;
+        KeyRef k;
+        if (!key(k)) return false;
+        c.keys.push_back(k);
+        return true;
+    }
+    bool keyup(Command& c) {
+        c.op = Op::KeyUp;
+        KeyRef k;
+        if (!key(k)) return false;
+        c.keys.push_back(k);
+        return true;
+    }
+    bool run(Command& c) {
+        if (at_word("UNTIL")) {
+            ++pos_;
+            c.op = Op::RunUntil;
+            Value v;
+            if (!value(v, "an address or symbol")) return false;
+            c.address = v;
+            c.time = kDefaultUntil;
+            return optional_time("TIMEOUT", c.time);
+        }
+        c.op = Op::Run;
+        return time(c.time, "a time (e.g. 100ms) or 'until'");
+    }
+    bool wait(Command& c) {
+        c.op = Op::WaitDisplay;
+        if (!word("DISPLAY")) return false;
+        if (!quoted(c.text, "the display text in quotes")) return false;
+        c.time = kDefaultWait;
+        return optional_time("TIMEOUT", c.time);
+    }
+    bool step(Command& c) {
+        c.op = Op::Step;
+        if (more()) {
+            const auto n = parse_number(peek().text);
+            if (!n || *n < 1 || *n > 100'000'000) {
+                error(peek().col, fmt::format("bad step count '{}'", peek().text));
+                return false;
+            }
+            c.count = static_cast<unsigned>(*n);
+            ++pos_;
+        }
+        return true;
+    }
+    bool brk(Command& c) {
+        c.op = Op::Break;
+        Value v;
+        if (!value(v, "an address or symbol")) return false;
+        c.address = v;
+        return true;
+    }
+    bool del(Command& c) {
+        if (at_word("ALL")) {
+            ++pos_;
+            c.op = Op::DeleteAll;
+            return true;
+        }
+        c.op = Op::Delete;
+        Value v;
+        if (!value(v, "an address, a symbol or 'all'")) return false;
+        c.address = v;
+        return true;
+    }
+    bool values(Command& c, const char* what) {
+        if (!more()) return missing(what);
+        while (more()) {
+            Value v;
+            if (!value(v, what)) return false;
+            c.values.push_back(v);
+        }
+        return true;
+    }
+    bool expect(Command& c) {
+        if (!more()) return missing("what to expect (display, mem, word, reg, flag, port, symbol, time, halted, running)");
+        const Token& what = peek();
+        const std::string w = upper(what.text);
+        ++pos_;
+        if (w == "DISPLAY") {
+            c.op = Op::ExpectDisplay;
+            return quoted(c.text, "the display text in quotes");
+        }
+        if (w == "MEM" || w == "WORD") {
+            c.op = w == "MEM" ? Op::ExpectMem : Op::ExpectWord;
+            Value a;
+            if (!value(a, "an address")) return false;
+            c.address = a;
+            if (c.op == Op::ExpectWord) {
+                Value v;
+                if (!value(v, "a value")) return false;
+                c.values.push_back(v);
+                return true;
+            }
+            return values(c, "one or more byte values");
+        }
+        if (w == "REG") {
+            c.op = Op::ExpectReg;
+            Value v;
+            return reg(c.reg) && value(v, "a value") && (c.values.push_back(v), true);
+        }
+        if (w == "FLAG") {
+            c.op = Op::ExpectFlag;
+            if (!more()) return missing("a flag (S Z AC P CY V K)");
+            static const std::map<std::string, std::uint8_t> flags = {
+                {"S", isa::F_S}, {"Z", isa::F_Z}, {"K", isa::F_K}, {"X5", isa::F_K}, {"AC", isa::F_AC},
+                {"P", isa::F_P}, {"V", isa::F_V}, {"CY", isa::F_CY}, {"C", isa::F_CY}};
+            const auto f = flags.find(upper(peek().text));
+            if (f == flags.end()) return fail(peek(), fmt::format("unknown flag '{}'", peek().text)), false;
+            c.flag = f->second;
+            c.flag_name = f->first;
+            ++pos_;
+            Value v;
+            if (!value(v, "0 or 1")) return false;
+            if (!v.symbol.empty() || (v.number != 0 && v.number != 1))
+                return error(v.col, "a flag is 0 or 1"), false;
+            c.values.push_back(v);
+            return true;
+        }
+        if (w == "PORT") {
+            c.op = Op::ExpectPort;
+            if (!more()) return missing("a port (A, B or C)");
+            const std::string p = upper(peek().text);
+            if (p != "A" && p != "B" && p != "C") return fail(peek(), fmt::format("unknown port '{}'", peek().text)), false;
+            c.port = p[0];
+            ++pos_;
+            Value v;
+            return value(v, "a value") && (c.values.push_back(v), true);
+        }
+        if (w == "SYMBOL") {
+            c.op = Op::ExpectSymbol;
+            if (!more() || peek().quoted) return missing("a symbol name");
+            c.name = upper(peek().text);
+            ++pos_;
+            Value v;
+            return value(v, "a value") && (c.values.push_back(v), true);
+        }
+        if (w == "TIME") {
+            c.op = Op::ExpectTime;
+            if (!more()) return missing("a comparison (< <= = >= >)");
+            static const std::map<std::string, Compare> ops = {
+                {"<", Compare::Lt}, {"<=", Compare::Le}, {"=", Compare::Eq}, {"==", Compare::Eq},
+                {">=", Compare::Ge}, {">", Compare::Gt}};
+            const auto o = ops.find(peek().text);
+            if (o == ops.end()) return fail(peek(), fmt::format("unknown comparison '{}'", peek().text)), false;
+            c.compare = o->second;
+            ++pos_;
+            return time(c.time, "a time");
+        }
+        if (w == "HALTED") {
+            c.op = Op::ExpectHalted;
+            return true;
+        }
+        if (w == "RUNNING") {
+            c.op = Op::ExpectRunning;
+            return true;
+        }
+        return fail(what, fmt::format("cannot expect '{}' (display, mem, word, reg, flag, port, symbol, time, halted, running)", what.text)), false;
+    }
+    bool set(Command& c) {
+        if (at_word("MEM")) {
+            ++pos_;
+            c.op = Op::SetMem;
+            Value a;
+            if (!value(a, "an address")) return false;
+            c.address = a;
+            return values(c, "one or more byte values");
+        }
+        if (at_word("REG")) {
+            ++pos_;
+            c.op = Op::SetReg;
+            Value v;
+            return reg(c.reg) && value(v, "a value") && (c.values.push_back(v), true);
+        }
+        return missing("'mem' or 'reg'");
+    }
+    bool save(Command& c) {
+        c.op = Op::Save;
+        return string_operand(c.text, "a snapshot file name");
+    }
+    bool restore(Command& c) {
+        c.op = Op::Restore;
+        return string_operand(c.text, "a snapshot file name");
+    }
+    bool print(Command& c) {
+        if (at_word("DISPLAY")) {
+            ++pos_;
+            c.op = Op::PrintDisplay;
+            if (at_word("TEXT")) {  // the display as quoted text instead of seven-segment art
+                ++pos_;
+                c.text = "text";
+            }
+            return true;
+        }
+        c.op = Op::Print;
+        while (more()) {
+            if (!c.text.empty()) c.text += ' ';
+            c.text += peek().text;
+            ++pos_;
+        }
+        return true;
+    }
+
+    std::string_view line_;
+    const std::string& file_;
+    int line_no_;
+    std::vector<ParseError>& errors_;
+    std::vector<Token> tokens_;
+    std::size_t pos_ = 0;
+};
+
+}  // namespace
+
+std::string ParseError::format() const {
+    std::string caret(static_cast<std::size_t>(std::max(where.col, 1) - 1), ' ');
+    for (std::size_t i = 0; i < caret.size() && i < line.size(); ++i)
+        if (line[i] == '\t') caret[i] = '\t';
+    return fmt::format("{}:{}:{}: error: {}\n {}\n {}^\n", where.file, where.line, where.col, message, line, caret);
+}
+
+std::optional<Command> parse_line(std::string_view line, const std::string& file, int line_no,
+                                  std::vector<ParseError>& errors) {
+    return LineParser(line, file, line_no, errors).parse();
+}
+
+std::vector<Command> parse_script(std::string_view text, const std::string& file, std::vector<ParseError>& errors) {
+    std::vector<Command> out;
+    int n = 0;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view line = text.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        ++n;
+        if (auto c = parse_line(line, file, n, errors)) out.push_back(std::move(*c));
+        if (end == text.size()) break;
+        start = end + 1;
+    }
+    return out;
+}
+
+std::optional<std::int64_t> parse_number(std::string_view text) {
+    if (text.empty()) return std::nullopt;
+    std::string s = upper(text);
+    int base = 10;
+    if (s.size() > 2 && s[0] == '0' && s[1] == 'X') {
+        base = 16;
+        s = s.substr(2);
+    } else if (s.size() > 1 && s.back() == 'H') {
+        base = 16;
+        s.pop_back();
+    } else if (s.size() > 1 && (s.back() == 'O' || s.back() == 'Q')) {
+        base = 8;
+        s.pop_back();
+    } else if (s.size() > 1 && s.back() == 'B') {
+        base = 2;
+        s.pop_back();
+    } else if (s.size() > 1 && s.back() == 'D') {
+        s.pop_back();
+    }
+    if (s.empty() || s.size() > 16 || !std::isdigit(static_cast<unsigned char>(s[0]))) return std::nullopt;
+    std::int64_t v = 0;
+    for (char ch : s) {
+        int d;
+        if (ch >= '0' && ch <= '9') d = ch - '0';
+        else if (ch >= 'A' && ch <= 'F') d = ch - 'A' + 10;
+        else return std::nullopt;
+        if (d >= base) return std::nullopt;
+        v = v * base + d;
+    }
+    return v;
+}
+
+std::optional<std::uint64_t> parse_time(std::string_view text) {
+    std::string s = upper(text);
+    std::size_t i = 0;
+    while (i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
+    if (i == 0) return std::nullopt;
+    const std::string num = s.substr(0, i), unit = s.substr(i);
+    if (std::count(num.begin(), num.end(), '.') > 1) return std::nullopt;
+    char* end = nullptr;
+    const double v = std::strtod(num.c_str(), &end);
+    if (end != num.c_str() + num.size() || !std::isfinite(v)) return std::nullopt;
+    double t;
+    if (unit == "T") {
+        if (num.find('.') != std::string::npos) return std::nullopt;
+        t = v;
+    } else if (unit == "US") {
+        t = v * board::kCpuHz / 1e6;
+    } else if (unit == "MS") {
+        t = v * board::kCpuHz / 1e3;
+    } else if (unit == "S") {
+        t = v * board::kCpuHz;
+    } else {
+        return std::nullopt;
+    }
+    if (t > 1e15) return std::nullopt;  // 10 years of simulated time: surely a typo
+    return static_cast<std::uint64_t>(std::llround(t));
+}
+
+std::optional<KeyRef> parse_key(std::string_view text) {
+    const std::string u = upper(text);
+    if (u == "RESET") return KeyRef{KeyRef::Kind::Reset, periph::Key::K0, u};
+    if (u == "VECT" || u == "VECTINTR" || u == "VECT_INTR") return KeyRef{KeyRef::Kind::Vect, periph::Key::K0, "VECT"};
+    if (const auto k = periph::Keypad::find(u)) return KeyRef{KeyRef::Kind::Matrix, *k, u};
+    return std::nullopt;
+}
+
+std::optional<Reg> parse_reg(std::string_view text) {
+    static const std::map<std::string, Reg> regs = {
+        {"A", Reg::A},   {"B", Reg::B},   {"C", Reg::C},   {"D", Reg::D},   {"E", Reg::E},
+        {"H", Reg::H},   {"L", Reg::L},   {"F", Reg::F},   {"BC", Reg::BC}, {"DE", Reg::DE},
+        {"HL", Reg::HL}, {"SP", Reg::SP}, {"PC", Reg::PC}, {"PSW", Reg::PSW}};
+    const auto it = regs.find(upper(text));
+    if (it == regs.end()) return std::nullopt;
+    return it->second;
+}
+
+std::string_view reg_name(Reg r) {
+    static constexpr std::string_view names[] = {"A", "B", "C", "D", "E", "H", "L", "F", "BC", "DE", "HL", "SP", "PC", "PSW"};
+    return names[static_cast<int>(r)];
+}
+
+}  // namespace alp85::script

@@ -1,0 +1,108 @@
+#include "emu/script/runner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iterator>
+
+#include <fmt/format.h>
+
+namespace alp85::script {
+namespace {
+
+std::string xml_escape(std::string_view s) {
+    std::string out;
+    for (char ch : s) {
+        switch (ch) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            default:
+                // XML 1.0 allows no control characters other than tab, newline and return.
+                if (static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\n' && ch != '\r') out += '?';
+                else out += ch;
+        }
+    }
+    return out;
+}
+
+SessionOptions session_options(const std::filesystem::path& file, const RunnerOptions& o) {
+    SessionOptions s;
+    s.base_dir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+    s.monitor_rom = o.monitor_rom;
+    s.out = o.out;
+    s.verbose = o.verbose;
+    return s;
+}
+
+}  // namespace
+
+bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, std::vector<ParseError>& errors,
+             const RunnerOptions& options) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        errors.push_back({{file.string(), 0, 0}, "cannot open script", ""});
+        return false;
+    }
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::size_t before = errors.size();
+    commands = parse_script(text, file.string(), errors);
+    Session checker(session_options(file, options));
+    checker.check(commands, errors);  // the lines that parsed: files, symbols, ranges
+    std::stable_sort(errors.begin() + static_cast<std::ptrdiff_t>(before), errors.end(),
+                     [](const ParseError& a, const ParseError& b) { return a.where.line < b.where.line; });
+    return errors.size() == before;
+}
+
+ScriptResult execute(const std::filesystem::path& file, const std::vector<Command>& commands,
+                     const RunnerOptions& options) {
+    ScriptResult r;
+    r.file = file.string();
+    Session session(session_options(file, options));
+    if (options.trace) session.set_trace(options.trace);
+    const auto start = std::chrono::steady_clock::now();
+    r.passed = true;
+    for (const Command& c : commands) {
+        ++r.commands;
+        const Session::Outcome o = session.execute(c);
+        if (o.status != Session::Status::Ok) {
+            r.passed = false;
+            r.failure = o.message;
+            break;
+        }
+    }
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.tstates = session.machine().now();
+    session.set_trace(nullptr);
+    return r;
+}
+
+std::string junit_xml(const std::vector<ScriptResult>& results) {
+    int failures = 0;
+    double total = 0;
+    for (const auto& r : results) {
+        failures += r.passed ? 0 : 1;
+        total += r.seconds;
+    }
+    std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    x += fmt::format("<testsuites tests=\"{}\" failures=\"{}\" time=\"{:.6f}\">\n", results.size(), failures, total);
+    x += fmt::format("  <testsuite name=\"alp85 script\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.6f}\">\n",
+                     results.size(), failures, total);
+    for (const auto& r : results) {
+        x += fmt::format("    <testcase classname=\"alp85.script\" name=\"{}\" time=\"{:.6f}\"", xml_escape(r.file), r.seconds);
+        if (r.passed) {
+            x += fmt::format(">\n      <system-out>{} commands, {:.3f} ms simulated</system-out>\n    </testcase>\n",
+                             r.commands, static_cast<double>(r.tstates) * 1000.0 / board::kCpuHz);
+        } else {
+            const std::string first = r.failure.substr(0, r.failure.find('\n'));
+            x += fmt::format(">\n      <failure message=\"{}\">{}</failure>\n    </testcase>\n", xml_escape(first),
+                             xml_escape(r.failure));
+        }
+    }
+    x += "  </testsuite>\n</testsuites>\n";
+    return x;
+}
+
+}  // namespace alp85::script

@@ -1,0 +1,42 @@
+// Running script files: parse and check each completely, then execute it on a fresh machine.
+// `alp85 script` is a thin CLI over this; tests call it directly.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "emu/script/session.h"
+
+namespace alp85::script {
+
+struct ScriptResult {
+    std::string file;
+    bool passed = false;
+    std::string failure;       // the failed command's report (empty when passed)
+    std::uint64_t tstates = 0; // simulated time the script took
+    double seconds = 0;        // host time
+    int commands = 0;          // commands executed
+};
+
+struct RunnerOptions {
+    std::function<std::vector<ImageSegment>()> monitor_rom;
+    std::ostream* out = nullptr;    // print output, -v echo, failure reports
+    std::ostream* trace = nullptr;  // --trace CSV
+    bool verbose = false;
+};
+
+// Parses and checks a file. Returns false and fills `errors` when the script cannot run.
+bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, std::vector<ParseError>& errors,
+             const RunnerOptions& options);
+
+// Executes prepared commands on a fresh session; stops at the first failure.
+ScriptResult execute(const std::filesystem::path& file, const std::vector<Command>& commands,
+                     const RunnerOptions& options);
+
+// JUnit XML for CI systems: one testsuite, one testcase per script.
+std::string junit_xml(const std::vector<ScriptResult>& results);
+
+}  // namespace alp85::script

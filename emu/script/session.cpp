@@ -1,0 +1,460 @@
+#include "emu/script/session.h"
+
+#include <algorithm>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "asm/disasm.h"
+#include "emu/snapshot_file.h"
+#include "peripherals/seven_segment.h"
+
+namespace alp85::script {
+namespace {
+
+std::string rtrim(std::string s) {
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    return s;
+}
+
+std::string hex(std::int64_t v, int digits) { return fmt::format("{:0{}X}H", v, digits); }
+
+bool is_pair(Reg r) { return r >= Reg::BC; }
+
+std::string lower_ext(const std::filesystem::path& p) {
+    std::string e = p.extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    return e;
+}
+
+}  // namespace
+
+Session::Session(SessionOptions options)
+    : options_(std::move(options)), machine_(std::make_unique<Machine>(Machine::Options{options_.cpu})) {}
+
+std::string Session::format_time(std::uint64_t t) {
+    return fmt::format("{:.3f} ms ({} T-states)", static_cast<double>(t) * 1000.0 / board::kCpuHz, t);
+}
+
+std::string Session::where_now() const {
+    return fmt::format("at {}, PC={}, display \"{}\"", format_time(elapsed()), hex(machine_->cpu().regs().pc, 4),
+                       machine_->display_text());
+}
+
+std::filesystem::path Session::resolve(const std::string& path) const {
+    std::filesystem::path p(path);
+    return p.is_absolute() ? p : options_.base_dir / p;
+}
+
+std::optional<std::int64_t> Session::resolve(const Value& v, std::string& error) const {
+    if (v.symbol.empty()) return v.number;
+    const auto it = symbols_.find(v.symbol);
+    if (it == symbols_.end()) {
+        error = fmt::format("unknown symbol '{}'", v.symbol);
+        return std::nullopt;
+    }
+    return it->second + v.number;
+}
+
+Session::Outcome Session::fail(const Command& c, std::string what) const {
+    return {Status::Failed, fmt::format("{}:{}: {}\n  {}\n  {}", c.where.file, c.where.line, rtrim(c.line), what,
+                                        where_now())};
+}
+
+Session::Outcome Session::fail_expect(const Command& c, const std::string& expected, const std::string& actual) const {
+    return {Status::Failed, fmt::format("{}:{}: expectation failed: {}\n  expected: {}\n  actual:   {}\n  {}",
+                                        c.where.file, c.where.line, rtrim(c.line), expected, actual, where_now())};
+}
+
+void Session::set_trace(std::ostream* out) {
+    trace_ = out;
+    if (!out) {
+        machine_->set_trace({});
+        return;
+    }
+    *out << "tstate,pc,opcode,instruction,a,f,b,c,d,e,h,l,sp\n";
+    machine_->set_trace([this](const I8085& cpu) {
+        const Registers& r = cpu.regs();
+        const auto d = asm85::disassemble([this](std::uint16_t a) { return machine_->peek(a); }, r.pc);
+        *trace_ << fmt::format("{},{:04X},{:02X},\"{}\",{:02X},{:02X},{:02X},{:02X},{:02X},{:02X},{:02X},{:02X},{:04X}\n",
+                               cpu.cycles(), r.pc, d.bytes[0], d.text, r.a, r.f, r.b, r.c, r.d, r.e, r.h, r.l, r.sp);
+    });
+}
+
+void Session::check(const std::vector<Command>& commands, std::vector<ParseError>& errors) {
+    std::set<std::string> known;  // symbols defined by loads so far
+    std::set<std::string> saved;  // snapshot files an earlier command writes
+    auto err = [&](const Command& c, int col, std::string msg) {
+        errors.push_back({{c.where.file, c.where.line, col}, std::move(msg), c.line});
+    };
+    auto col_of = [](const Command& c, const std::string& text) {
+        const auto p = c.line.find(text);
+        return p == std::string::npos ? c.where.col : static_cast<int>(p) + 1;
+    };
+    auto check_value = [&](const Command& c, const Value& v, std::int64_t lo, std::int64_t hi, const char* what) {
+        if (!v.symbol.empty()) {
+            if (!known.count(v.symbol)) err(c, v.col, fmt::format("unknown symbol '{}' (no source loaded before this line defines it)", v.symbol));
+            return;
+        }
+        if (v.number < lo || v.number > hi) err(c, v.col, fmt::format("{} {} is out of range ({}..{})", what, v.text, lo, hi));
+    };
+    for (const Command& c : commands) {
+        switch (c.op) {
+            case Op::Load: {
+                const auto path = resolve(c.text);
+                const int col = col_of(c, c.text);
+                if (!std::filesystem::is_regular_file(path)) {
+                    err(c, col, fmt::format("no such file '{}'", path.string()));
+                    break;
+                }
+                const std::string ext = lower_ext(path);
+                if ((ext == ".bin" || ext == ".rom") && !c.address) {
+                    err(c, col, "a binary image needs 'at ADDRESS'");
+                    break;
+                }
+                if (c.address) check_value(c, *c.address, 0, 0xFFFF, "address");
+                try {
+                    LoadOptions lo;
+                    if (c.address) lo.address = 0;  // only to read it here; placed at run time
+                    LoadedImage img = read_image(path, lo);
+                    for (const auto& s : img.symbols) known.insert(s.name);
+                    if (!c.address) assembled_[path.string()] = std::move(img);
+                } catch (const LoadError& e) {
+                    err(c, col, e.what());
+                }
+                break;
+            }
+            case Op::Restore:
+                if (!saved.count(output_path(c.text).string()) && !std::filesystem::is_regular_file(output_path(c.text)))
+                    err(c, col_of(c, c.text), fmt::format("no such snapshot '{}'", output_path(c.text).string()));
+                break;
+            case Op::Save: saved.insert(output_path(c.text).string()); break;
+            case Op::Monitor:
+                if (!options_.monitor_rom) err(c, c.where.col, "this alp85 was built without the monitor ROM");
+                break;
+            case Op::RunUntil:
+            case Op::Break:
+            case Op::Delete: check_value(c, *c.address, 0, 0xFFFF, "address"); break;
+            case Op::ExpectMem:
+            case Op::SetMem:
+                check_value(c, *c.address, 0, 0xFFFF, "address");
+                for (const Value& v : c.values) check_value(c, v, -128, 255, "byte");
+                break;
+            case Op::ExpectWord:
+                check_value(c, *c.address, 0, 0xFFFF, "address");
+                check_value(c, c.values[0], -32768, 0xFFFF, "word");
+                break;
+            case Op::ExpectReg:
+            case Op::SetReg:
+                check_value(c, c.values[0], is_pair(c.reg) ? -32768 : -128, is_pair(c.reg) ? 0xFFFF : 0xFF, "value");
+                break;
+            case Op::ExpectPort: check_value(c, c.values[0], 0, 0xFF, "value"); break;
+            case Op::ExpectSymbol:
+                if (!known.count(c.name)) err(c, col_of(c, c.name), fmt::format("unknown symbol '{}'", c.name));
+                check_value(c, c.values[0], -32768, 0xFFFF, "value");
+                break;
+            default: break;
+        }
+    }
+}
+
+Session::Outcome Session::load(const Command& c) {
+    const auto path = resolve(c.text);
+    try {
+        LoadOptions lo;
+        if (c.address) {
+            std::string e;
+            const auto a = resolve(*c.address, e);
+            if (!a) return fail(c, e);
+            lo.address = static_cast<std::uint16_t>(*a);
+        }
+        const auto cached = assembled_.find(path.string());
+        const LoadedImage img = cached != assembled_.end() && !lo.address ? cached->second : read_image(path, lo);
+        machine_->load(img.segments);
+        for (const auto& s : img.symbols) symbols_[s.name] = s.value;
+    } catch (const LoadError& e) {
+        return fail(c, e.what());
+    } catch (const std::out_of_range& e) {
+        return fail(c, fmt::format("{}: {}", path.string(), e.what()));
+    }
+    return {};
+}
+
+Session::Outcome Session::press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap) {
+    Machine& m = *machine_;
+    const std::uint64_t t = m.now();
+    switch (key.kind) {
+        case KeyRef::Kind::Matrix:
+            m.key_at(key.key, true, t);
+            m.key_at(key.key, false, t + hold);
+            break;
+        case KeyRef::Kind::Reset:
+            m.reset_key_at(true, t);
+            m.reset_key_at(false, t + hold);
+            time_origin_ = t;
+            break;
+        case KeyRef::Kind::Vect:
+            m.vect_intr_at(true, t);
+            m.vect_intr_at(false, t + hold);
+            break;
+    }
+    if (m.run_until(t + hold + gap) == Machine::Stop::Breakpoint && options_.out)
+        *options_.out << fmt::format("{}:{}: stopped at breakpoint {}\n", c.where.file, c.where.line,
+                                     hex(m.cpu().regs().pc, 4));
+    return {};
+}
+
+std::uint16_t Session::read_reg(Reg r) const {
+    const Registers& x = machine_->cpu().regs();
+    switch (r) {
+        case Reg::A: return x.a;
+        case Reg::B: return x.b;
+        case Reg::C: return x.c;
+        case Reg::D: return x.d;
+        case Reg::E: return x.e;
+        case Reg::H: return x.h;
+        case Reg::L: return x.l;
+        case Reg::F: return x.f;
+        case Reg::BC: return x.bc();
+        case Reg::DE: return x.de();
+        case Reg::HL: return x.hl();
+        case Reg::SP: return x.sp;
+        case Reg::PC: return x.pc;
+        case Reg::PSW: return static_cast<std::uint16_t>(x.a << 8 | x.f);
+    }
+    return 0;
+}
+
+void Session::write_reg(Reg r, std::uint16_t v) {
+    Registers& x = machine_->cpu().regs();
+    const auto lo = static_cast<std::uint8_t>(v);
+    switch (r) {
+        case Reg::A: x.a = lo; break;
+        case Reg::B: x.b = lo; break;
+        case Reg::C: x.c = lo; break;
+        case Reg::D: x.d = lo; break;
+        case Reg::E: x.e = lo; break;
+        case Reg::H: x.h = lo; break;
+        case Reg::L: x.l = lo; break;
+        case Reg::F: x.f = lo; break;
+        case Reg::BC: x.set_bc(v); break;
+        case Reg::DE: x.set_de(v); break;
+        case Reg::HL: x.set_hl(v); break;
+        case Reg::SP: x.sp = v; break;
+        case Reg::PC: x.pc = v; break;
+        case Reg::PSW:
+            x.a = static_cast<std::uint8_t>(v >> 8);
+            x.f = lo;
+            break;
+    }
+}
+
+Session::Outcome Session::expect(const Command& c) {
+    const Machine& m = *machine_;
+    std::string e;
+    auto value = [&](const Value& v) { return resolve(v, e); };
+    switch (c.op) {
+        case Op::ExpectDisplay: {
+            const std::string actual = m.display_text();
+            if (rtrim(actual) != rtrim(c.text)) return fail_expect(c, fmt::format("\"{}\"", c.text), fmt::format("\"{}\"", actual));
+            return {};
+        }
+        case Op::ExpectMem: {
+            const auto a = value(*c.address);
+            if (!a) return fail(c, e);
+            std::string exp, act;
+            bool same = true;
+            for (std::size_t i = 0; i < c.values.size(); ++i) {
+                const auto v = value(c.values[i]);
+                if (!v) return fail(c, e);
+                const std::uint8_t want = static_cast<std::uint8_t>(*v);
+                const std::uint8_t got = m.peek(static_cast<std::uint16_t>(*a + static_cast<std::int64_t>(i)));
+                same = same && want == got;
+                exp += (i ? " " : "") + hex(want, 2);
+                act += (i ? " " : "") + hex(got, 2);
+            }
+            if (!same) return fail_expect(c, fmt::format("{} at {}", exp, hex(*a, 4)), act);
+            return {};
+        }
+        case Op::ExpectWord: {
+            const auto a = value(*c.address);
+            const auto v = value(c.values[0]);
+            if (!a || !v) return fail(c, e);
+            const std::uint16_t got = static_cast<std::uint16_t>(m.peek(static_cast<std::uint16_t>(*a)) |
+                                                                 m.peek(static_cast<std::uint16_t>(*a + 1)) << 8);
+            if (got != static_cast<std::uint16_t>(*v)) return fail_expect(c, hex(static_cast<std::uint16_t>(*v), 4), hex(got, 4));
+            return {};
+        }
+        case Op::ExpectReg: {
+            const auto v = value(c.values[0]);
+            if (!v) return fail(c, e);
+            const int digits = is_pair(c.reg) ? 4 : 2;
+            const std::uint16_t want = static_cast<std::uint16_t>(*v & (is_pair(c.reg) ? 0xFFFF : 0xFF));
+            const std::uint16_t got = read_reg(c.reg);
+            if (want != got) return fail_expect(c, fmt::format("{} = {}", reg_name(c.reg), hex(want, digits)), hex(got, digits));
+            return {};
+        }
+        case Op::ExpectFlag: {
+            const bool want = c.values[0].number != 0;
+            const bool got = (m.cpu().regs().f & c.flag) != 0;
+            if (want != got) return fail_expect(c, fmt::format("{} = {}", c.flag_name, want ? 1 : 0), got ? "1" : "0");
+            return {};
+        }
+        case Op::ExpectPort: {
+            const auto v = value(c.values[0]);
+            if (!v) return fail(c, e);
+            const auto& latch = m.rio().state().latch;
+            const std::uint8_t got = latch[static_cast<std::size_t>(c.port - 'A')];
+            if (got != static_cast<std::uint8_t>(*v))
+                return fail_expect(c, fmt::format("port {} latch = {}", c.port, hex(*v, 2)), hex(got, 2));
+            return {};
+        }
+        case Op::ExpectSymbol: {
+            const auto v = value(c.values[0]);
+            if (!v) return fail(c, e);
+            const auto it = symbols_.find(c.name);
+            if (it == symbols_.end()) return fail(c, fmt::format("unknown symbol '{}'", c.name));
+            if (it->second != static_cast<std::uint16_t>(*v)) return fail_expect(c, hex(*v & 0xFFFF, 4), hex(it->second, 4));
+            return {};
+        }
+        case Op::ExpectTime: {
+            const std::uint64_t t = elapsed();
+            bool ok = false;
+            const char* op = "";
+            switch (c.compare) {
+                case Compare::Lt: ok = t < c.time, op = "<"; break;
+                case Compare::Le: ok = t <= c.time, op = "<="; break;
+                case Compare::Eq: ok = t == c.time, op = "="; break;
+                case Compare::Ge: ok = t >= c.time, op = ">="; break;
+                case Compare::Gt: ok = t > c.time, op = ">"; break;
+            }
+            if (!ok) return fail_expect(c, fmt::format("time {} {}", op, format_time(c.time)), format_time(t));
+            return {};
+        }
+        case Op::ExpectHalted:
+            if (!m.cpu().halted()) return fail_expect(c, "the CPU halted", "running");
+            return {};
+        case Op::ExpectRunning:
+            if (m.cpu().halted()) return fail_expect(c, "the CPU running", "halted");
+            return {};
+        default: return {};
+    }
+}
+
+Session::Outcome Session::execute(const Command& c) {
+    Machine& m = *machine_;
+    std::ostream* out = options_.out;
+    if (options_.verbose && out) *out << fmt::format("[{}] {}:{}: {}\n", format_time(elapsed()), c.where.file, c.where.line, rtrim(c.line));
+    std::string e;
+    switch (c.op) {
+        case Op::Load: return load(c);
+        case Op::Monitor:
+            if (!options_.monitor_rom) return fail(c, "this alp85 was built without the monitor ROM");
+            m.load(options_.monitor_rom());
+            return {};
+        case Op::Reset:
+            m.reset();
+            time_origin_ = m.now();
+            return {};
+        case Op::Press: return press(c, c.keys[0], c.time, c.gap);
+        case Op::Type:
+            for (const KeyRef& k : c.keys)
+                if (Outcome o = press(c, k, c.time, c.gap); o.status != Status::Ok) return o;
+            return {};
+        case Op::KeyDown:
+        case Op::KeyUp: {
+            const bool down = c.op == Op::KeyDown;
+            const KeyRef& k = c.keys[0];
+            if (k.kind == KeyRef::Kind::Matrix) m.key_at(k.key, down, m.now());
+            else if (k.kind == KeyRef::Kind::Vect) m.vect_intr_at(down, m.now());
+            else {
+                m.reset_key_at(down, m.now());
+                if (down) time_origin_ = m.now();
+            }
+            m.run_for(0);  // deliver it now
+            return {};
+        }
+        case Op::Run:
+            if (m.run_for(c.time) == Machine::Stop::Breakpoint && out)
+                *out << fmt::format("{}:{}: stopped at breakpoint {}\n", c.where.file, c.where.line, hex(m.cpu().regs().pc, 4));
+            return {};
+        case Op::RunUntil: {
+            const auto a = resolve(*c.address, e);
+            if (!a) return fail(c, e);
+            const auto target = static_cast<std::uint16_t>(*a);
+            const std::vector<std::uint16_t> saved = m.breakpoints();
+            m.clear_breakpoints();
+            m.add_breakpoint(target);
+            const Machine::Stop stop = m.run_for(c.time);
+            m.clear_breakpoints();
+            for (std::uint16_t b : saved) m.add_breakpoint(b);
+            if (stop != Machine::Stop::Breakpoint)
+                return fail(c, fmt::format("the PC did not reach {} within {}", hex(target, 4), format_time(c.time)));
+            return {};
+        }
+        case Op::WaitDisplay: {
+            const std::string want = rtrim(c.text);
+            const Machine::Stop stop = m.run_for(c.time, [&] { return rtrim(m.display_text()) == want; });
+            if (stop == Machine::Stop::Condition) return {};
+            if (stop == Machine::Stop::Breakpoint)
+                return fail(c, fmt::format("stopped at breakpoint {} before the display showed \"{}\"",
+                                           hex(m.cpu().regs().pc, 4), c.text));
+            return fail(c, fmt::format("the display did not show \"{}\" within {}", c.text, format_time(c.time)));
+        }
+        case Op::Step:
+            for (unsigned i = 0; i < c.count; ++i) m.step();
+            return {};
+        case Op::Break:
+        case Op::Delete: {
+            const auto a = resolve(*c.address, e);
+            if (!a) return fail(c, e);
+            if (c.op == Op::Break) m.add_breakpoint(static_cast<std::uint16_t>(*a));
+            else m.remove_breakpoint(static_cast<std::uint16_t>(*a));
+            return {};
+        }
+        case Op::DeleteAll: m.clear_breakpoints(); return {};
+        case Op::SetMem: {
+            const auto a = resolve(*c.address, e);
+            if (!a) return fail(c, e);
+            for (std::size_t i = 0; i < c.values.size(); ++i) {
+                const auto v = resolve(c.values[i], e);
+                if (!v) return fail(c, e);
+                const auto addr = static_cast<std::uint16_t>(*a + static_cast<std::int64_t>(i));
+                if (!m.poke(addr, static_cast<std::uint8_t>(*v)))
+                    return fail(c, fmt::format("no memory at {}", hex(addr, 4)));
+            }
+            return {};
+        }
+        case Op::SetReg: {
+            const auto v = resolve(c.values[0], e);
+            if (!v) return fail(c, e);
+            write_reg(c.reg, static_cast<std::uint16_t>(*v));
+            return {};
+        }
+        case Op::Save:
+            try {
+                m.save_snapshot(output_path(c.text));
+            } catch (const snapshot::SnapshotError& x) {
+                return fail(c, x.what());
+            }
+            return {};
+        case Op::Restore:
+            try {
+                m.load_snapshot(output_path(c.text));
+            } catch (const snapshot::SnapshotError& x) {
+                return fail(c, x.what());
+            }
+            return {};
+        case Op::PrintDisplay:
+            if (out && c.text == "text") *out << '"' << m.display_text() << "\"\n";
+            else if (out)
+                for (const std::string& line : m.display_art()) *out << line << '\n';
+            return {};
+        case Op::Print:
+            if (out) *out << c.text << '\n';
+            return {};
+        default: return expect(c);
+    }
+}
+
+}  // namespace alp85::script

@@ -1,0 +1,82 @@
+// Executes commands of the command language on one Machine: the engine behind `alp85 script` and
+// the debugger's prompt. It keeps what a command needs beyond the machine: the symbols of loaded
+// sources, the script's folder, and the time of the last reset.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "emu/image_loader.h"
+#include "emu/machine.h"
+#include "emu/script/command.h"
+#include "emu/script/parser.h"
+
+namespace alp85::script {
+
+struct SessionOptions {
+    std::filesystem::path base_dir = ".";  // relative paths in commands start here
+    Variant cpu = Variant::I8085;
+    // The monitor EPROM image for the `monitor` command (the front end supplies the built ROM).
+    std::function<std::vector<ImageSegment>()> monitor_rom;
+    std::ostream* out = nullptr;  // print, -v echo
+    bool verbose = false;
+};
+
+class Session {
+public:
+    enum class Status : std::uint8_t { Ok, Failed };
+    struct Outcome {
+        Status status = Status::Ok;
+        std::string message;  // for Failed: what was expected, what was found, when
+    };
+
+    explicit Session(SessionOptions options);
+
+    Machine& machine() { return *machine_; }
+    const Machine& machine() const { return *machine_; }
+
+    // Runs one command. Failed expectations and commands that cannot be carried out (a load that
+    // falls off the board, a snapshot that is refused, a run-until that times out) give Failed.
+    Outcome execute(const Command& command);
+
+    // Checks, before anything runs, what can be checked: files exist, sources assemble, binaries
+    // have an address, symbols are defined by a load before their use, numbers fit. Appends every
+    // problem to `errors` and keeps the assembled images for the run.
+    void check(const std::vector<Command>& commands, std::vector<ParseError>& errors);
+
+    const std::map<std::string, std::uint16_t>& symbols() const { return symbols_; }
+    std::uint64_t elapsed() const { return machine_->now() - time_origin_; }
+    // "at 12.345 ms (37920 T-states), PC=0123H, display "H1=----"" - for failure reports.
+    std::string where_now() const;
+    // A trace line per executed instruction (CSV), to `out`; nullptr stops it.
+    void set_trace(std::ostream* out);
+
+    static std::string format_time(std::uint64_t tstates);
+
+private:
+    std::filesystem::path resolve(const std::string& path) const;  // inputs: from the script's folder
+    static std::filesystem::path output_path(const std::string& path) { return path; }  // snapshots: from the working directory
+    std::optional<std::int64_t> resolve(const Value& v, std::string& error) const;
+    Outcome fail(const Command& c, std::string what) const;
+    Outcome fail_expect(const Command& c, const std::string& expected, const std::string& actual) const;
+    Outcome load(const Command& c);
+    Outcome press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap);
+    Outcome expect(const Command& c);
+    std::uint16_t read_reg(Reg r) const;
+    void write_reg(Reg r, std::uint16_t v);
+
+    SessionOptions options_;
+    std::unique_ptr<Machine> machine_;
+    std::map<std::string, std::uint16_t> symbols_;
+    std::map<std::string, LoadedImage> assembled_;  // from check(), by resolved path
+    std::uint64_t time_origin_ = 0;
+    std::ostream* trace_ = nullptr;
+};
+
+}  // namespace alp85::script

@@ -1,0 +1,83 @@
+#include "peripherals/keypad.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "peripherals/snapshot.h"
+
+namespace alp85::periph {
+
+namespace {
+constexpr std::array<KeyInfo, Keypad::kKeyCount> kLayout{{
+    {Key::K0, "0", "0", 0, 0},       {Key::K1, "1", "1", 0, 1},       {Key::K2, "2", "2", 0, 2},
+    {Key::K3, "3", "3", 0, 3},       {Key::K4, "4", "4", 0, 4},       {Key::K5, "5", "5", 0, 5},
+    {Key::K6, "6", "6", 0, 6},       {Key::K7, "7", "7", 0, 7},       {Key::K8, "8", "8", 1, 0},
+    {Key::K9, "9", "9", 1, 1},       {Key::KA, "A", "A", 1, 2},       {Key::KB, "B", "B", 1, 3},
+    {Key::KC, "C", "C", 1, 4},       {Key::KD, "D", "D", 1, 5},       {Key::KE, "E", "E", 1, 6},
+    {Key::KF, "F", "F", 1, 7},       {Key::Exec, "EXEC", "EXEC", 2, 0}, {Key::Next, "NEXT", "NEXT", 2, 1},
+    {Key::Go, "GO", "GO", 2, 2},     {Key::Mem, "MEM", "SUBST MEM", 2, 3}, {Key::Reg, "REG", "EXAM REG", 2, 4},
+    {Key::Step, "STEP", "SINGLE STEP", 2, 5}, {Key::Prev, "PREV", "PREV", 2, 6}, {Key::R, "R", "R", 2, 7},
+}};
+
+bool iequal(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
+           });
+}
+}  // namespace
+
+std::span<const KeyInfo, Keypad::kKeyCount> Keypad::layout() { return kLayout; }
+
+const KeyInfo& Keypad::info(Key key) { return kLayout[static_cast<std::size_t>(key)]; }
+
+std::optional<Key> Keypad::find(std::string_view name) {
+    for (const auto& k : kLayout) {
+        if (iequal(k.name, name)) return k.key;
+    }
+    return std::nullopt;
+}
+
+std::optional<Key> Keypad::from_code(std::uint8_t fifo_code) {
+    for (const auto& k : kLayout) {
+        if (k.code() == (fifo_code & 0x3F)) return k.key;
+    }
+    return std::nullopt;
+}
+
+void Keypad::set(Key key, bool down) {
+    const KeyInfo& k = info(key);
+    const auto bit = static_cast<std::uint8_t>(1u << k.column);
+    closed_[k.row] = static_cast<std::uint8_t>(down ? (closed_[k.row] | bit) : (closed_[k.row] & ~bit));
+}
+
+bool Keypad::is_pressed(Key key) const {
+    const KeyInfo& k = info(key);
+    return (closed_[k.row] >> k.column) & 1;
+}
+
+std::uint8_t Keypad::return_lines(std::uint8_t scan_lines) const {
+    return static_cast<std::uint8_t>(~closed_[scan_lines & 7]);
+}
+
+void Keypad::save(std::vector<std::uint8_t>& out) const {
+    ByteWriter w(out);
+    w.u8('K');
+    w.u8('P');
+    w.u8(1);
+    w.bytes(closed_);
+}
+
+void Keypad::load(std::span<const std::uint8_t> in) {
+    ByteReader r(in, "keypad");
+    if (r.u8() != 'K' || r.u8() != 'P') r.fail("not a keypad snapshot");
+    if (r.u8() != 1) r.fail("unsupported version");
+    std::array<std::uint8_t, 8> rows{};
+    r.bytes(rows);
+    r.expect_end();
+    for (std::size_t i = 3; i < rows.size(); ++i) {
+        if (rows[i]) r.fail("key down on an unused row");
+    }
+    closed_ = rows;
+}
+
+}  // namespace alp85::periph

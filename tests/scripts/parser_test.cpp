@@ -1,0 +1,159 @@
+// The command language's parser: every command's shape, numbers, times, keys, and errors with
+// their columns (docs/scripting.md).
+#include <gtest/gtest.h>
+
+#include "emu/script/parser.h"
+
+namespace alp85::script {
+namespace {
+
+Command one(std::string_view line) {
+    std::vector<ParseError> errors;
+    auto c = parse_line(line, "t.alp", 1, errors);
+    EXPECT_TRUE(errors.empty()) << (errors.empty() ? "" : errors[0].format());
+    EXPECT_TRUE(c.has_value());
+    return c.value_or(Command{});
+}
+
+ParseError error_of(std::string_view line) {
+    std::vector<ParseError> errors;
+    auto c = parse_line(line, "t.alp", 7, errors);
+    EXPECT_FALSE(c.has_value());
+    EXPECT_EQ(errors.size(), 1u);
+    return errors.empty() ? ParseError{} : errors[0];
+}
+
+TEST(ScriptNumbers, IntelSuffixesAndCPrefix) {
+    EXPECT_EQ(parse_number("1234"), 1234);
+    EXPECT_EQ(parse_number("0800H"), 0x800);
+    EXPECT_EQ(parse_number("0ffh"), 0xFF);
+    EXPECT_EQ(parse_number("0x1B00"), 0x1B00);
+    EXPECT_EQ(parse_number("1010B"), 10);
+    EXPECT_EQ(parse_number("17O"), 15);
+    EXPECT_EQ(parse_number("17Q"), 15);
+    EXPECT_EQ(parse_number("99D"), 99);
+    EXPECT_FALSE(parse_number("FFH"));   // must start with a digit
+    EXPECT_FALSE(parse_number("12G"));
+    EXPECT_FALSE(parse_number("102B"));  // 2 is not binary
+    EXPECT_FALSE(parse_number(""));
+}
+
+TEST(ScriptTimes, UnitsToTStatesAt3072kHz) {
+    EXPECT_EQ(parse_time("3070t"), 3070u);
+    EXPECT_EQ(parse_time("1ms"), 3072u);       // 3.072 MHz
+    EXPECT_EQ(parse_time("1s"), 3'072'000u);
+    EXPECT_EQ(parse_time("250us"), 768u);      // 0.25 ms x 3072
+    EXPECT_EQ(parse_time("1.5ms"), 4608u);
+    EXPECT_EQ(parse_time("1us"), 3u);          // 3.072 rounds to 3
+    EXPECT_FALSE(parse_time("10"));            // a unit is required
+    EXPECT_FALSE(parse_time("1.5t"));          // T-states are whole
+    EXPECT_FALSE(parse_time("5min"));
+    EXPECT_FALSE(parse_time("ms"));
+}
+
+TEST(ScriptKeys, MatrixKeysAndTheTwoOutsideIt) {
+    EXPECT_EQ(parse_key("exec")->key, periph::Key::Exec);
+    EXPECT_EQ(parse_key("a")->key, periph::Key::KA);
+    EXPECT_EQ(parse_key("7")->key, periph::Key::K7);
+    EXPECT_EQ(parse_key("R")->key, periph::Key::R);
+    EXPECT_EQ(parse_key("reset")->kind, KeyRef::Kind::Reset);
+    EXPECT_EQ(parse_key("VECT")->kind, KeyRef::Kind::Vect);
+    EXPECT_FALSE(parse_key("Q"));
+}
+
+TEST(ScriptParser, CommentsAndBlankLinesAreNothing) {
+    std::vector<ParseError> errors;
+    EXPECT_FALSE(parse_line("", "t", 1, errors));
+    EXPECT_FALSE(parse_line("   # note", "t", 1, errors));
+    EXPECT_FALSE(parse_line("; note", "t", 1, errors));
+    EXPECT_TRUE(errors.empty());
+    EXPECT_EQ(one("print \"a # b\"  # not this").text, "a # b");
+}
+
+TEST(ScriptParser, EachCommandsShape) {
+    Command c = one("load ../fw/thesis.asm");
+    EXPECT_EQ(c.op, Op::Load);
+    EXPECT_EQ(c.text, "../fw/thesis.asm");
+    c = one("LOAD rom.bin at 0800H");
+    EXPECT_EQ(c.address->number, 0x800);
+    c = one("press EXEC hold 50ms gap 10ms");
+    EXPECT_EQ(c.op, Op::Press);
+    EXPECT_EQ(c.time, 153'600u);
+    EXPECT_EQ(c.gap, 30'720u);
+    c = one("press 5");
+    EXPECT_EQ(c.time, kDefaultHold);
+    EXPECT_EQ(c.gap, kDefaultGap);
+    c = one("type R 7 0 8 0 0 EXEC");
+    EXPECT_EQ(c.keys.size(), 7u);
+    EXPECT_EQ(c.keys[6].key, periph::Key::Exec);
+    c = one("run 100ms");
+    EXPECT_EQ(c.op, Op::Run);
+    EXPECT_EQ(c.time, 307'200u);
+    c = one("run until BITTI+3 timeout 2s");
+    EXPECT_EQ(c.op, Op::RunUntil);
+    EXPECT_EQ(c.address->symbol, "BITTI");
+    EXPECT_EQ(c.address->number, 3);
+    EXPECT_EQ(c.time, 6'144'000u);
+    c = one("wait display \"H1=----\" timeout 1s");
+    EXPECT_EQ(c.op, Op::WaitDisplay);
+    EXPECT_EQ(c.text, "H1=----");
+    c = one("step 12");
+    EXPECT_EQ(c.count, 12u);
+    EXPECT_EQ(one("delete all").op, Op::DeleteAll);
+    c = one("expect mem 1B00H 01H 02H 0FFH");
+    EXPECT_EQ(c.op, Op::ExpectMem);
+    EXPECT_EQ(c.values.size(), 3u);
+    EXPECT_EQ(c.values[2].number, 0xFF);
+    c = one("expect reg hl TABLE-1");
+    EXPECT_EQ(c.reg, Reg::HL);
+    EXPECT_EQ(c.values[0].number, -1);
+    c = one("expect flag CY 1");
+    EXPECT_EQ(c.flag, 0x01);
+    c = one("expect port b 3");
+    EXPECT_EQ(c.port, 'B');
+    c = one("expect time <= 1.5s");
+    EXPECT_EQ(c.compare, Compare::Le);
+    EXPECT_EQ(c.time, 4'608'000u);
+    EXPECT_EQ(one("expect halted").op, Op::ExpectHalted);
+    EXPECT_EQ(one("set mem 2000H 1 2").values.size(), 2u);
+    EXPECT_EQ(one("set reg PC 0800H").reg, Reg::PC);
+    EXPECT_EQ(one("save a.snap").op, Op::Save);
+    EXPECT_EQ(one("print display").op, Op::PrintDisplay);
+    EXPECT_EQ(one("print display text").text, "text");
+}
+
+TEST(ScriptParser, ErrorsPointAtTheirColumn) {
+    ParseError e = error_of("frobnicate 1");
+    EXPECT_EQ(e.where.line, 7);
+    EXPECT_EQ(e.where.col, 1);
+    EXPECT_EQ(e.message, "unknown command 'frobnicate'");
+    e = error_of("run 5 ms");
+    EXPECT_EQ(e.where.col, 5);
+    e = error_of("expect mem 1000H 12G");
+    EXPECT_EQ(e.where.col, 18);
+    EXPECT_EQ(e.message, "bad number '12G'");
+    e = error_of("press Q");
+    EXPECT_EQ(e.where.col, 7);
+    e = error_of("expect flag Z 2");
+    EXPECT_EQ(e.where.col, 15);
+    e = error_of("wait display H1");
+    EXPECT_EQ(e.message, "expected the display text in quotes");
+    e = error_of("print \"unclosed");
+    EXPECT_EQ(e.message, "string has no closing quote");
+    e = error_of("reset now");
+    EXPECT_EQ(e.where.col, 7);
+    EXPECT_EQ(e.message, "unexpected 'now'");
+    EXPECT_EQ(e.format(), "t.alp:7:7: error: unexpected 'now'\n reset now\n       ^\n");
+}
+
+TEST(ScriptParser, AWholeScriptReportsEveryError) {
+    std::vector<ParseError> errors;
+    const auto cmds = parse_script("reset\nbogus\nrun 1ms\nrun 1xs\n", "s.alp", errors);
+    EXPECT_EQ(cmds.size(), 2u);
+    ASSERT_EQ(errors.size(), 2u);
+    EXPECT_EQ(errors[0].where.line, 2);
+    EXPECT_EQ(errors[1].where.line, 4);
+}
+
+}  // namespace
+}  // namespace alp85::script
