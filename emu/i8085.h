@@ -45,7 +45,8 @@ public:
     virtual ~DebugHooks() = default;
     // Before each instruction (registers are current). Return false to stop the run before it.
     virtual bool before_instruction(I8085& cpu) = 0;
-    // Data accesses of instructions (not opcode or operand fetches, not stack-less fetches).
+    // Data accesses of instructions: memory operands and stack traffic, not opcode or operand
+    // fetches (use before_instruction for those). Registers in regs() are not current here.
     // Call cpu.request_stop() to end the run after the current instruction.
     virtual void on_read(I8085& cpu, std::uint16_t addr, std::uint8_t value) { (void)cpu, (void)addr, (void)value; }
     virtual void on_write(I8085& cpu, std::uint16_t addr, std::uint8_t value) { (void)cpu, (void)addr, (void)value; }
