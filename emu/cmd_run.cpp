@@ -69,7 +69,7 @@ void add_run_command(CLI::App& app, int& status) {
     cmd->callback([args, &status] {
         script::SessionOptions so;
         so.out = &std::cout;
-        if (firmware::have_monitor()) so.monitor_rom = firmware::monitor_rom;
+        if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
         script::Session session(so);
         std::vector<script::ParseError> errors;
         std::vector<std::string> lines;

@@ -32,7 +32,7 @@ void add_script_command(CLI::App& app, int& status) {
         "  alp85 script test.alp --junit report.xml -v");
     cmd->callback([args, &status] {
         script::RunnerOptions o;
-        if (firmware::have_monitor()) o.monitor_rom = firmware::monitor_rom;
+        if (firmware::have_monitor()) o.monitor_rom = firmware::monitor;
         o.out = &std::cout;
         o.verbose = args->verbose;
         // Every script is checked before any runs: a script error stops everything (status 2).

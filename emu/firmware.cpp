@@ -1,19 +1,32 @@
 #include "emu/firmware.h"
 
 #ifdef ALP85_HAVE_MONITOR
+#include <stdexcept>
+
+#include "emu/symbols.h"
 #include "monitor_embed.h"
+
+namespace alp85 {
+extern const char kMonitorMap[];  // monitor.json, embedded by emu/embed_text.cmake
+}
 #endif
 
 namespace alp85::firmware {
 
 #ifdef ALP85_HAVE_MONITOR
 bool have_monitor() { return true; }
-std::vector<ImageSegment> monitor_rom() {
-    return {ImageSegment{kMonitorRom_origin, {kMonitorRom, kMonitorRom + kMonitorRom_size}}};
+Firmware monitor() {
+    Firmware f;
+    f.segments.push_back({kMonitorRom_origin, {kMonitorRom, kMonitorRom + kMonitorRom_size}});
+    SymbolTable table;
+    if (const std::string err = table.load_map_text(kMonitorMap); !err.empty())
+        throw std::logic_error("the built-in monitor map is damaged: " + err);
+    for (const auto& [name, value] : table.names()) f.symbols.emplace(name, value);
+    return f;
 }
 #else
 bool have_monitor() { return false; }
-std::vector<ImageSegment> monitor_rom() { return {}; }
+Firmware monitor() { return {}; }
 #endif
 
 }  // namespace alp85::firmware

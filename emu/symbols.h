@@ -29,6 +29,7 @@ public:
     std::optional<std::string> label_at(std::uint16_t addr) const;
     std::optional<std::uint16_t> value_of(std::string_view name) const;  // case-insensitive
     std::size_t size() const { return by_name_.size(); }
+    const std::unordered_map<std::string, std::uint16_t>& names() const { return by_name_; }  // upper case
 
 private:
     std::map<std::uint16_t, std::string> labels_, equates_;

@@ -22,7 +22,7 @@ struct ScriptResult {
 };
 
 struct RunnerOptions {
-    std::function<std::vector<ImageSegment>()> monitor_rom;
+    std::function<firmware::Firmware()> monitor_rom;
     std::ostream* out = nullptr;    // print output, -v echo, failure reports
     std::ostream* trace = nullptr;  // --trace CSV
     bool verbose = false;

@@ -131,6 +131,8 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
             case Op::Save: saved.insert(output_path(c.text).string()); break;
             case Op::Monitor:
                 if (!options_.monitor_rom) err(c, c.where.col, "this alp85 was built without the monitor ROM");
+                else
+                    for (const auto& s : options_.monitor_rom().symbols) known.insert(s.first);
                 break;
             case Op::RunUntil:
             case Op::Break:
@@ -350,7 +352,11 @@ Session::Outcome Session::execute(const Command& c) {
         case Op::Load: return load(c);
         case Op::Monitor:
             if (!options_.monitor_rom) return fail(c, "this alp85 was built without the monitor ROM");
-            m.load(options_.monitor_rom());
+            {
+                const firmware::Firmware rom = options_.monitor_rom();
+                m.load(rom.segments);
+                for (const auto& [name, value] : rom.symbols) symbols_[name] = value;
+            }
             return {};
         case Op::Reset:
             m.reset();

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "emu/firmware.h"
 #include "emu/image_loader.h"
 #include "emu/machine.h"
 #include "emu/script/command.h"
@@ -22,8 +23,9 @@ namespace alp85::script {
 struct SessionOptions {
     std::filesystem::path base_dir = ".";  // relative paths in commands start here
     Variant cpu = Variant::I8085;
-    // The monitor EPROM image for the `monitor` command (the front end supplies the built ROM).
-    std::function<std::vector<ImageSegment>()> monitor_rom;
+    // The monitor EPROM image and its symbols for the `monitor` command (the front end supplies
+    // the built ROM, firmware::monitor).
+    std::function<firmware::Firmware()> monitor_rom;
     std::ostream* out = nullptr;  // print, -v echo
     bool verbose = false;
 };
