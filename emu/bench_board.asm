@@ -1,4 +1,4 @@
-; A CPU-bound workload for the board benchmark: the thesis firmware's kind of work (16-bit
+; A CPU-bound workload for the board benchmark (alp85 bench board, tests/bench/board): the thesis firmware's kind of work (16-bit
 ; add/subtract through memory, the 1 ms delay loop DL) plus a CRC-16 loop, forever.
 ; Runs from the user EPROM with data in RAM and the stack in the 8155 RAM, as the firmware does.
         ORG     0800H
