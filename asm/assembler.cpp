@@ -12,8 +12,8 @@ namespace alp85::asm85 {
 namespace {
 
 constexpr int kMaxPasses = 10;
+constexpr int kMaxErrors = 1000;
 constexpr std::size_t kMaxLinesPerPass = 1'000'000;  // bounds REPT/macro bombs
-constexpr int kMaxIncludeDepth = 32;
 constexpr std::uintmax_t kMaxFileSize = 16u << 20;
 
 std::optional<std::string> read_disk_file(const std::filesystem::path& p) {
@@ -113,6 +113,7 @@ Result Assembler::run_string(std::string_view text, std::string_view name) {
 Result Assembler::run(int main_file) {
     for (int n = 1; n <= kMaxPasses; ++n) {
         pass(n, main_file);
+        if (limit_reported_) return finish();  // runaway expansion: another pass won't help
         if (n >= 2 && !changed_) return finish();
     }
     diags_.push_back({Severity::Error, files_[static_cast<std::size_t>(main_file)].name, 0, 0,
@@ -138,6 +139,7 @@ void Assembler::pass(int number, int main_file) {
     collect_ = Collect{};
     local_counter_ = 0;
     lines_this_pass_ = 0;
+    errors_this_pass_ = 0;
     comment_delim_.clear();
     cur_line_ = nullptr;
 
@@ -255,6 +257,13 @@ void Assembler::end_frame() {
 }
 
 void Assembler::diag(Severity s, int col, const std::string& msg) {
+    if (limit_reported_) return;
+    if (s == Severity::Error && ++errors_this_pass_ > kMaxErrors) {
+        diags_.push_back({Severity::Error, "", 0, 0, "too many errors; assembly stopped", ""});
+        limit_reported_ = true;
+        ended_ = true;
+        return;
+    }
     Diagnostic d;
     d.severity = s;
     d.message = msg;

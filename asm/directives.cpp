@@ -26,7 +26,7 @@ const std::unordered_set<std::string>& directive_words() {
         "ORG", "EQU", "SET", "DEFL", "DB", "DEFB", "DEFM", "DC", "DW", "DEFW", "DS", "DEFS", "END", "MACRO",
         "ENDM", "LOCAL", "REPT", "IRP", "IRPC", "EXITM", "INCLUDE", "MACLIB", "ERROR", ".ERROR", ".ERR",
         ".ERRE", ".ERRNZ", ".ERRDEF", ".ERRNDEF", ".ERR1", ".ERR2", "CPU", "TITLE", ".RADIX", ".COMMENT",
-        ".PHASE", ".DEPHASE", ".Z80"};
+        ".PHASE", ".DEPHASE", ".Z80", "="};
     return s;
 }
 
@@ -113,6 +113,7 @@ void Assembler::data_bytes(const std::vector<Token>& toks, std::size_t p, bool h
 
 bool Assembler::try_directive(const std::string& op, const std::vector<Token>& toks, std::size_t p,
                               const std::string& name, int name_col, const Line& line) {
+    if (!directive_words().count(op)) return no_effect_words().count(op) != 0;
     const int opcol = toks[p - 1].col;
     const std::uint16_t here = static_cast<std::uint16_t>(pc_ & 0xFFFF);
     auto raw_operand = [&]() -> std::string {
