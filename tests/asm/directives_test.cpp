@@ -170,3 +170,34 @@ TEST(Directives, CommandLineDefines) {
 
 }  // namespace
 }  // namespace alp85::asm85::test
+
+namespace alp85::asm85::test {
+namespace {
+
+TEST(Directives, BangInsideAngleBracketsIsNotASeparator) {
+    EXPECT_EQ(ok_bytes("M\tMACRO X\n\tDB X\n\tENDM\n\tM <1!,2> ! NOP\n"), (V{1, 2, 0}));
+}
+
+TEST(Directives, UnsupportedRelocationDirectivesSaySo) {
+    auto r = assemble("\t.PHASE 100H\n");
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(first_error(r).message, ".PHASE is not supported: asm85 assembles absolute code only");
+}
+
+TEST(Directives, If1IsFalseInTheFinalPass) {
+    EXPECT_EQ(ok_bytes("\tIF1\n\tDB 1\n\tELSE\n\tDB 2\n\tENDIF\n"), (V{2}));
+}
+
+TEST(Directives, ListingMarksIncludedLines) {
+    Options o;
+    o.read_file = [](const std::filesystem::path& p) -> std::optional<std::string> {
+        if (p.filename() == "k.inc") return std::string("\tDB 7\n");
+        return std::nullopt;
+    };
+    auto r = assemble_string("\tINCLUDE k.inc\n", o, "m.asm");
+    ASSERT_TRUE(r.ok()) << diags(r);
+    EXPECT_NE(write_listing(r).find("  0000 07            2 =   \tDB 7\n"), std::string::npos) << write_listing(r);
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test
