@@ -196,6 +196,8 @@ private:
 };
 
 bool is_register_name(const std::string& upper, int* value = nullptr);
+std::string trim(std::string_view s);        // without leading/trailing blanks
+std::string strip_angle(std::string s);      // trimmed, without one enclosing <...>
 bool is_directive_word(const std::string& upper);    // ORG, DB, ... (not the IF family)
 bool is_conditional_word(const std::string& upper);  // IF, IFDEF, ..., ELSE, ENDIF, ENDC
 

@@ -30,19 +30,6 @@ const std::unordered_set<std::string>& directive_words() {
     return s;
 }
 
-std::string trim(std::string_view s) {
-    auto b = s.find_first_not_of(" \t\r\f");
-    if (b == std::string_view::npos) return "";
-    auto e = s.find_last_not_of(" \t\r\f");
-    return std::string(s.substr(b, e - b + 1));
-}
-
-std::string strip_angle(std::string s) {
-    s = trim(s);
-    if (s.size() >= 2 && s.front() == '<' && s.back() == '>') s = s.substr(1, s.size() - 2);
-    return s;
-}
-
 }  // namespace
 
 bool is_directive_word(const std::string& w) { return directive_words().count(w) || no_effect_words().count(w); }
