@@ -34,6 +34,16 @@ std::optional<std::uint32_t> parse_address(const std::string& s) {
 
 // Writes through a temporary file and a rename, so a failure leaves no half-written output.
 bool write_file(const std::string& path, const void* data, std::size_t size) {
+    std::error_code ec;
+    auto st = std::filesystem::symlink_status(path, ec);
+    if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+        // A device, pipe or symbolic link (/dev/null, /dev/stdout): write through it; renaming a
+        // temporary file over it would replace the device or link itself.
+        std::ofstream out(path, std::ios::binary);
+        out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
+        if (!out) std::cerr << "asm85: error: cannot write " << path << "\n";
+        return static_cast<bool>(out);
+    }
     std::string tmp = path + ".tmp" + std::to_string(::getpid());
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
