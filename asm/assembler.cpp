@@ -127,6 +127,7 @@ void Assembler::pass(int number, int main_file) {
     cpu_ = opt_.cpu;
     radix_ = 10;
     pc_ = 0;
+    phase_ = 0;
     pc_overflow_reported_ = overlap_reported_ = ended_ = limit_reported_ = false;
     image_ = Image();
     line_map_.clear();
@@ -303,7 +304,7 @@ Value Assembler::lookup(const Token& t, bool registers) {
 
 bool Assembler::expr(const std::vector<Token>& toks, std::size_t& pos, Value& out, bool registers) {
     ExprContext ctx;
-    ctx.pc = static_cast<std::uint16_t>(pc_ & 0xFFFF);
+    ctx.pc = loc();
     ctx.lookup = [this, registers](const Token& t) { return lookup(t, registers); };
     ctx.error = [this](int col, const std::string& m) { error(col, m); };
     ctx.is_mnemonic = [this](const std::string& w) { return find_mnemonic(w) != nullptr && syms_.count(w) == 0; };
@@ -379,7 +380,7 @@ void Assembler::emit(std::uint8_t b) {
     }
     if (!listing_.empty()) {
         auto& ll = listing_.back();
-        if (ll.bytes.empty() && !ll.address) ll.address = addr;
+        if (ll.bytes.empty() && !ll.address) ll.address = loc();  // the run address under .PHASE
         ll.bytes.push_back(b);
     }
     if (cur_line_) {

@@ -170,7 +170,9 @@ private:
     bool changed_ = false;
     Cpu cpu_ = Cpu::i8085;
     int radix_ = 10;
-    std::uint32_t pc_ = 0;
+    std::uint32_t pc_ = 0;     // where the next byte is stored
+    std::int32_t phase_ = 0;   // M80 .PHASE: the address code runs at, minus pc_
+    std::uint16_t loc() const { return static_cast<std::uint16_t>((static_cast<std::int64_t>(pc_) + phase_) & 0xFFFF); }
     bool pc_overflow_reported_ = false;
     bool overlap_reported_ = false;
     bool ended_ = false;

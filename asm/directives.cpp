@@ -102,7 +102,7 @@ bool Assembler::try_directive(const std::string& op, const std::vector<Token>& t
                               const std::string& name, int name_col, const Line& line) {
     if (!directive_words().count(op)) return no_effect_words().count(op) != 0;
     const int opcol = toks[p - 1].col;
-    const std::uint16_t here = static_cast<std::uint16_t>(pc_ & 0xFFFF);
+    const std::uint16_t here = loc();
     auto raw_operand = [&]() -> std::string {
         int from = toks[p].col;
         int to = toks.back().col;
@@ -129,6 +129,7 @@ bool Assembler::try_directive(const std::string& op, const std::vector<Token>& t
         Value v;
         if (!expr_all(toks, p, v)) return true;
         pc_ = v.v;
+        phase_ = 0;
         overlap_reported_ = false;
         pc_overflow_reported_ = false;
         listing_.back().address = v.v;
@@ -251,8 +252,15 @@ bool Assembler::try_directive(const std::string& op, const std::vector<Token>& t
         if (rest.find(rest[0], 1) == std::string::npos) comment_delim_ = std::string(1, rest[0]);
         return true;
     }
-    if (op == ".PHASE" || op == ".DEPHASE") {
-        error(opcol, op + " is not supported: asm85 assembles absolute code only");
+    if (op == ".PHASE") {  // assemble for another run address; bytes still go to pc_
+        Value v;
+        if (!expr_all(toks, p, v)) return true;
+        phase_ = static_cast<std::int32_t>(v.v) - static_cast<std::int32_t>(pc_);
+        listing_.back().value = v.v;
+        return true;
+    }
+    if (op == ".DEPHASE") {
+        phase_ = 0;
         return true;
     }
     if (op == ".Z80") {

@@ -133,8 +133,8 @@ void Assembler::process_statement(const std::vector<Token>& toks, const Line& li
     }
     if (toks[p].kind == Tok::End) {
         if (skipping() || label.empty()) return;
-        define(label, label_col, static_cast<std::uint16_t>(pc_ & 0xFFFF), SymbolKind::Label);
-        listing_.back().address = static_cast<std::uint16_t>(pc_ & 0xFFFF);
+        define(label, label_col, loc(), SymbolKind::Label);
+        listing_.back().address = loc();
         return;
     }
     if (!ident(p) && !punct(p, '=')) {
@@ -158,8 +158,8 @@ void Assembler::process_statement(const std::vector<Token>& toks, const Line& li
         return;
     }
     if (!label.empty()) {
-        define(label, label_col, static_cast<std::uint16_t>(pc_ & 0xFFFF), SymbolKind::Label);
-        if (!listing_.back().address) listing_.back().address = static_cast<std::uint16_t>(pc_ & 0xFFFF);
+        define(label, label_col, loc(), SymbolKind::Label);
+        if (!listing_.back().address) listing_.back().address = loc();
     }
     if (try_directive(op, toks, args, label, label_col, line)) return;
     if (auto it = macros_.find(op); it != macros_.end()) {

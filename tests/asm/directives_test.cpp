@@ -178,10 +178,12 @@ TEST(Directives, BangInsideAngleBracketsIsNotASeparator) {
     EXPECT_EQ(ok_bytes("M\tMACRO X\n\tDB X\n\tENDM\n\tM <1!,2> ! NOP\n"), (V{1, 2, 0}));
 }
 
-TEST(Directives, UnsupportedRelocationDirectivesSaySo) {
-    auto r = assemble("\t.PHASE 100H\n");
-    ASSERT_FALSE(r.ok());
-    EXPECT_EQ(first_error(r).message, ".PHASE is not supported: asm85 assembles absolute code only");
+TEST(Directives, PhaseAssemblesForAnotherRunAddress) {
+    // M80: code stored at 0100H that will run at 0F000H; labels and $ follow the run address.
+    auto r = assemble("\tORG 100H\n\t.PHASE 0F000H\nHERE:\tJMP HERE\n\tDW $\n\t.DEPHASE\nBACK:\tDW BACK\n");
+    ASSERT_TRUE(r.ok()) << diags(r);
+    EXPECT_EQ(bytes(r, 0x100, 7), (V{0xC3, 0x00, 0xF0, 0x03, 0xF0, 0x05, 0x01}));
+    EXPECT_EQ(r.find_symbol("HERE")->value, 0xF000);
 }
 
 TEST(Directives, If1IsFalseInTheFinalPass) {
