@@ -13,6 +13,8 @@ namespace {
 
 constexpr int kMaxPasses = 10;
 constexpr int kMaxErrors = 1000;
+constexpr std::size_t kMaxExpandedLine = 4096;
+constexpr std::size_t kMaxCharsPerPass = 32u << 20;
 constexpr std::size_t kMaxLinesPerPass = 1'000'000;  // bounds REPT/macro bombs
 constexpr std::uintmax_t kMaxFileSize = 16u << 20;
 
@@ -140,6 +142,7 @@ void Assembler::pass(int number, int main_file) {
     collect_ = Collect{};
     local_counter_ = 0;
     lines_this_pass_ = 0;
+    chars_this_pass_ = 0;
     errors_this_pass_ = 0;
     comment_delim_.clear();
     cur_line_ = nullptr;
@@ -225,6 +228,8 @@ bool Assembler::fetch(Line& out) {
             }
             const BodyLine& b = (*f.body)[f.next++];
             out.text = substitute(f, b.text);
+            bool too_long = out.text.size() > kMaxExpandedLine;  // arguments that double per level
+            if (too_long) out.text.resize(kMaxExpandedLine);
             out.file = b.file;
             out.line = b.line;
             out.depth = 0;
@@ -232,11 +237,17 @@ bool Assembler::fetch(Line& out) {
                 if (fr.kind != FrameKind::File) ++out.depth;
             out.site_file = f.site_file;
             out.site_line = f.site_line;
+            if (too_long) {
+                cur_line_ = &out;
+                error(0, "macro expansion line longer than " + std::to_string(kMaxExpandedLine) + " characters");
+                out.text.clear();
+            }
         }
-        if (++lines_this_pass_ > kMaxLinesPerPass) {
+        chars_this_pass_ += out.text.size();
+        if (++lines_this_pass_ > kMaxLinesPerPass || chars_this_pass_ > kMaxCharsPerPass) {
             if (!limit_reported_) {
                 cur_line_ = &out;
-                error(0, "more than 1000000 lines in one pass (runaway REPT or macro recursion?)");
+                error(0, "more than 1000000 lines or 32 MB of text in one pass (runaway REPT or macro recursion?)");
                 limit_reported_ = true;
             }
             ended_ = true;

@@ -188,6 +188,7 @@ private:
     Collect collect_;
     int local_counter_ = 0;
     std::size_t lines_this_pass_ = 0;
+    std::size_t chars_this_pass_ = 0;
     bool limit_reported_ = false;  // a resource limit stopped this pass (no further passes)
     int errors_this_pass_ = 0;
     std::string comment_delim_;  // inside M80 .COMMENT until this character
