@@ -106,9 +106,10 @@ int main(int argc, char** argv) {
     for (auto& i : includes) opt.include_dirs.emplace_back(i);
 
     Result r = assemble_file(source, opt);
+    bool shown = true;  // a note goes with the diagnostic before it
     for (auto& d : r.diagnostics) {
-        if (quiet && d.severity != Severity::Error) continue;
-        std::cerr << format_diagnostic(d);
+        if (d.severity != Severity::Note) shown = !quiet || d.severity == Severity::Error;
+        if (shown) std::cerr << format_diagnostic(d);
     }
     if (!r.ok()) {
         std::cerr << "asm85: " << r.error_count() << (r.error_count() == 1 ? " error" : " errors") << ", no output written\n";
