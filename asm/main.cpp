@@ -74,10 +74,11 @@ int main(int argc, char** argv) {
     CLI::App app{"asm85: Intel 8080/8085 macro assembler (Intel ASM80, DR ASM/MAC and M80 dialects)", "asm85"};
     std::string source, hex_out, bin_out, lst_out, map_out, cpu = "8085", bin_start, bin_end, fill = "0";
     std::vector<std::string> defines, includes;
-    bool quiet = false, no_unused = false;
+    bool quiet = false, no_unused = false, no_hex = false;
     int name_length = 0;
     app.add_option("SOURCE", source, "Assembly source file")->required();
-    app.add_option("-o,--hex", hex_out, "Intel HEX output (default: SOURCE with .hex, when no other output is asked)");
+    app.add_option("-o,--hex", hex_out, "Intel HEX output (default: SOURCE with .hex)");
+    app.add_flag("--no-hex", no_hex, "Write no Intel HEX file (only the other outputs asked for)");
     app.add_option("--bin", bin_out, "Raw binary output");
     app.add_option("--bin-start", bin_start, "First address of the binary (default: lowest emitted)");
     app.add_option("--bin-end", bin_end, "Last address of the binary (default: highest emitted)");
@@ -130,8 +131,8 @@ int main(int argc, char** argv) {
         return 1;
     }
 
-    if (hex_out.empty() && bin_out.empty() && lst_out.empty() && map_out.empty())
-        hex_out = std::filesystem::path(source).replace_extension(".hex").string();
+    if (hex_out.empty() && !no_hex) hex_out = std::filesystem::path(source).replace_extension(".hex").string();
+    if (no_hex) hex_out.clear();
     bool ok = true;
     if (!hex_out.empty()) ok = write_text(hex_out, write_intel_hex(r.image)) && ok;
     if (!bin_out.empty()) {
