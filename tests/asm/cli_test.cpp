@@ -100,3 +100,19 @@ TEST_F(Cli, LinksAndDevicesAreWrittenThroughNotReplaced) {
 
 }  // namespace
 }  // namespace alp85::asm85::test
+
+namespace alp85::asm85::test {
+namespace {
+
+TEST_F(Cli, HexIsTheDefaultOutputUnlessNoHex) {
+    write("p.asm", "\tNOP\n");
+    EXPECT_EQ(run("p.asm --lst p.lst"), 0);
+    EXPECT_TRUE(fs::exists(dir / "p.hex"));
+    fs::remove(dir / "p.hex");
+    EXPECT_EQ(run("p.asm --no-hex --bin p.bin"), 0);
+    EXPECT_FALSE(fs::exists(dir / "p.hex"));
+    EXPECT_EQ(read("p.bin"), std::string("\x00", 1));
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test
