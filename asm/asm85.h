@@ -83,9 +83,10 @@ public:
     std::optional<std::uint16_t> start_address;  // from END expr
 
 private:
-    std::vector<std::uint8_t> bytes_;
+    std::vector<std::uint8_t> bytes_;  // 64 KiB once anything is written
     std::vector<bool> used_;
     std::size_t count_ = 0;
+    std::uint16_t lo_ = 0, hi_ = 0;
 };
 
 enum class SymbolKind : std::uint8_t { Label, Equ, Set, Define };

@@ -100,7 +100,7 @@ public:
     Result run_string(std::string_view text, std::string_view name);
 
 private:
-    // --- driver (assembler.cpp)
+    // --- driver (assembler.cpp; files in sources.cpp)
     Result run(int main_file);
     void pass(int number, int main_file);
     bool fetch(Line& out);
@@ -115,7 +115,7 @@ private:
     bool is_op_word(const std::string& w) const;
     void collect_line(const Line& line);
 
-    // --- diagnostics and values (assembler.cpp)
+    // --- diagnostics and values (values.cpp)
     void diag(Severity s, int col, const std::string& msg);
     void error(int col, const std::string& msg) { diag(Severity::Error, col, msg); }
     void warning(int col, const std::string& msg) { diag(Severity::Warning, col, msg); }
@@ -139,7 +139,7 @@ private:
     }
     Value instruction_value(const std::vector<Token>& toks, std::size_t first, std::size_t last);
 
-    // --- directives (directives.cpp)
+    // --- directives (directives.cpp, conditionals.cpp)
     bool try_directive(const std::string& op, const std::vector<Token>& toks, std::size_t p,
                        const std::string& name, int name_col, const Line& line);
     void conditional(const std::string& op, const std::vector<Token>& toks, std::size_t p, const Line& line);
@@ -170,7 +170,9 @@ private:
     bool changed_ = false;
     Cpu cpu_ = Cpu::i8085;
     int radix_ = 10;
-    std::uint32_t pc_ = 0;
+    std::uint32_t pc_ = 0;     // where the next byte is stored
+    std::int32_t phase_ = 0;   // M80 .PHASE: the address code runs at, minus pc_
+    std::uint16_t loc() const { return static_cast<std::uint16_t>((static_cast<std::int64_t>(pc_) + phase_) & 0xFFFF); }
     bool pc_overflow_reported_ = false;
     bool overlap_reported_ = false;
     bool ended_ = false;
@@ -186,7 +188,9 @@ private:
     Collect collect_;
     int local_counter_ = 0;
     std::size_t lines_this_pass_ = 0;
-    bool limit_reported_ = false;
+    std::size_t chars_this_pass_ = 0;
+    bool limit_reported_ = false;  // a resource limit stopped this pass (no further passes)
+    int errors_this_pass_ = 0;
     std::string comment_delim_;  // inside M80 .COMMENT until this character
     const Line* cur_line_ = nullptr;
     std::string cur_text_;  // the current line as tokenized (for diagnostics)
@@ -195,6 +199,9 @@ private:
 };
 
 bool is_register_name(const std::string& upper, int* value = nullptr);
+std::vector<std::string> split_lines(std::string_view text);  // CR LF or LF; stops at ^Z
+std::string trim(std::string_view s);        // without leading/trailing blanks
+std::string strip_angle(std::string s);      // trimmed, without one enclosing <...>
 bool is_directive_word(const std::string& upper);    // ORG, DB, ... (not the IF family)
 bool is_conditional_word(const std::string& upper);  // IF, IFDEF, ..., ELSE, ENDIF, ENDC
 

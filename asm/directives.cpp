@@ -1,6 +1,6 @@
-// Directives: location (ORG, DS, END), symbols (EQU, SET, =), data (DB, DW), files (INCLUDE,
-// MACLIB), conditionals, checks (ERROR, .ERRxx) and the listing/segment directives of ASM80 and
-// M80 that change no byte.
+// Directives: location (ORG, DS, END, .PHASE), symbols (EQU, SET, =), data (DB, DW), files
+// (INCLUDE, MACLIB), checks (ERROR, .ERRxx) and the listing/segment directives of ASM80 and M80
+// that change no byte. Conditionals are in conditionals.cpp, macros in macros.cpp.
 #include <algorithm>
 #include <unordered_set>
 
@@ -26,20 +26,7 @@ const std::unordered_set<std::string>& directive_words() {
         "ORG", "EQU", "SET", "DEFL", "DB", "DEFB", "DEFM", "DC", "DW", "DEFW", "DS", "DEFS", "END", "MACRO",
         "ENDM", "LOCAL", "REPT", "IRP", "IRPC", "EXITM", "INCLUDE", "MACLIB", "ERROR", ".ERROR", ".ERR",
         ".ERRE", ".ERRNZ", ".ERRDEF", ".ERRNDEF", ".ERR1", ".ERR2", "CPU", "TITLE", ".RADIX", ".COMMENT",
-        ".PHASE", ".DEPHASE", ".Z80"};
-    return s;
-}
-
-std::string trim(std::string_view s) {
-    auto b = s.find_first_not_of(" \t\r\f");
-    if (b == std::string_view::npos) return "";
-    auto e = s.find_last_not_of(" \t\r\f");
-    return std::string(s.substr(b, e - b + 1));
-}
-
-std::string strip_angle(std::string s) {
-    s = trim(s);
-    if (s.size() >= 2 && s.front() == '<' && s.back() == '>') s = s.substr(1, s.size() - 2);
+        ".PHASE", ".DEPHASE", ".Z80", "="};
     return s;
 }
 
@@ -47,11 +34,6 @@ std::string strip_angle(std::string s) {
 
 bool is_directive_word(const std::string& w) { return directive_words().count(w) || no_effect_words().count(w); }
 
-bool is_conditional_word(const std::string& w) {
-    static const std::unordered_set<std::string> s{"IF", "IFE", "IFT", "IFF", "IFDEF", "IFNDEF", "IFB", "IFNB",
-                                                   "IFIDN", "IFDIF", "IF1", "IF2", "COND", "ELSE", "ENDIF", "ENDC"};
-    return s.count(w) != 0;
-}
 
 void Assembler::do_include(const std::string& raw, int col) {
     std::string name = trim(raw);
@@ -113,8 +95,9 @@ void Assembler::data_bytes(const std::vector<Token>& toks, std::size_t p, bool h
 
 bool Assembler::try_directive(const std::string& op, const std::vector<Token>& toks, std::size_t p,
                               const std::string& name, int name_col, const Line& line) {
+    if (!directive_words().count(op)) return no_effect_words().count(op) != 0;
     const int opcol = toks[p - 1].col;
-    const std::uint16_t here = static_cast<std::uint16_t>(pc_ & 0xFFFF);
+    const std::uint16_t here = loc();
     auto raw_operand = [&]() -> std::string {
         int from = toks[p].col;
         int to = toks.back().col;
@@ -141,6 +124,7 @@ bool Assembler::try_directive(const std::string& op, const std::vector<Token>& t
         Value v;
         if (!expr_all(toks, p, v)) return true;
         pc_ = v.v;
+        phase_ = 0;
         overlap_reported_ = false;
         pc_overflow_reported_ = false;
         listing_.back().address = v.v;
@@ -263,8 +247,15 @@ bool Assembler::try_directive(const std::string& op, const std::vector<Token>& t
         if (rest.find(rest[0], 1) == std::string::npos) comment_delim_ = std::string(1, rest[0]);
         return true;
     }
-    if (op == ".PHASE" || op == ".DEPHASE") {
-        error(opcol, op + " is not supported: asm85 assembles absolute code only");
+    if (op == ".PHASE") {  // assemble for another run address; bytes still go to pc_
+        Value v;
+        if (!expr_all(toks, p, v)) return true;
+        phase_ = static_cast<std::int32_t>(v.v) - static_cast<std::int32_t>(pc_);
+        listing_.back().value = v.v;
+        return true;
+    }
+    if (op == ".DEPHASE") {
+        phase_ = 0;
         return true;
     }
     if (op == ".Z80") {
@@ -272,74 +263,6 @@ bool Assembler::try_directive(const std::string& op, const std::vector<Token>& t
         return true;
     }
     return no_effect_words().count(op) != 0;
-}
-
-void Assembler::conditional(const std::string& op, const std::vector<Token>& toks, std::size_t p, const Line& line) {
-    const int opcol = toks[p - 1].col;
-    if (op == "ELSE") {
-        if (cond_.empty()) {
-            error(opcol, "ELSE without IF");
-            return;
-        }
-        Cond& c = cond_.back();
-        if (c.in_else) {
-            error(opcol, "second ELSE for one IF");
-            return;
-        }
-        c.in_else = true;
-        c.active = c.parent_active && !c.taken;
-        c.taken = c.taken || c.active;
-        return;
-    }
-    if (op == "ENDIF" || op == "ENDC") {
-        if (cond_.empty()) {
-            error(opcol, op + " without IF");
-            return;
-        }
-        cond_.pop_back();
-        return;
-    }
-    Cond c;
-    c.parent_active = !skipping();
-    c.file = line.file;
-    c.line = line.line;
-    if (cond_.size() >= 1000) {
-        error(opcol, "IF nested more than 1000 deep");
-        return;
-    }
-    bool truth = false;
-    if (c.parent_active) {
-        auto raw = [&]() -> std::string {
-            int from = toks[p].col, to = toks.back().col;
-            return to > from ? line.text.substr(static_cast<std::size_t>(from), static_cast<std::size_t>(to - from)) : "";
-        };
-        if (op == "IF" || op == "IFT" || op == "IFE" || op == "IFF" || op == "COND") {
-            Value v;
-            if (expr_all(toks, p, v)) truth = v.v != 0;
-            if (op == "IFE" || op == "IFF") truth = !truth;
-        } else if (op == "IFDEF" || op == "IFNDEF") {
-            if (toks[p].kind != Tok::Ident) {
-                error(toks[p].col, op + " needs a symbol name");
-            } else {
-                auto it = syms_.find(key(toks[p].text));
-                bool def = (it != syms_.end() && it->second.pass == pass_) || macros_.count(toks[p].text);
-                truth = (op == "IFDEF") == def;
-            }
-        } else if (op == "IFB" || op == "IFNB") {
-            truth = (op == "IFB") == strip_angle(raw()).empty();
-        } else if (op == "IFIDN" || op == "IFDIF") {
-            auto parts = split_args(raw());
-            if (parts.size() != 2) error(toks[p].col, op + " needs two arguments");
-            else truth = (op == "IFIDN") == (parts[0] == parts[1]);
-        } else if (op == "IF1") {
-            truth = pass_ == 1;
-        } else if (op == "IF2") {
-            truth = pass_ > 1;
-        }
-    }
-    c.active = c.parent_active && truth;
-    c.taken = c.active || !c.parent_active;
-    cond_.push_back(c);
 }
 
 }  // namespace alp85::asm85

@@ -242,11 +242,11 @@ private:
 }  // namespace
 
 bool is_operator_word(const std::string& w) {
-    static constexpr std::array<std::string_view, 17> kWords{
-        "MOD", "SHL", "SHR", "NOT", "AND", "OR", "XOR", "HIGH", "LOW",
-        "EQ", "NE", "LT", "LE", "GT", "GE", "NUL", ""};
+    if (w.size() < 2 || w.size() > 4) return false;
+    static constexpr std::array<std::string_view, 16> kWords{
+        "MOD", "SHL", "SHR", "NOT", "AND", "OR", "XOR", "HIGH", "LOW", "EQ", "NE", "LT", "LE", "GT", "GE", "NUL"};
     for (auto k : kWords)
-        if (!k.empty() && w == k) return true;
+        if (w == k) return true;
     return false;
 }
 

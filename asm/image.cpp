@@ -6,39 +6,38 @@
 
 namespace alp85::asm85 {
 
-Image::Image() : bytes_(0x10000, 0), used_(0x10000, false) {}
+Image::Image() = default;
 
 bool Image::write(std::uint16_t address, std::uint8_t value) {
+    if (bytes_.empty()) {  // allocated on the first byte: most images never pay for 64 KiB twice
+        bytes_.assign(0x10000, 0);
+        used_.assign(0x10000, false);
+        lo_ = hi_ = address;
+    }
     bool fresh = !used_[address];
     bytes_[address] = value;
     if (fresh) {
         used_[address] = true;
         ++count_;
+        lo_ = std::min(lo_, address);
+        hi_ = std::max(hi_, address);
     }
     return fresh;
 }
 
 std::optional<std::uint8_t> Image::read(std::uint16_t address) const {
-    if (!used_[address]) return std::nullopt;
+    if (bytes_.empty() || !used_[address]) return std::nullopt;
     return bytes_[address];
 }
 
-std::uint16_t Image::lowest() const {
-    for (std::uint32_t a = 0; a < 0x10000; ++a)
-        if (used_[a]) return static_cast<std::uint16_t>(a);
-    return 0;
-}
+std::uint16_t Image::lowest() const { return lo_; }
 
-std::uint16_t Image::highest() const {
-    for (std::uint32_t a = 0x10000; a-- > 0;)
-        if (used_[a]) return static_cast<std::uint16_t>(a);
-    return 0;
-}
+std::uint16_t Image::highest() const { return hi_; }
 
 std::vector<Segment> Image::segments() const {
     std::vector<Segment> out;
     if (count_ == 0) return out;
-    for (std::uint32_t a = 0; a < 0x10000; ++a) {
+    for (std::uint32_t a = lo_; a <= hi_; ++a) {
         if (!used_[a]) continue;
         if (out.empty() || out.back().end() != a) out.push_back({static_cast<std::uint16_t>(a), {}});
         out.back().bytes.push_back(bytes_[a]);

@@ -26,6 +26,16 @@ const std::unordered_map<std::string, std::vector<std::uint8_t>>& index() {
     return table;
 }
 
+// The operand slots of every opcode, split once.
+const std::vector<std::string>& slots_of(std::uint8_t op) {
+    static const auto table = [] {
+        std::vector<std::vector<std::string>> t(256);
+        for (int i = 0; i < 256; ++i) t[static_cast<std::size_t>(i)] = template_slots(isa::kOpcodes[static_cast<std::size_t>(i)].operands);
+        return t;
+    }();
+    return table[op];
+}
+
 bool is_data_slot(const std::string& s) { return s == "d8" || s == "d16" || s == "a16" || s == "p8"; }
 bool is_rst_slot(const std::string& s) { return s.size() == 1 && std::isdigit(static_cast<unsigned char>(s[0])); }
 
@@ -63,7 +73,7 @@ bool Assembler::encode_instruction(const std::string& op, const Token& optok, co
     const auto* ops = find_mnemonic(op);
     if (!ops) return false;
     const isa::OpInfo& first = isa::kOpcodes[(*ops)[0]];
-    const auto slots = template_slots(first.operands);
+    const auto& slots = slots_of((*ops)[0]);
 
     // Operand starts at top-level commas.
     std::vector<std::size_t> starts;
@@ -122,8 +132,7 @@ bool Assembler::encode_instruction(const std::string& op, const Token& optok, co
     }
     int chosen = -1;
     for (auto code : *ops) {
-        const auto& info = isa::kOpcodes[code];
-        const auto ts = template_slots(info.operands);
+        const auto& ts = slots_of(code);
         bool match = true;
         for (std::size_t i = 0; i < ts.size() && match; ++i) {
             if (is_data_slot(ts[i])) continue;

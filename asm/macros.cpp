@@ -14,6 +14,8 @@ namespace {
 
 constexpr int kMaxExpansionDepth = 100;
 
+}  // namespace
+
 std::string trim(std::string_view s) {
     auto b = s.find_first_not_of(" \t\r\f");
     if (b == std::string_view::npos) return "";
@@ -27,7 +29,6 @@ std::string strip_angle(std::string s) {
     return s;
 }
 
-}  // namespace
 
 std::vector<std::string> Assembler::split_args(std::string_view text) {
     std::vector<std::string> out;

@@ -34,6 +34,16 @@ std::optional<std::uint32_t> parse_address(const std::string& s) {
 
 // Writes through a temporary file and a rename, so a failure leaves no half-written output.
 bool write_file(const std::string& path, const void* data, std::size_t size) {
+    std::error_code ec;
+    auto st = std::filesystem::symlink_status(path, ec);
+    if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+        // A device, pipe or symbolic link (/dev/null, /dev/stdout): write through it; renaming a
+        // temporary file over it would replace the device or link itself.
+        std::ofstream out(path, std::ios::binary);
+        out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
+        if (!out) std::cerr << "asm85: error: cannot write " << path << "\n";
+        return static_cast<bool>(out);
+    }
     std::string tmp = path + ".tmp" + std::to_string(::getpid());
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
@@ -64,10 +74,11 @@ int main(int argc, char** argv) {
     CLI::App app{"asm85: Intel 8080/8085 macro assembler (Intel ASM80, DR ASM/MAC and M80 dialects)", "asm85"};
     std::string source, hex_out, bin_out, lst_out, map_out, cpu = "8085", bin_start, bin_end, fill = "0";
     std::vector<std::string> defines, includes;
-    bool quiet = false, no_unused = false;
+    bool quiet = false, no_unused = false, no_hex = false;
     int name_length = 0;
     app.add_option("SOURCE", source, "Assembly source file")->required();
-    app.add_option("-o,--hex", hex_out, "Intel HEX output (default: SOURCE with .hex, when no other output is asked)");
+    app.add_option("-o,--hex", hex_out, "Intel HEX output (default: SOURCE with .hex)");
+    app.add_flag("--no-hex", no_hex, "Write no Intel HEX file (only the other outputs asked for)");
     app.add_option("--bin", bin_out, "Raw binary output");
     app.add_option("--bin-start", bin_start, "First address of the binary (default: lowest emitted)");
     app.add_option("--bin-end", bin_end, "Last address of the binary (default: highest emitted)");
@@ -96,9 +107,10 @@ int main(int argc, char** argv) {
     for (auto& i : includes) opt.include_dirs.emplace_back(i);
 
     Result r = assemble_file(source, opt);
+    bool shown = true;  // a note goes with the diagnostic before it
     for (auto& d : r.diagnostics) {
-        if (quiet && d.severity != Severity::Error) continue;
-        std::cerr << format_diagnostic(d);
+        if (d.severity != Severity::Note) shown = !quiet || d.severity == Severity::Error;
+        if (shown) std::cerr << format_diagnostic(d);
     }
     if (!r.ok()) {
         std::cerr << "asm85: " << r.error_count() << (r.error_count() == 1 ? " error" : " errors") << ", no output written\n";
@@ -119,8 +131,8 @@ int main(int argc, char** argv) {
         return 1;
     }
 
-    if (hex_out.empty() && bin_out.empty() && lst_out.empty() && map_out.empty())
-        hex_out = std::filesystem::path(source).replace_extension(".hex").string();
+    if (hex_out.empty() && !no_hex) hex_out = std::filesystem::path(source).replace_extension(".hex").string();
+    if (no_hex) hex_out.clear();
     bool ok = true;
     if (!hex_out.empty()) ok = write_text(hex_out, write_intel_hex(r.image)) && ok;
     if (!bin_out.empty()) {

@@ -84,9 +84,26 @@ void Assembler::process_line(const Line& line) {
         return;
     }
     auto stmts = split_statements(toks);
-    for (auto& s : stmts) {
+    for (std::size_t i = 0; i < stmts.size(); ++i) {
         if (ended_ || collect_.kind != Collect::None) break;
-        process_statement(s, line);
+        const std::size_t depth = frames_.size();
+        process_statement(stmts[i], line);
+        if (frames_.size() > depth && i + 1 < stmts.size()) {
+            // A macro or INCLUDE started mid-line: the statements after the next '!' run when it
+            // is done, from a one-line frame under the new one.
+            int from = stmts[i].back().col + 1;
+            Frame rest;
+            rest.kind = FrameKind::Repeat;
+            rest.body = std::make_shared<std::vector<BodyLine>>();
+            rest.body->push_back({text.substr(static_cast<std::size_t>(from)), line.file, line.line});
+            rest.count = 1;
+            rest.cond_depth = cond_.size();
+            rest.site_file = line.site_file;
+            rest.site_line = line.site_line;
+            rest.name = "the rest of the line";
+            frames_.insert(frames_.begin() + static_cast<std::ptrdiff_t>(depth), std::move(rest));
+            break;
+        }
     }
 }
 
@@ -116,8 +133,8 @@ void Assembler::process_statement(const std::vector<Token>& toks, const Line& li
     }
     if (toks[p].kind == Tok::End) {
         if (skipping() || label.empty()) return;
-        define(label, label_col, static_cast<std::uint16_t>(pc_ & 0xFFFF), SymbolKind::Label);
-        listing_.back().address = static_cast<std::uint16_t>(pc_ & 0xFFFF);
+        define(label, label_col, loc(), SymbolKind::Label);
+        listing_.back().address = loc();
         return;
     }
     if (!ident(p) && !punct(p, '=')) {
@@ -141,8 +158,8 @@ void Assembler::process_statement(const std::vector<Token>& toks, const Line& li
         return;
     }
     if (!label.empty()) {
-        define(label, label_col, static_cast<std::uint16_t>(pc_ & 0xFFFF), SymbolKind::Label);
-        if (!listing_.back().address) listing_.back().address = static_cast<std::uint16_t>(pc_ & 0xFFFF);
+        define(label, label_col, loc(), SymbolKind::Label);
+        if (!listing_.back().address) listing_.back().address = loc();
     }
     if (try_directive(op, toks, args, label, label_col, line)) return;
     if (auto it = macros_.find(op); it != macros_.end()) {

@@ -83,3 +83,36 @@ TEST_F(Cli, MissingSourceAndHelp) {
 
 }  // namespace
 }  // namespace alp85::asm85::test
+
+namespace alp85::asm85::test {
+namespace {
+
+TEST_F(Cli, LinksAndDevicesAreWrittenThroughNotReplaced) {
+    // Output goes through a temporary file and a rename, except into a device or a symbolic
+    // link (-o /dev/null must not replace /dev/null). A link stands in for a device here.
+    write("p.asm", "\tNOP\n");
+    write("real.hex", "");
+    fs::create_symlink(dir / "real.hex", dir / "link.hex");
+    EXPECT_EQ(run("p.asm -o link.hex"), 0);
+    EXPECT_TRUE(fs::is_symlink(dir / "link.hex"));
+    EXPECT_EQ(read("real.hex"), ":0100000000FF\n:00000001FF\n");
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test
+
+namespace alp85::asm85::test {
+namespace {
+
+TEST_F(Cli, HexIsTheDefaultOutputUnlessNoHex) {
+    write("p.asm", "\tNOP\n");
+    EXPECT_EQ(run("p.asm --lst p.lst"), 0);
+    EXPECT_TRUE(fs::exists(dir / "p.hex"));
+    fs::remove(dir / "p.hex");
+    EXPECT_EQ(run("p.asm --no-hex --bin p.bin"), 0);
+    EXPECT_FALSE(fs::exists(dir / "p.hex"));
+    EXPECT_EQ(read("p.bin"), std::string("\x00", 1));
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test

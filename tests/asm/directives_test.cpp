@@ -170,3 +170,36 @@ TEST(Directives, CommandLineDefines) {
 
 }  // namespace
 }  // namespace alp85::asm85::test
+
+namespace alp85::asm85::test {
+namespace {
+
+TEST(Directives, BangInsideAngleBracketsIsNotASeparator) {
+    EXPECT_EQ(ok_bytes("M\tMACRO X\n\tDB X\n\tENDM\n\tM <1!,2> ! NOP\n"), (V{1, 2, 0}));
+}
+
+TEST(Directives, PhaseAssemblesForAnotherRunAddress) {
+    // M80: code stored at 0100H that will run at 0F000H; labels and $ follow the run address.
+    auto r = assemble("\tORG 100H\n\t.PHASE 0F000H\nHERE:\tJMP HERE\n\tDW $\n\t.DEPHASE\nBACK:\tDW BACK\n");
+    ASSERT_TRUE(r.ok()) << diags(r);
+    EXPECT_EQ(bytes(r, 0x100, 7), (V{0xC3, 0x00, 0xF0, 0x03, 0xF0, 0x05, 0x01}));
+    EXPECT_EQ(r.find_symbol("HERE")->value, 0xF000);
+}
+
+TEST(Directives, If1IsFalseInTheFinalPass) {
+    EXPECT_EQ(ok_bytes("\tIF1\n\tDB 1\n\tELSE\n\tDB 2\n\tENDIF\n"), (V{2}));
+}
+
+TEST(Directives, ListingMarksIncludedLines) {
+    Options o;
+    o.read_file = [](const std::filesystem::path& p) -> std::optional<std::string> {
+        if (p.filename() == "k.inc") return std::string("\tDB 7\n");
+        return std::nullopt;
+    };
+    auto r = assemble_string("\tINCLUDE k.inc\n", o, "m.asm");
+    ASSERT_TRUE(r.ok()) << diags(r);
+    EXPECT_NE(write_listing(r).find("  0000 07            2 =   \tDB 7\n"), std::string::npos) << write_listing(r);
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test

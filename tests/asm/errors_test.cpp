@@ -106,3 +106,26 @@ TEST(Errors, RunawayInputStops) {
 
 }  // namespace
 }  // namespace alp85::asm85::test
+
+namespace alp85::asm85::test {
+namespace {
+
+TEST(Errors, ArgumentsThatDoublePerLevelStop) {
+    // Found by the fuzzer: each level passes its argument twice, so lines double in length.
+    auto r = assemble("M\tMACRO A1\n\tM A1&A1\n\tENDM\n\tM X\n");
+    ASSERT_FALSE(r.ok());
+    bool found = false;
+    for (auto& d : r.diagnostics) found = found || d.message == "macro expansion line longer than 4096 characters";
+    EXPECT_TRUE(found) << diags(r).substr(0, 2000);
+}
+
+TEST(Errors, ErrorFloodStopsAtAThousand) {
+    std::string src;
+    for (int i = 0; i < 1500; ++i) src += "\tFOO\n";
+    auto r = assemble(src);
+    EXPECT_EQ(r.error_count(), 1001);
+    EXPECT_EQ(r.diagnostics.back().message, "too many errors; assembly stopped");
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test

@@ -128,3 +128,23 @@ TEST(Expr, IdenticalEquRedefinitionIsAccepted) {
 
 }  // namespace
 }  // namespace alp85::asm85::test
+
+namespace alp85::asm85::test {
+namespace {
+
+TEST(Expr, ManualExamples) {
+    // Intel 8080 Assembly Language Programming Manual, 2-12: three ways to write 'A'.
+    EXPECT_EQ(value("5+30*2"), 'A');
+    EXPECT_EQ(value("(25/5)+30*2"), 'A');
+    EXPECT_EQ(value("5+(-30*-2)"), 'A');
+    EXPECT_EQ(value("25 MOD 8"), 1);
+    EXPECT_EQ(value("55H SHR 2"), 0x15);
+    // CP/M ASM manual 3.3.6: a OR b AND NOT c+d SHL e = a OR (b AND (NOT (c + (d SHL e)))).
+    // With a=1, b=0FFH, c=1, d=1, e=2: NOT (1+4) = 0FFFAH; AND 0FFH = 0FAH; OR 1 = 0FBH.
+    EXPECT_EQ(value("1 OR 0FFH AND NOT 1+1 SHL 2"), 0xFB);
+    // a MOD b*c SHL d = ((a MOD b) * c) SHL d: (7 MOD 4)*2 SHL 1 = 12.
+    EXPECT_EQ(value("7 MOD 4*2 SHL 1"), 12);
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test

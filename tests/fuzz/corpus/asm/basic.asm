@@ -1,0 +1,5 @@
+	ORG 100H
+S:	MVI A,5
+	JMP S
+	DB "hi",0
+	END S

@@ -1,0 +1,20 @@
+M	MACRO A1,A2
+	LOCAL L
+L:	DB A1
+	IF NUL A2
+	EXITM
+	ENDIF
+	DW A2
+	ENDM
+	M 1
+	M <2,3>,4
+	REPT 3
+	NOP
+	ENDM
+	IRP X,<1,2>
+	DB X
+	ENDM
+	IRPC C,AB
+	DB %C
+	ENDM
+	INCLUDE inc.asm
