@@ -65,7 +65,7 @@ void add_run_command(CLI::App& app, int& status) {
     cmd->footer(
         "Examples:\n"
         "  alp85 run                                          # the monitor's sign-on\n"
-        "  alp85 run firmware/demo/demo.asm --keys \"R 7 0800 EXEC\"");
+        "  alp85 run firmware/demo/hello85.asm --keys \"R 7 0800 EXEC\"");
     cmd->callback([args, &status] {
         script::SessionOptions so;
         so.out = &std::cout;
