@@ -21,5 +21,5 @@ run_suite build -DCMAKE_BUILD_TYPE=Release
 
 if [ $sanitize -eq 1 ]; then
   echo "== ASan + UBSan build and tests (build-asan/)"
-  run_suite build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DALP85_SANITIZE=ON -DALP85_BENCH=OFF
+  run_suite build-asan -DCMAKE_BUILD_TYPE=Release -DALP85_SANITIZE=ON -DALP85_BENCH=OFF
 fi
