@@ -73,19 +73,19 @@ class Machine::Port8155 final : public IoDevice {
 public:
     explicit Port8155(Machine& m) : m_(m) {}
     std::uint8_t in(std::uint8_t port, std::uint64_t t) override {
-        return m_.rio_.read(static_cast<std::uint8_t>(port - base()), t);
+        return m_.rio_.read(static_cast<std::uint8_t>(port - kBase), t);
     }
     void out(std::uint8_t port, std::uint8_t value, std::uint64_t t) override {
-        m_.rio_.write(static_cast<std::uint8_t>(port - base()), value, t);
+        m_.rio_.write(static_cast<std::uint8_t>(port - kBase), value, t);
         m_.cpu_.stop_at(t);
     }
 
 private:
-    static std::uint8_t base() {
+    static constexpr std::uint8_t kBase = [] {
         for (const auto& r : board::kIoMap)
             if (r.device == board::Device::Rio8155) return r.first;
-        return 0;
-    }
+        return std::uint8_t{0};
+    }();
     Machine& m_;
 };
 
