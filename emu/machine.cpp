@@ -27,10 +27,13 @@ public:
     Stop reason = Stop::Deadline;
     std::uint16_t hit_address = 0;
     std::function<void(const I8085&)> trace;
+    bool run_to = false;  // run_to(): only run_to_pc stops the run
+    std::uint16_t run_to_pc = 0;
 
     bool before_instruction(I8085& cpu) override {
         const std::uint16_t pc = cpu.regs().pc;
-        if (breakpoint[pc] && !(skip_armed && pc == skip_pc)) {
+        const bool stop_here = run_to ? pc == run_to_pc : static_cast<bool>(breakpoint[pc]);
+        if (stop_here && !(skip_armed && pc == skip_pc)) {
             skip_armed = false;
             stopped = true;
             reason = Stop::Breakpoint;
@@ -233,6 +236,17 @@ Machine::Stop Machine::run_until(std::uint64_t until, const std::function<bool()
             return h.reason;
         }
     }
+}
+
+Machine::Stop Machine::run_to(std::uint16_t pc, std::uint64_t until) {
+    Hooks& h = *hooks_;
+    h.run_to = true;
+    h.run_to_pc = pc;
+    cpu_.set_debug_hooks(hooks_.get());
+    const Stop stop = run_until(until);
+    h.run_to = false;
+    update_hooks();
+    return stop;
 }
 
 void Machine::step() {

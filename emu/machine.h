@@ -77,6 +77,9 @@ public:
     Stop run_for(std::uint64_t tstates, const std::function<bool()>& condition = {}) {
         return run_until(now() + tstates, condition);
     }
+    // Runs until the PC reaches `pc` (Stop::Breakpoint) or until `until` (Stop::Deadline). Only
+    // `pc` stops it: the breakpoints are not armed meanwhile (a debugger's "run to here").
+    Stop run_to(std::uint16_t pc, std::uint64_t until);
     // Exactly one instruction (or interrupt acknowledge, or idle T-state when halted),
     // ignoring breakpoints at the current PC.
     void step();

@@ -388,13 +388,7 @@ Session::Outcome Session::execute(const Command& c) {
             const auto a = resolve(*c.address, e);
             if (!a) return fail(c, e);
             const auto target = static_cast<std::uint16_t>(*a);
-            const std::vector<std::uint16_t> saved = m.breakpoints();
-            m.clear_breakpoints();
-            m.add_breakpoint(target);
-            const Machine::Stop stop = m.run_for(c.time);
-            m.clear_breakpoints();
-            for (std::uint16_t b : saved) m.add_breakpoint(b);
-            if (stop != Machine::Stop::Breakpoint)
+            if (m.run_to(target, m.now() + c.time) != Machine::Stop::Breakpoint)
                 return fail(c, fmt::format("the PC did not reach {} within {}", hex(target, 4), format_time(c.time)));
             return {};
         }

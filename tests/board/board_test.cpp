@@ -128,6 +128,22 @@ TEST(Board8155, TimerTerminalCountTrapsEveryPeriod) {
     EXPECT_EQ(after - before, 100);
 }
 
+TEST(BoardDebug, RunToStopsOnlyAtItsTargetAndKeepsTheBreakpoints) {
+    Machine m;
+    const LoadedImage img = boot(m, "hello.asm");
+    const std::uint16_t show = img.assembly->find_symbol("SHOW")->value;
+    m.add_breakpoint(0x0040);  // START: passed on the way to SHOW, but not armed by run_to
+    ASSERT_EQ(m.run_to(show, m.now() + ms(5)), Machine::Stop::Breakpoint);
+    EXPECT_EQ(m.cpu().regs().pc, show);
+    EXPECT_EQ(m.breakpoints(), std::vector<std::uint16_t>{0x0040});
+    // A target that is never reached: the deadline ends the run.
+    EXPECT_EQ(m.run_to(0x0700, m.now() + 10'000), Machine::Stop::Deadline);
+    // The breakpoint at START is armed again for ordinary runs.
+    m.reset();
+    EXPECT_EQ(m.run_for(ms(5)), Machine::Stop::Breakpoint);
+    EXPECT_EQ(m.cpu().regs().pc, 0x0040);
+}
+
 TEST(BoardReset, ResetKeyRestartsAtZeroAndResetsTheChips) {
     Machine m;
     boot(m, "timer.asm");
