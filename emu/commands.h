@@ -8,6 +8,7 @@ namespace alp85::cli {
 // Each add_* registers a subcommand whose callback stores the process exit status in `status`.
 void add_cpm_command(CLI::App& app, int& status);
 void add_bench_command(CLI::App& app, int& status);
+void add_disasm_command(CLI::App& app, int& status);
 void add_script_command(CLI::App& app, int& status);
 void add_run_command(CLI::App& app, int& status);
 

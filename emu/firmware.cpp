@@ -24,9 +24,11 @@ Firmware monitor() {
     for (const auto& [name, value] : table.names()) f.symbols.emplace(name, value);
     return f;
 }
+const char* monitor_map() { return kMonitorMap; }
 #else
 bool have_monitor() { return false; }
 Firmware monitor() { return {}; }
+const char* monitor_map() { return ""; }
 #endif
 
 }  // namespace alp85::firmware

@@ -19,5 +19,7 @@ bool have_monitor();
 // The 2 KB monitor EPROM image at 0000H and its symbols (AUS, UMW, SAVEPC, ...); empty when this
 // build has no monitor.
 Firmware monitor();
+// The monitor's asm85 map (JSON, "alp85-asm-map"); empty when this build has no monitor.
+const char* monitor_map();
 
 }  // namespace alp85::firmware

@@ -33,13 +33,17 @@ std::string SymbolTable::load_map_text(std::string_view json) {
         const std::string name = s["name"].get<std::string>();
         const auto value = static_cast<std::uint16_t>(s["value"].get<unsigned>());
         const std::string kind = s.contains("kind") && s["kind"].is_string() ? s["kind"].get<std::string>() : "label";
-        by_name_.emplace(upper(name), value);
-        if (kind == "label")
-            labels_.emplace(value, name);
-        else if (kind == "equ" || kind == "set")
-            equates_.emplace(value, name);
+        add(name, value, kind);
     }
     return {};
+}
+
+void SymbolTable::add(std::string_view name, std::uint16_t value, std::string_view kind) {
+    by_name_.emplace(upper(name), value);
+    if (kind == "label")
+        labels_.emplace(value, std::string(name));
+    else if (kind == "equ" || kind == "set")
+        equates_.emplace(value, std::string(name));
 }
 
 std::string SymbolTable::load_map_file(const std::string& path) {

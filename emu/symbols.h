@@ -21,6 +21,8 @@ public:
     // Adds the symbols of one map (several maps may be loaded). Returns "" or an error message.
     std::string load_map_text(std::string_view json);
     std::string load_map_file(const std::string& path);
+    // One symbol; kind is asm85's: "label", "equ" or "set" name addresses, others only values.
+    void add(std::string_view name, std::uint16_t value, std::string_view kind);
 
     // The name for an address: a label if one is defined there, otherwise an EQU/SET name with
     // that value; the first defined wins among equals. nullopt if none.
