@@ -19,7 +19,10 @@ std::string upper(std::string_view s) {
 std::string SymbolTable::load_map_text(std::string_view json) {
     nlohmann::json j = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
     if (j.is_discarded()) return "not valid JSON";
-    if (!j.is_object() || j.value("format", "") != "alp85-asm-map") return "not an asm85 map (format alp85-asm-map)";
+    // Check each member's type before reading it: json::value() throws on a wrong type.
+    if (!j.is_object() || !j.contains("format") || !j["format"].is_string() ||
+        j["format"].get<std::string>() != "alp85-asm-map")
+        return "not an asm85 map (format alp85-asm-map)";
     if (!j.contains("version") || !j["version"].is_number_integer() || j["version"].get<int>() != 1)
         return "unsupported asm85 map version";
     if (!j.contains("symbols") || !j["symbols"].is_array()) return "asm85 map without a symbols array";
@@ -28,11 +31,12 @@ std::string SymbolTable::load_map_text(std::string_view json) {
         if (!s.is_object() || !s.contains("name") || !s["name"].is_string() || !s.contains("value") ||
             !s["value"].is_number_unsigned() || s["value"].get<unsigned long long>() > 0xFFFF)
             return "asm85 map: a symbol without a name or a 16-bit value";
+        if (s.contains("kind") && !s["kind"].is_string()) return "asm85 map: a symbol kind that is not a string";
     }
     for (const auto& s : j["symbols"]) {
         const std::string name = s["name"].get<std::string>();
         const auto value = static_cast<std::uint16_t>(s["value"].get<unsigned>());
-        const std::string kind = s.contains("kind") && s["kind"].is_string() ? s["kind"].get<std::string>() : "label";
+        const std::string kind = s.contains("kind") ? s["kind"].get<std::string>() : "label";
         add(name, value, kind);
     }
     return {};

@@ -55,6 +55,10 @@ TEST(Symbols, RejectsWhatIsNotAMap) {
     EXPECT_NE(syms.load_map_text("{"), "");
     EXPECT_NE(syms.load_map_text(R"({"format":"other","version":1,"symbols":[]})"), "");
     EXPECT_NE(syms.load_map_text(R"({"format":"alp85-asm-map","version":1,"symbols":[{"name":"X","value":70000}]})"), "");
+    // Members of the wrong type are refused, not thrown (found by tests/fuzz/input_fuzz).
+    EXPECT_EQ(syms.load_map_text(R"({"format":0,"symbols":[]})"), "not an asm85 map (format alp85-asm-map)");
+    EXPECT_NE(syms.load_map_text(R"({"format":"alp85-asm-map","version":"1","symbols":[]})"), "");
+    EXPECT_NE(syms.load_map_text(R"({"format":"alp85-asm-map","version":1,"symbols":[{"name":"X","value":1,"kind":7}]})"), "");
     EXPECT_EQ(syms.size(), 0u);
     EXPECT_NE(syms.load_map_file("/nonexistent/map.json"), "");
 }
