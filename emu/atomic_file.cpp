@@ -1,33 +1,52 @@
 #include "emu/atomic_file.h"
 
-#include <fstream>
 #include <string>
 #include <system_error>
 #include <unistd.h>
 
 namespace alp85 {
 
-void write_atomic(const std::filesystem::path& path, std::string_view bytes) {
-    std::filesystem::path tmp = path;
-    tmp += ".tmp" + std::to_string(::getpid());
+namespace {
+bool write_through(const std::filesystem::path& path) {
     std::error_code ec;
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.flush();
-        if (!out) {
-            out.close();
-            std::filesystem::remove(tmp, ec);
-            throw std::runtime_error("cannot write '" + path.string() + "' (disk full?)");
-        }
+    const auto st = std::filesystem::symlink_status(path, ec);
+    return !ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st);
+}
+}  // namespace
+
+AtomicOutput::AtomicOutput(std::filesystem::path path) : path_(std::move(path)) {
+    if (!write_through(path_)) {
+        tmp_ = path_;
+        tmp_ += ".tmp" + std::to_string(::getpid());
     }
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        throw std::runtime_error("cannot write '" + path.string() + "': " + ec.message());
+    out_.open(tmp_.empty() ? path_ : tmp_, std::ios::binary | std::ios::trunc);
+    if (!out_) throw std::runtime_error("cannot write '" + path_.string() + "'");
+}
+
+AtomicOutput::~AtomicOutput() {
+    if (done_ || tmp_.empty()) return;
+    out_.close();
+    std::error_code ignored;
+    std::filesystem::remove(tmp_, ignored);
+}
+
+void AtomicOutput::commit() {
+    out_.flush();
+    const bool ok = static_cast<bool>(out_);
+    out_.close();
+    if (!ok || out_.fail()) throw std::runtime_error("cannot write '" + path_.string() + "' (disk full?)");
+    if (!tmp_.empty()) {
+        std::error_code ec;
+        std::filesystem::rename(tmp_, path_, ec);
+        if (ec) throw std::runtime_error("cannot write '" + path_.string() + "': " + ec.message());
     }
+    done_ = true;
+}
+
+void write_atomic(const std::filesystem::path& path, std::string_view bytes) {
+    AtomicOutput out(path);
+    out.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.commit();
 }
 
 }  // namespace alp85

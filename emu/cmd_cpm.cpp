@@ -1,5 +1,6 @@
-// alp85 cpm PROGRAM.COM [--cpu 8080|8085] [--max-cycles N] [--stats]
+// alp85 cpm PROGRAM.COM [--cpu 8080|8085] [--max-cycles N] [--stats] [--trace OUT.csv [--trace-last N]]
 // Runs a CP/M .COM program (e.g. the period 8080/8085 CPU diagnostics) on the CP/M machine.
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <cstdio>
@@ -10,8 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "emu/atomic_file.h"
 #include "emu/commands.h"
 #include "emu/cpm.h"
+#include "emu/trace_csv.h"
 
 namespace alp85::cli {
 
@@ -21,6 +24,34 @@ struct CpmArgs {
     std::string cpu = "8085";
     std::uint64_t max_cycles = 0;
     bool stats = false;
+    std::string trace;
+    std::size_t trace_last = 0;  // 0: every instruction
+};
+
+// The CSV trace through the core's debug hooks: streamed, or the last N lines kept in a ring
+// (what a failing diagnostic did just before it stopped).
+class CsvTrace final : public DebugHooks {
+public:
+    CsvTrace(const Bus& bus, std::ostream& out, std::size_t last) : bus_(bus), out_(out), ring_(last) {}
+    bool before_instruction(I8085& cpu) override {
+        std::string line = trace_csv_line(cpu, [this](std::uint16_t a) { return bus_.peek(a); });
+        if (ring_.empty())
+            out_ << line;
+        else
+            ring_[count_ % ring_.size()] = std::move(line);
+        ++count_;
+        return true;
+    }
+    void finish() {  // writes the ring, oldest first
+        const std::size_t n = std::min<std::size_t>(count_, ring_.size());
+        for (std::size_t i = 0; i < n; ++i) out_ << ring_[(count_ - n + i) % ring_.size()];
+    }
+
+private:
+    const Bus& bus_;
+    std::ostream& out_;
+    std::vector<std::string> ring_;
+    std::size_t count_ = 0;
 };
 
 int run_cpm(const CpmArgs& args) {
@@ -40,6 +71,19 @@ int run_cpm(const CpmArgs& args) {
         std::fprintf(stderr, "alp85 cpm: %s: %s\n", args.program.c_str(), err.c_str());
         return 1;
     }
+    std::unique_ptr<AtomicOutput> trace_file;
+    std::unique_ptr<CsvTrace> trace;
+    if (!args.trace.empty()) {
+        try {
+            trace_file = std::make_unique<AtomicOutput>(args.trace);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "alp85 cpm: trace: %s\n", e.what());
+            return 1;
+        }
+        trace_file->stream() << trace_csv_header();
+        trace = std::make_unique<CsvTrace>(machine.bus(), trace_file->stream(), args.trace_last);
+        machine.cpu().set_debug_hooks(trace.get());
+    }
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpu_start = std::clock();
     const CpmMachine::Result r = machine.run(args.max_cycles, [](char ch) {
@@ -49,6 +93,15 @@ int run_cpm(const CpmArgs& args) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     std::fflush(stdout);
+    if (trace) {  // written however the run ended: that is when a trace is wanted most
+        trace->finish();
+        try {
+            trace_file->commit();
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "alp85 cpm: trace: %s\n", e.what());
+            return 1;
+        }
+    }
     if (!r.message.empty()) std::fprintf(stderr, "\nalp85 cpm: %s: %s\n", args.program.c_str(), r.message.c_str());
     if (args.stats) {
         std::fprintf(stderr,
@@ -71,6 +124,11 @@ void add_cpm_command(CLI::App& app, int& status) {
     cmd->add_option("--cpu", args->cpu, "processor variant")->check(CLI::IsMember({"8080", "8085"}))->capture_default_str();
     cmd->add_option("--max-cycles", args->max_cycles, "stop with an error after N T-states (0 = no limit)");
     cmd->add_flag("--stats", args->stats, "print instructions, T-states, wall time and T-states per second");
+    auto* trace = cmd->add_option("--trace", args->trace, "write every executed instruction as CSV (T-state, PC, "
+                                                          "opcode, disassembly, registers before it)");
+    cmd->add_option("--trace-last", args->trace_last, "with --trace: only the last N instructions of the run")
+        ->needs(trace)
+        ->check(CLI::PositiveNumber);
     cmd->callback([args, &status] { status = run_cpm(*args); });
 }
 

@@ -45,15 +45,17 @@ void add_script_command(CLI::App& app, int& status) {
             status = 2;
             return;
         }
-        std::ofstream trace;
+        // The trace appears whole when the run ends (passed or failed), or not at all.
+        std::unique_ptr<AtomicOutput> trace;
         if (!args->trace.empty()) {
-            trace.open(args->trace, std::ios::trunc);
-            if (!trace) {
-                std::cerr << fmt::format("alp85 script: cannot write trace '{}'\n", args->trace);
+            try {
+                trace = std::make_unique<AtomicOutput>(args->trace);
+            } catch (const std::exception& e) {
+                std::cerr << "alp85 script: trace: " << e.what() << '\n';
                 status = 2;
                 return;
             }
-            o.trace = &trace;
+            o.trace = &trace->stream();
         }
         std::vector<script::ScriptResult> results;
         int failed = 0;
@@ -69,6 +71,15 @@ void add_script_command(CLI::App& app, int& status) {
             }
         }
         std::cout << fmt::format("{} passed, {} failed\n", results.size() - failed, failed);
+        if (trace) {
+            try {
+                trace->commit();
+            } catch (const std::exception& e) {
+                std::cerr << "alp85 script: trace: " << e.what() << '\n';
+                status = 2;
+                return;
+            }
+        }
         if (!args->junit.empty()) {
             try {
                 write_atomic(args->junit, script::junit_xml(results));

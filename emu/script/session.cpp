@@ -1,4 +1,5 @@
 #include "emu/script/session.h"
+#include "emu/trace_csv.h"
 
 #include <algorithm>
 #include <set>
@@ -72,12 +73,9 @@ void Session::set_trace(std::ostream* out) {
         machine_->set_trace({});
         return;
     }
-    *out << "tstate,pc,opcode,instruction,a,f,b,c,d,e,h,l,sp\n";
+    *out << trace_csv_header();
     machine_->set_trace([this](const I8085& cpu) {
-        const Registers& r = cpu.regs();
-        const auto d = asm85::disassemble([this](std::uint16_t a) { return machine_->peek(a); }, r.pc);
-        *trace_ << fmt::format("{},{:04X},{:02X},\"{}\",{:02X},{:02X},{:02X},{:02X},{:02X},{:02X},{:02X},{:02X},{:04X}\n",
-                               cpu.cycles(), r.pc, d.bytes[0], d.text, r.a, r.f, r.b, r.c, r.d, r.e, r.h, r.l, r.sp);
+        *trace_ << trace_csv_line(cpu, [this](std::uint16_t a) { return machine_->peek(a); });
     });
 }
 

@@ -1,9 +1,13 @@
 # Runs one command and checks its exit status and its output (stdout and stderr together).
-#   cmake -DCMD="prog;arg;..." -DSTATUS=n [-DMATCH=regex] [-DMATCH2=regex] -P run_check.cmake
+#   cmake -DCMD="prog;arg;..." -DSTATUS=n|nonzero [-DMATCH=regex] [-DMATCH2=regex] -P run_check.cmake
 # With -DTWICE=1 the command runs twice and both outputs must be identical (determinism).
 execute_process(COMMAND ${CMD} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(all "${out}${err}")
-if(NOT rc STREQUAL "${STATUS}")
+if(STATUS STREQUAL "nonzero")  # an argument error: CLI11 picks the code
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "exit status 0, expected an error\n${all}")
+  endif()
+elseif(NOT rc STREQUAL "${STATUS}")
   message(FATAL_ERROR "exit status ${rc}, expected ${STATUS}\n${all}")
 endif()
 foreach(m MATCH MATCH2)
