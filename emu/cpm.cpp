@@ -39,7 +39,9 @@ CpmMachine::Result CpmMachine::run(std::uint64_t max_tstates, const std::functio
     const std::uint64_t deadline = max_tstates == 0 ? std::numeric_limits<std::uint64_t>::max() : max_tstates;
     // A CALL 0005H pushes its return address onto the stack the program set up; the warm-boot HLT
     // stops the run through on_halt.
-    while (!cpu_.halted() && cpu_.cycles() < deadline) cpu_.run(deadline);
+    bool stopped = false;
+    while (!cpu_.halted() && cpu_.cycles() < deadline && !stopped)
+        stopped = cpu_.run(deadline) == 0;  // nothing ran: a debug hook refused the next instruction
 
     Result r;
     r.instructions = cpu_.instructions();
@@ -57,6 +59,11 @@ CpmMachine::Result CpmMachine::run(std::uint64_t max_tstates, const std::functio
         r.end = End::Halt;
         r.exit_status = 2;
         std::snprintf(buf, sizeof buf, "HLT at %04XH", static_cast<unsigned>((cpu_.regs().pc - 1) & 0xFFFF));
+        r.message = buf;
+    } else if (stopped) {
+        r.end = End::Stopped;
+        r.exit_status = 5;
+        std::snprintf(buf, sizeof buf, "stopped by a debug hook before %04XH", static_cast<unsigned>(cpu_.regs().pc));
         r.message = buf;
     } else {
         r.end = End::CycleLimit;

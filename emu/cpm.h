@@ -24,7 +24,7 @@ public:
     static constexpr std::uint8_t kConsolePort = 0x01;   // must match bdos.asm CONOUT
     static constexpr std::uint8_t kBadFunctionPort = 0x02;  // must match bdos.asm BADFN
 
-    enum class End { WarmBoot, Halt, BadFunction, CycleLimit };
+    enum class End { WarmBoot, Halt, BadFunction, CycleLimit, Stopped };  // Stopped: a debug hook said so
     struct Result {
         End end = End::Halt;
         int exit_status = 1;
@@ -37,8 +37,9 @@ public:
 
     // Loads a .COM image at 0100H; returns an error message if it does not fit below the BDOS.
     std::string load_program(std::span<const std::uint8_t> image);
-    // Runs until warm boot, HLT elsewhere, an undefined BDOS function, or max_tstates (0 = no
-    // limit). Console output goes to `console`, a character at a time.
+    // Runs until warm boot, HLT elsewhere, an undefined BDOS function, max_tstates (0 = no
+    // limit), or a debug hook's before_instruction returning false. Console output goes to
+    // `console`, a character at a time.
     Result run(std::uint64_t max_tstates, const std::function<void(char)>& console);
 
     I8085& cpu() { return cpu_; }

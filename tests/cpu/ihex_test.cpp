@@ -59,6 +59,21 @@ TEST(CpmMachine, RejectsEmptyAndOversizedPrograms) {
     EXPECT_EQ(r.tstates, 10u + 5u);  // JMP 10, HLT 5 at 0000H
 }
 
+TEST(CpmMachine, ADebugHookCanStopTheRun) {
+    struct StopAt : DebugHooks {
+        bool before_instruction(I8085& cpu) override { return cpu.regs().pc != 0x0103; }
+    } hook;
+    CpmMachine m(Variant::I8085);
+    const std::vector<std::uint8_t> prog{0x3E, 0x01, 0x00, 0x00, 0xC3, 0x00, 0x00};  // MVI A,1 / NOP / NOP / JMP 0
+    ASSERT_EQ(m.load_program(prog), "");
+    m.cpu().set_debug_hooks(&hook);
+    const auto r = m.run(0, nullptr);
+    EXPECT_EQ(r.end, CpmMachine::End::Stopped);
+    EXPECT_NE(r.exit_status, 0);
+    EXPECT_EQ(r.message, "stopped by a debug hook before 0103H");
+    EXPECT_EQ(r.tstates, 7u + 4u);  // MVI 7, NOP 4; the second NOP did not run
+}
+
 TEST(CpmMachine, BdosEntryIsTheTopOfTheTpa) {
     CpmMachine m(Variant::I8080);
     EXPECT_EQ(m.bdos_entry(), 0xFF00);
