@@ -57,9 +57,9 @@ void add_run_command(CLI::App& app, int& status) {
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("run", "Run the ALP 85 headless: boot the monitor, type keys, show the display");
     cmd->add_option("programs", args->programs, "Programs to load first (.asm, .hex; FILE.bin@ADDR)");
-    cmd->add_option("--keys", args->keys, "Keys to type after booting, e.g. \"R 7 0800 EXEC\"");
+    auto* keys = cmd->add_option("--keys", args->keys, "Keys to type after booting, e.g. \"R 7 0800 EXEC\"");
     cmd->add_option("--boot", args->boot, "Time to run after RESET before typing (default 500ms)");
-    cmd->add_option("--for", args->run_for, "Time to run after the keys (default 1s)");
+    cmd->add_option("--for", args->run_for, "Time to run after the keys (default 1s)")->needs(keys);
     cmd->add_flag("--no-monitor", args->no_monitor, "Do not load the built-in monitor ROM");
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
     cmd->footer(

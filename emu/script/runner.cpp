@@ -47,6 +47,13 @@ bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, 
         return false;
     }
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (const auto nul = text.find('\0'); nul != std::string::npos) {  // an image or a binary, not a script
+        const auto line_start = text.rfind('\n', nul);
+        const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
+        const int col = static_cast<int>(nul - (line_start == std::string::npos ? 0 : line_start + 1)) + 1;
+        errors.push_back({{file.string(), line, col}, "not a script: binary data (a NUL byte)", ""});
+        return false;
+    }
     const std::size_t before = errors.size();
     commands = parse_script(text, file.string(), errors);
     Session checker(session_options(file, options));
