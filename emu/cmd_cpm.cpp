@@ -128,7 +128,7 @@ void add_cpm_command(CLI::App& app, int& status) {
                                                           "opcode, disassembly, registers before it)");
     cmd->add_option("--trace-last", args->trace_last, "with --trace: only the last N instructions of the run")
         ->needs(trace)
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Range(std::size_t{1}, std::size_t{10'000'000}));  // the ring is kept in memory
     cmd->callback([args, &status] { status = run_cpm(*args); });
 }
 
