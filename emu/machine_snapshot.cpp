@@ -116,6 +116,11 @@ void Machine::restore_bytes(const std::vector<std::uint8_t>& bytes) {
         scratch_rio.load(snapshot::find(sections, "8155").data);
         periph::I8279 scratch_kdc;
         scratch_kdc.load(snapshot::find(sections, "8279").data);
+        // The machine keeps its chips caught up with the CPU (sync_chips after every run), so a
+        // chip at another time is a damaged file; a timer far behind would also take ages to
+        // catch up, one event at a time.
+        if (scratch_rio.state().now != scratch_cpu.cycles() || scratch_kdc.state().now != scratch_cpu.cycles())
+            throw snapshot::SnapshotError("the chips' time differs from the CPU's");
         periph::Keypad scratch_keys;
         scratch_keys.load(snapshot::find(sections, "KEYS").data);
         std::array<std::uint8_t, 0x1000> scratch_mem{};

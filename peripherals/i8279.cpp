@@ -31,6 +31,9 @@ void I8279::resync(std::uint64_t now) {
     s_.origin_t = now;
     s_.origin_clk = 0;
     s_.next_digit = 0;
+    // Debounces in progress start again with the new scan.
+    s_.candidate_digit = 0;
+    s_.nkro_digit.fill(0);
 }
 
 std::uint64_t I8279::clk_at(std::uint64_t t) const {
@@ -516,7 +519,22 @@ void I8279::load(std::span<const std::uint8_t> in) {
     }
     s.now = r.u64();
     r.expect_end();
-    if (s.origin_t > s.now || s.next_digit * kClocksPerDigit < s.origin_clk) r.fail("scan state behind its own clock");
+    // The scan's invariants, so that a crafted file cannot leave a debounce that never ends (the
+    // scan would then be revisited digit by digit forever):
+    //   the digit being scanned at `now` is next_digit or the one before it (resync: both 0);
+    //   a pending key lies in a scanned row and started at or before next_digit.
+    if (s.origin_t > s.now || s.origin_clk > (1ull << 56) || (s.now - s.origin_t) / s.prescaler > (1ull << 56))
+        r.fail("scan clock out of range");
+    const std::uint64_t digit_now = (s.origin_clk + (s.now - s.origin_t) / s.prescaler) / kClocksPerDigit;
+    if (s.next_digit < digit_now || s.next_digit > digit_now + 1 || s.next_digit * kClocksPerDigit < s.origin_clk)
+        r.fail("scan state off its own clock");
+    const int keys = (s.mode & 1) ? 32 : 64;  // decoded scan: 4 rows
+    if (s.candidate >= keys || s.locked >= keys || (s.candidate >= 0 && s.candidate_digit > s.next_digit))
+        r.fail("invalid pending key");
+    for (int k = 0; k < 64; ++k) {
+        if ((k >= keys && s.nkro[k] != 0) || (s.nkro[k] == 1 && s.nkro_digit[k] > s.next_digit))
+            r.fail("invalid key state");
+    }
     s_ = s;
 }
 

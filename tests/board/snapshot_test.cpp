@@ -105,6 +105,15 @@ TEST_F(BadSnapshot, TruncatedFileIsRefused) {
 
 TEST_F(BadSnapshot, NotASnapshotAtAll) { expect_refused({'h', 'e', 'l', 'l', 'o'}, "not an ALP85 snapshot"); }
 
+TEST_F(BadSnapshot, ChipsAtAnotherTimeThanTheCpuAreRefused) {
+    // A well-formed 8155 section, but from a machine 1234 T-states in (this one is at 3 ms).
+    auto sections = snapshot::decode(good);
+    const auto other = snapshot::decode(before);
+    for (auto& s : sections)
+        if (s.tag == "8155") s.data = snapshot::find(other, "8155").data;
+    expect_refused(snapshot::encode(sections), "the chips' time differs from the CPU's");
+}
+
 TEST_F(BadSnapshot, OtherCpuVariantIsRefused) {
     Machine i8080({Variant::I8080});
     try {
