@@ -423,7 +423,8 @@ void I8155::load(std::span<const std::uint8_t> in) {
     s.pulse_end = r.u64();
     s.now = r.u64();
     r.expect_end();
-    if (s.running && s.now >= s.period_start + s.count) r.fail("timer state behind its own clock");
+    if (s.running && (s.period_start > s.now || s.now >= s.period_start + s.count))
+        r.fail("timer state off its own clock");
     s_ = s;
 }
 

@@ -424,4 +424,21 @@ TEST_F(I8155Test, LoadRejectsBadSnapshots) {
     EXPECT_THROW(other.load(extra), alp85::periph::SnapshotError);
 }
 
+TEST_F(I8155Test, LoadRejectsATimerPeriodInTheFuture) {
+    load_count(7, kContSquare, 0);
+    chip.write(I8155::kCommandStatus, kStart, 0);
+    run_to(9);
+    std::vector<std::uint8_t> blob;
+    chip.save(blob);
+    I8155 ok;
+    ASSERT_NO_THROW(ok.load(blob));
+    // The state ends with period_start (u64), pending_start, stop_after_tc, held_value (u16),
+    // timer_out, pulse_end (u64) and now (u64): period_start is 29 bytes from the end.
+    const std::size_t at = blob.size() - 29;
+    EXPECT_EQ(blob[at], 7);  // the second period started at 7 (count 7)
+    blob[at] = 200;          // a period starting after `now` (9)
+    I8155 other;
+    EXPECT_THROW(other.load(blob), alp85::periph::SnapshotError);
+}
+
 }  // namespace
