@@ -35,7 +35,8 @@ Disassembly disassemble(const std::function<std::uint8_t(std::uint16_t)>& read, 
         } else if (slot == "d16" || slot == "a16") {
             auto w = static_cast<std::uint16_t>(d.bytes[1] | (d.bytes[2] << 8));
             std::optional<std::string> name;
-            if (options.symbol) name = options.symbol(w);
+            const auto& lookup = slot == "d16" && options.data_symbol ? options.data_symbol : options.symbol;
+            if (lookup) name = lookup(w);
             operands += name ? *name : hex_operand(w, 4);
         } else {
             operands += slot;  // register, pair or RST number

@@ -26,6 +26,9 @@ struct DisasmOptions {
     // Name for a 16-bit address/word operand (a16, d16), or nullopt to print it as hex.
     std::function<std::optional<std::string>(std::uint16_t)> symbol;
     bool cpu8080 = false;
+    // Name for a 16-bit immediate (d16: LXI) only; when unset, `symbol` names those too. Lets a
+    // caller keep small EQU constants (KMODE EQU 0) off LXI H,0000H while CALL 0005H stays BDOS.
+    std::function<std::optional<std::string>(std::uint16_t)> data_symbol;
 };
 
 // Decodes the instruction at `address`; `read` supplies memory (wrapping at 0FFFFH).

@@ -24,12 +24,18 @@ DisasmResult disassemble_image(const std::vector<ImageSegment>& segments, const 
     DisasmResult out;
     asm85::DisasmOptions dopt;
     dopt.cpu8080 = options.variant == Variant::I8080;
-    if (options.symbols)
+    if (options.symbols) {
         dopt.symbol = [&](std::uint16_t a) {
             auto name = options.symbols->name_at(a);
             if (name) out.names_used.insert(*name);
             return name;
         };
+        dopt.data_symbol = [&](std::uint16_t v) {
+            auto name = options.symbols->data_name_at(v);
+            if (name) out.names_used.insert(*name);
+            return name;
+        };
+    }
     const auto read = [&](std::uint16_t a) { return mem[a]; };
 
     for (unsigned a = lo; a <= hi;) {
@@ -43,7 +49,7 @@ DisasmResult disassemble_image(const std::vector<ImageSegment>& segments, const 
         if (options.symbols)
             if (auto l = options.symbols->label_at(line.address)) line.label = *l;
         // Decode first without names, so a split instruction does not count the names it would use.
-        const asm85::Disassembly plain = asm85::disassemble(read, line.address, {.symbol = {}, .cpu8080 = dopt.cpu8080});
+        const asm85::Disassembly plain = asm85::disassemble(read, line.address, {.symbol = {}, .cpu8080 = dopt.cpu8080, .data_symbol = {}});
         unsigned n = 0;
         while (n < plain.length && inside(a + n)) ++n;
         // A label inside the instruction marks where code (or data) really starts: stop there.

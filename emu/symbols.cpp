@@ -65,6 +65,13 @@ std::optional<std::string> SymbolTable::name_at(std::uint16_t addr) const {
     return std::nullopt;
 }
 
+std::optional<std::string> SymbolTable::data_name_at(std::uint16_t value) const {
+    if (auto it = labels_.find(value); it != labels_.end()) return it->second;
+    if (value > 0xFF)
+        if (auto it = equates_.find(value); it != equates_.end()) return it->second;
+    return std::nullopt;
+}
+
 std::optional<std::string> SymbolTable::label_at(std::uint16_t addr) const {
     if (auto it = labels_.find(addr); it != labels_.end()) return it->second;
     return std::nullopt;
@@ -78,7 +85,10 @@ std::optional<std::uint16_t> SymbolTable::value_of(std::string_view name) const 
 asm85::Disassembly disassemble(const Bus& bus, std::uint16_t addr, Variant variant, const SymbolTable* symbols) {
     asm85::DisasmOptions opt;
     opt.cpu8080 = variant == Variant::I8080;
-    if (symbols) opt.symbol = [symbols](std::uint16_t a) { return symbols->name_at(a); };
+    if (symbols) {
+        opt.symbol = [symbols](std::uint16_t a) { return symbols->name_at(a); };
+        opt.data_symbol = [symbols](std::uint16_t v) { return symbols->data_name_at(v); };
+    }
     return asm85::disassemble([&bus](std::uint16_t a) { return bus.peek(a); }, addr, opt);
 }
 

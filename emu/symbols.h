@@ -27,6 +27,9 @@ public:
     // The name for an address: a label if one is defined there, otherwise an EQU/SET name with
     // that value; the first defined wins among equals. nullopt if none.
     std::optional<std::string> name_at(std::uint16_t addr) const;
+    // The name for a 16-bit immediate (LXI): a label, or an EQU/SET name only for values above
+    // 00FFH, since small EQUs are usually 8-bit constants (KMODE EQU 0 would name LXI H,0).
+    std::optional<std::string> data_name_at(std::uint16_t value) const;
     // A label defined exactly here (for "LOOP:" lines in a listing).
     std::optional<std::string> label_at(std::uint16_t addr) const;
     std::optional<std::uint16_t> value_of(std::string_view name) const;  // case-insensitive

@@ -31,6 +31,10 @@ TEST(Disasm, SymbolCallback) {
     };
     EXPECT_EQ(dis({0xCD, 0x05, 0x00}, 0, o).text, "CALL BDOS");
     EXPECT_EQ(dis({0xCD, 0x06, 0x00}, 0, o).text, "CALL 0006H");
+    EXPECT_EQ(dis({0x21, 0x05, 0x00}, 0, o).text, "LXI H,BDOS");  // no data_symbol: symbol names d16 too
+    o.data_symbol = [](std::uint16_t) -> std::optional<std::string> { return std::nullopt; };
+    EXPECT_EQ(dis({0x21, 0x05, 0x00}, 0, o).text, "LXI H,0005H");
+    EXPECT_EQ(dis({0xCD, 0x05, 0x00}, 0, o).text, "CALL BDOS");
 }
 
 TEST(Disasm, Cpu8080ShowsNon8080BytesAsData) {

@@ -58,9 +58,12 @@ TEST(DisasmImage, LabelsNameOperandsAndCutInstructions) {
     EXPECT_EQ(r.names_used.size(), 0u);  // no complete instruction had a 16-bit operand
 
     o.symbols = &syms;
-    const DisasmResult r2 = disassemble_image({{0x0100, {0xCD, 0x05, 0x00, 0xC3, 0x00, 0x08}}}, o);
+    const DisasmResult r2 =
+        disassemble_image({{0x0100, {0xCD, 0x05, 0x00, 0xC3, 0x00, 0x08, 0x21, 0x05, 0x00, 0x21, 0x00, 0x08}}}, o);
     EXPECT_EQ(r2.blocks[0].lines[0].text, "CALL PORT");
     EXPECT_EQ(r2.blocks[0].lines[1].text, "JMP START");
+    EXPECT_EQ(r2.blocks[0].lines[2].text, "LXI H,0005H");  // a small EQU is not an LXI's name
+    EXPECT_EQ(r2.blocks[0].lines[3].text, "LXI H,START");  // a label is
     EXPECT_EQ(r2.names_used, (std::set<std::string>{"PORT", "START"}));
 }
 
