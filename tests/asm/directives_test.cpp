@@ -1,6 +1,7 @@
 // Each directive, labels, conditionals and INCLUDE.
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include "helpers.h"
 
@@ -126,7 +127,11 @@ TEST(Directives, ErrorDirective) {
 
 class IncludeFiles : public ::testing::Test {
 protected:
-    std::filesystem::path dir = std::filesystem::temp_directory_path() / ("asm85_inc_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" + std::to_string(reinterpret_cast<std::uintptr_t>(this)));
+    // Unique per process and test: CTest runs the tests of this suite in parallel processes,
+    // where a seed or an object address can repeat (they did, under ASan).
+    std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                ("asm85_inc_" + std::to_string(::getpid()) + "_" +
+                                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
     void SetUp() override { std::filesystem::create_directories(dir / "lib"); }
     void TearDown() override { std::filesystem::remove_all(dir); }
     void write(const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; }
