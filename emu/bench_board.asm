@@ -47,11 +47,5 @@ CRCNX:  DCR     B
         SHLD    1B04H
         RET
 
-; The thesis's DL: A milliseconds at 3.072 MHz.
-DL:     MVI     B,0DAH
-IDI:    DCR     B
-        JNZ     IDI
-        DCR     A
-        JNZ     DL
-        RET
+        INCLUDE dl.inc          ; the thesis's DL: A milliseconds at 3.072 MHz
         END

@@ -41,47 +41,8 @@ MAIN:   MVI     A,2
         OUT     MOTOR
         JMP     MAIN
 
-; DL: wait A milliseconds (3070 T-states each at 3.072 MHz)
-DL:     MVI     B,0DAH
-IDI:    DCR     B
-        JNZ     IDI
-        DCR     A
-        JNZ     DL
-        RET
-
-; HL:PLOW = DE x BC
-MUL16:  LXI     H,0
-        SHLD    PLOW
-        MVI     A,16
-MULP:   PUSH    PSW
-        PUSH    H
-        LHLD    PLOW
-        DAD     H
-        SHLD    PLOW
-        POP     H
-        JNC     MUL1
-        DAD     H
-        INX     H
-        JMP     MUL2
-MUL1:   DAD     H
-MUL2:   MOV     A,C
-        RAL
-        MOV     C,A
-        MOV     A,B
-        RAL
-        MOV     B,A
-        JNC     MUL3
-        PUSH    H
-        LHLD    PLOW
-        DAD     D
-        SHLD    PLOW
-        POP     H
-        JNC     MUL3
-        INX     H
-MUL3:   POP     PSW
-        DCR     A
-        JNZ     MULP
-        RET
+        INCLUDE dl.inc          ; DL: wait A milliseconds
+        INCLUDE mul16.inc       ; MUL16: HL:PRODLO = DE x BC
 
 ; SUM = SUM + ADDEND, 4 bytes of packed BCD, least significant byte first
 BCDADD: LXI     H,SUM
@@ -124,7 +85,7 @@ CRCN:   DCR     B
 MCAND:  DW      1234H
 MPLIER: DW      5678H
 PROD:   DW      0
-PLOW:    DW      0
+PRODLO: DW      0
 CRC:    DW      0
 SUM:    DB      0,0,0,0
 ADDEND: DB      67H,45H,23H,01H

@@ -88,41 +88,7 @@ SUB16:  MOV     A,L
         MOV     H,A
         RET
 
-; HL:PRODLO = DE x BC (unsigned), by 16 shift-and-add steps over BC's bits
-MUL16:  LXI     H,0
-        SHLD    PRODLO
-        MVI     A,16
-MULP:   PUSH    PSW
-        ; shift the 32-bit product HL:PRODLO left by one
-        PUSH    H
-        LHLD    PRODLO
-        DAD     H
-        SHLD    PRODLO
-        POP     H
-        JNC     MUL1
-        DAD     H
-        INX     H
-        JMP     MUL2
-MUL1:   DAD     H
-MUL2:   ; shift BC left; if its top bit was set, add DE to the product
-        MOV     A,C
-        RAL
-        MOV     C,A
-        MOV     A,B
-        RAL
-        MOV     B,A
-        JNC     MUL3
-        PUSH    H
-        LHLD    PRODLO
-        DAD     D
-        SHLD    PRODLO
-        POP     H
-        JNC     MUL3
-        INX     H
-MUL3:   POP     PSW
-        DCR     A
-        JNZ     MULP
-        RET
+        INCLUDE mul16.inc       ; MUL16: HL:PRODLO = DE x BC
 
 ; print HL as four hex digits
 PHEX16: MOV     A,H

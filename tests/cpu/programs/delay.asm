@@ -12,11 +12,6 @@ START:  MVI     A,10
         CALL    DL
         JMP     0               ; warm boot
 
-DL:     MVI     B,0DAH
-IDI:    DCR     B
-        JNZ     IDI
-        DCR     A
-        JNZ     DL
-        RET
+        INCLUDE dl.inc          ; DL: MVI B,0DAH / IDI: DCR B / JNZ IDI / DCR A / JNZ DL / RET
 
         END     START
