@@ -1,13 +1,12 @@
 // asm85: the command-line front end of the assembler library.
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
-#include <unistd.h>
 
 #include "asm/asm85.h"
 #include "asm/lexer.h"
+#include "emu/atomic_file.h"
 
 namespace {
 
@@ -32,41 +31,16 @@ std::optional<std::uint32_t> parse_address(const std::string& s) {
     return v;
 }
 
-// Writes through a temporary file and a rename, so a failure leaves no half-written output.
-bool write_file(const std::string& path, const void* data, std::size_t size) {
-    std::error_code ec;
-    auto st = std::filesystem::symlink_status(path, ec);
-    if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
-        // A device, pipe or symbolic link (/dev/null, /dev/stdout): write through it; renaming a
-        // temporary file over it would replace the device or link itself.
-        std::ofstream out(path, std::ios::binary);
-        out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-        if (!out) std::cerr << "asm85: error: cannot write " << path << "\n";
-        return static_cast<bool>(out);
-    }
-    std::string tmp = path + ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) {
-            std::cerr << "asm85: error: cannot write " << path << "\n";
-            return false;
-        }
-        out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-        if (!out) {
-            std::cerr << "asm85: error: cannot write " << path << "\n";
-            std::remove(tmp.c_str());
-            return false;
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::cerr << "asm85: error: cannot write " << path << "\n";
-        std::remove(tmp.c_str());
+// Written whole or not at all, through devices and links (emu/atomic_file.h).
+bool write_file(const std::string& path, std::string_view bytes) {
+    try {
+        alp85::write_atomic(path, bytes);
+        return true;
+    } catch (const std::exception& e) {
+        std::cerr << "asm85: error: " << e.what() << "\n";
         return false;
     }
-    return true;
 }
-
-bool write_text(const std::string& path, const std::string& text) { return write_file(path, text.data(), text.size()); }
 
 }  // namespace
 
@@ -134,21 +108,21 @@ int main(int argc, char** argv) {
     if (hex_out.empty() && !no_hex) hex_out = std::filesystem::path(source).replace_extension(".hex").string();
     if (no_hex) hex_out.clear();
     bool ok = true;
-    if (!hex_out.empty()) ok = write_text(hex_out, write_intel_hex(r.image)) && ok;
+    if (!hex_out.empty()) ok = write_file(hex_out, write_intel_hex(r.image)) && ok;
     if (!bin_out.empty()) {
         std::uint16_t lo = first ? static_cast<std::uint16_t>(*first) : r.image.empty() ? 0 : r.image.lowest();
         std::uint16_t hi = last ? static_cast<std::uint16_t>(*last) : r.image.empty() ? 0 : r.image.highest();
         if (r.image.empty() && !first && !last) {
-            ok = write_file(bin_out, "", 0) && ok;
+            ok = write_file(bin_out, "") && ok;
         } else if (hi < lo) {
             std::cerr << "asm85: error: --bin-end is below --bin-start\n";
             ok = false;
         } else {
             auto bytes = write_binary(r.image, lo, hi, static_cast<std::uint8_t>(*fillv));
-            ok = write_file(bin_out, bytes.data(), bytes.size()) && ok;
+            ok = write_file(bin_out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())) && ok;
         }
     }
-    if (!lst_out.empty()) ok = write_text(lst_out, write_listing(r)) && ok;
-    if (!map_out.empty()) ok = write_text(map_out, write_json_map(r)) && ok;
+    if (!lst_out.empty()) ok = write_file(lst_out, write_listing(r)) && ok;
+    if (!map_out.empty()) ok = write_file(map_out, write_json_map(r)) && ok;
     return ok ? 0 : 1;
 }

@@ -28,27 +28,24 @@ struct CpmArgs {
     std::size_t trace_last = 0;  // 0: every instruction
 };
 
-// The CSV trace through the core's debug hooks: streamed, or the last N lines kept in a ring
-// (what a failing diagnostic did just before it stopped).
-class CsvTrace final : public DebugHooks {
+// The CSV trace: streamed, or the last N lines kept in a ring (what a failing diagnostic did
+// just before it stopped), written oldest first by finish().
+class CsvTrace {
 public:
-    CsvTrace(const Bus& bus, std::ostream& out, std::size_t last) : bus_(bus), out_(out), ring_(last) {}
-    bool before_instruction(I8085& cpu) override {
-        std::string line = trace_csv_line(cpu, [this](std::uint16_t a) { return bus_.peek(a); });
+    CsvTrace(std::ostream& out, std::size_t last) : out_(out), ring_(last) {}
+    void add(std::string line) {
         if (ring_.empty())
             out_ << line;
         else
             ring_[count_ % ring_.size()] = std::move(line);
         ++count_;
-        return true;
     }
-    void finish() {  // writes the ring, oldest first
+    void finish() {
         const std::size_t n = std::min<std::size_t>(count_, ring_.size());
         for (std::size_t i = 0; i < n; ++i) out_ << ring_[(count_ - n + i) % ring_.size()];
     }
 
 private:
-    const Bus& bus_;
     std::ostream& out_;
     std::vector<std::string> ring_;
     std::size_t count_ = 0;
@@ -81,8 +78,10 @@ int run_cpm(const CpmArgs& args) {
             return 1;
         }
         trace_file->stream() << trace_csv_header();
-        trace = std::make_unique<CsvTrace>(machine.bus(), trace_file->stream(), args.trace_last);
-        machine.cpu().set_debug_hooks(trace.get());
+        trace = std::make_unique<CsvTrace>(trace_file->stream(), args.trace_last);
+        machine.set_trace([&machine, &trace](const I8085& cpu) {
+            trace->add(trace_csv_line(cpu, [&machine](std::uint16_t a) { return machine.bus().peek(a); }));
+        });
     }
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpu_start = std::clock();

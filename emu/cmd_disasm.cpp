@@ -2,8 +2,6 @@
 //              [--source] [-o FILE]
 // Disassembles a program image as a listing, or as asm85 source that assembles back to the same
 // bytes (emu/disasm_listing.h).
-#include <cctype>
-#include <charconv>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -18,6 +16,7 @@
 #include "emu/disasm_listing.h"
 #include "emu/firmware.h"
 #include "emu/image_loader.h"
+#include "emu/script/parser.h"
 
 namespace alp85::cli {
 
@@ -34,33 +33,16 @@ struct DisasmArgs {
     std::string output;
 };
 
-// 0800H, 800h, 0x800, 2048, or a symbol's name.
+// 0800H, 0x800, 2048 (the script language's numbers), or a symbol's name.
 std::optional<std::uint16_t> parse_address(const std::string& text, const SymbolTable& symbols, std::string& error) {
-    std::string t = text;
-    int base = 10;
-    if (t.size() > 2 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X')) {
-        t = t.substr(2);
-        base = 16;
-    } else if (t.size() > 1 && (t.back() == 'h' || t.back() == 'H') && std::isdigit(static_cast<unsigned char>(t[0]))) {
-        t.pop_back();
-        base = 16;
-    }
-    if (!t.empty() && std::isdigit(static_cast<unsigned char>(t[0]))) {
-        unsigned long v = 0;
-        const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v, base);
-        if (ec == std::errc() && end == t.data() + t.size() && v <= 0xFFFF) return static_cast<std::uint16_t>(v);
+    if (const auto n = script::parse_number(text)) {
+        if (*n >= 0 && *n <= 0xFFFF) return static_cast<std::uint16_t>(*n);
         error = fmt::format("'{}' is not an address (0000H-0FFFFH; e.g. 0800H, 0x800, 2048 or a symbol)", text);
         return std::nullopt;
     }
     if (auto v = symbols.value_of(text)) return v;
     error = fmt::format("'{}' is neither an address nor a known symbol", text);
     return std::nullopt;
-}
-
-std::string lower_extension(const std::string& path) {
-    std::string e = std::filesystem::path(path).extension().string();
-    for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return e;
 }
 
 int run_disasm(const DisasmArgs& args) {
@@ -84,8 +66,6 @@ int run_disasm(const DisasmArgs& args) {
         if (!args.org.empty()) {
             lo.address = parse_address(args.org, symbols, error);
             if (!lo.address) return fail("--org: " + error, 2);
-        } else if (lower_extension(args.image) == ".com") {
-            lo.address = 0x0100;  // CP/M's TPA
         }
         try {
             LoadedImage img = read_image(args.image, lo);

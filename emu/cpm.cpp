@@ -24,6 +24,11 @@ CpmMachine::CpmMachine(Variant variant) : ram_(0x10000, 0), cpu_(bus_, variant) 
     cpu_.regs().sp = bdos_entry();
 }
 
+void CpmMachine::set_trace(std::function<void(const I8085&)> trace) {
+    trace_hooks_.trace = std::move(trace);
+    cpu_.set_debug_hooks(trace_hooks_.trace ? &trace_hooks_ : nullptr);
+}
+
 std::string CpmMachine::load_program(std::span<const std::uint8_t> image) {
     const std::size_t room = bdos_entry() - kTpa;
     if (image.empty()) return "program is empty";

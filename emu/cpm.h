@@ -42,11 +42,23 @@ public:
     // `console`, a character at a time.
     Result run(std::uint64_t max_tstates, const std::function<void(char)>& console);
 
+    // Calls `trace` before every instruction, through the core's debug hooks (none while empty,
+    // so an untraced run keeps the plain loop). Registers are those before the instruction.
+    void set_trace(std::function<void(const I8085&)> trace);
+
     I8085& cpu() { return cpu_; }
     Bus& bus() { return bus_; }
     std::uint16_t bdos_entry() const { return static_cast<std::uint16_t>(ram_[6] | ram_[7] << 8); }
 
 private:
+    struct TraceHooks final : DebugHooks {
+        std::function<void(const I8085&)> trace;
+        bool before_instruction(I8085& cpu) override {
+            trace(cpu);
+            return true;
+        }
+    };
+    TraceHooks trace_hooks_;
     std::vector<std::uint8_t> ram_;
     Bus bus_;
     I8085 cpu_;

@@ -61,12 +61,13 @@ LoadedImage read_image(const std::filesystem::path& path, const LoadOptions& opt
         if (!err.empty()) throw LoadError(fmt::format("{}:{}", path.string(), err));
         img.segments = runs(bytes);
     } else if (ext == ".bin" || ext == ".rom" || ext == ".com") {
-        if (!options.address) throw LoadError(fmt::format("{}: a binary image needs a load address", path.string()));
+        // A CP/M .COM file runs at 0100H, its TPA, unless told otherwise.
+        const auto address = ext == ".com" ? options.address.value_or(0x0100) : options.address;
+        if (!address) throw LoadError(fmt::format("{}: a binary image needs a load address", path.string()));
         const std::string data = read_all(path);
-        if (data.size() + *options.address > 0x10000)
-            throw LoadError(fmt::format("{}: {} bytes at {:04X}H run past FFFFH", path.string(), data.size(),
-                                        *options.address));
-        img.segments.push_back({*options.address, {data.begin(), data.end()}});
+        if (data.size() + *address > 0x10000)
+            throw LoadError(fmt::format("{}: {} bytes at {:04X}H run past FFFFH", path.string(), data.size(), *address));
+        img.segments.push_back({*address, {data.begin(), data.end()}});
     } else {
         throw LoadError(fmt::format("{}: unknown image type '{}' (expected .asm, .hex or .bin)", path.string(), ext));
     }

@@ -30,7 +30,7 @@ struct LoadedImage {
 };
 
 struct LoadOptions {
-    std::optional<std::uint16_t> address;  // where a .bin goes (required for .bin)
+    std::optional<std::uint16_t> address;  // where a .bin goes (required for .bin; a .com defaults to 0100H)
     asm85::Options assembler;              // for .asm
 };
 
