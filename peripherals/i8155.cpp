@@ -362,9 +362,7 @@ void I8155::advance(std::uint64_t now) {
 
 void I8155::save(std::vector<std::uint8_t>& out) const {
     ByteWriter w(out);
-    w.u8('S');
-    w.u8('5');
-    w.u8(kSnapshotVersion);
+    w.header('S', '5', kSnapshotVersion);
     w.bytes(s_.ram);
     w.u8(s_.command);
     for (auto v : s_.latch) w.u8(v);
@@ -392,8 +390,7 @@ void I8155::save(std::vector<std::uint8_t>& out) const {
 
 void I8155::load(std::span<const std::uint8_t> in) {
     ByteReader r(in, "i8155");
-    if (r.u8() != 'S' || r.u8() != '5') r.fail("not an 8155 snapshot");
-    if (r.u8() != kSnapshotVersion) r.fail("unsupported version");
+    r.expect_header('S', '5', kSnapshotVersion);
     State s;
     r.bytes(s.ram);
     s.command = r.u8();

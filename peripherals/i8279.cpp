@@ -426,9 +426,7 @@ void I8279::command(std::uint8_t value, std::uint64_t now) {
 
 void I8279::save(std::vector<std::uint8_t>& out) const {
     ByteWriter w(out);
-    w.u8('K');
-    w.u8('9');
-    w.u8(kSnapshotVersion);
+    w.header('K', '9', kSnapshotVersion);
     w.bytes(s_.display_ram);
     w.bytes(s_.fifo);
     w.u8(s_.fifo_head);
@@ -469,8 +467,7 @@ void I8279::save(std::vector<std::uint8_t>& out) const {
 
 void I8279::load(std::span<const std::uint8_t> in) {
     ByteReader r(in, "i8279");
-    if (r.u8() != 'K' || r.u8() != '9') r.fail("not an 8279 snapshot");
-    if (r.u8() != kSnapshotVersion) r.fail("unsupported version");
+    r.expect_header('K', '9', kSnapshotVersion);
     State s;
     r.bytes(s.display_ram);
     r.bytes(s.fifo);

@@ -61,16 +61,13 @@ std::uint8_t Keypad::return_lines(std::uint8_t scan_lines) const {
 
 void Keypad::save(std::vector<std::uint8_t>& out) const {
     ByteWriter w(out);
-    w.u8('K');
-    w.u8('P');
-    w.u8(1);
+    w.header('K', 'P', 1);
     w.bytes(closed_);
 }
 
 void Keypad::load(std::span<const std::uint8_t> in) {
     ByteReader r(in, "keypad");
-    if (r.u8() != 'K' || r.u8() != 'P') r.fail("not a keypad snapshot");
-    if (r.u8() != 1) r.fail("unsupported version");
+    r.expect_header('K', 'P', 1);
     std::array<std::uint8_t, 8> rows{};
     r.bytes(rows);
     r.expect_end();

@@ -25,6 +25,12 @@ public:
     void u32(std::uint32_t v) { for (int i = 0; i < 4; ++i) u8(static_cast<std::uint8_t>(v >> (8 * i))); }
     void u64(std::uint64_t v) { for (int i = 0; i < 8; ++i) u8(static_cast<std::uint8_t>(v >> (8 * i))); }
     void bytes(std::span<const std::uint8_t> b) { out_.insert(out_.end(), b.begin(), b.end()); }
+    // Every part's state opens with two tag characters and a version byte.
+    void header(char a, char b, std::uint8_t version) {
+        u8(static_cast<std::uint8_t>(a));
+        u8(static_cast<std::uint8_t>(b));
+        u8(version);
+    }
 
 private:
     std::vector<std::uint8_t>& out_;
@@ -55,6 +61,11 @@ public:
     }
     void bytes(std::span<std::uint8_t> dst) {
         for (auto& b : dst) b = u8();
+    }
+    // The header ByteWriter::header wrote; fails with "not a <what> snapshot" or the version.
+    void expect_header(char a, char b, std::uint8_t version) {
+        if (u8() != static_cast<std::uint8_t>(a) || u8() != static_cast<std::uint8_t>(b)) fail("not " + what_ + " state");
+        if (u8() != version) fail("unsupported version");
     }
     void expect_end() const {
         if (pos_ != in_.size()) fail("trailing bytes");

@@ -1,13 +1,12 @@
 #include "emu/script/session.h"
-#include "emu/trace_csv.h"
 
 #include <algorithm>
 #include <set>
 
 #include <fmt/format.h>
 
-#include "asm/disasm.h"
 #include "emu/snapshot_file.h"
+#include "emu/trace_csv.h"
 #include "peripherals/seven_segment.h"
 
 namespace alp85::script {
