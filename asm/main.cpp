@@ -6,7 +6,7 @@
 
 #include "asm/asm85.h"
 #include "asm/lexer.h"
-#include "emu/atomic_file.h"
+#include "emu/util/atomic_file.h"
 
 namespace {
 
@@ -31,7 +31,7 @@ std::optional<std::uint32_t> parse_address(const std::string& s) {
     return v;
 }
 
-// Written whole or not at all, through devices and links (emu/atomic_file.h).
+// Written whole or not at all, through devices and links (emu/util/atomic_file.h).
 bool write_file(const std::string& path, std::string_view bytes) {
     try {
         alp85::write_atomic(path, bytes);

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <bit>
 
-#include "peripherals/snapshot.h"
+#include "emu/util/state_io.h"
 
 namespace alp85::periph {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "peripherals/snapshot.h"
+#include "emu/util/state_io.h"
 
 namespace alp85::periph {
 

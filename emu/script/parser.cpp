@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "asm/isa.h"
-#include "emu/board_map.h"
+#include "emu/board/board_map.h"
 
 namespace alp85::script {
 namespace {

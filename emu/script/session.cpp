@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "emu/snapshot_file.h"
-#include "emu/trace_csv.h"
+#include "emu/board/snapshot_file.h"
+#include "emu/debug/trace_csv.h"
 #include "peripherals/seven_segment.h"
 
 namespace alp85::script {

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "emu/firmware.h"
-#include "emu/image_loader.h"
-#include "emu/machine.h"
+#include "emu/program/firmware.h"
+#include "emu/program/image_loader.h"
+#include "emu/board/machine.h"
 #include "emu/script/command.h"
 #include "emu/script/parser.h"
 

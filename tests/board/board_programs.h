@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "emu/image_loader.h"
-#include "emu/machine.h"
+#include "emu/program/image_loader.h"
+#include "emu/board/machine.h"
 
 namespace alp85::test {
 

@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "board_programs.h"
-#include "emu/snapshot_file.h"
+#include "emu/board/snapshot_file.h"
 
 namespace alp85::test {
 namespace {

@@ -2,7 +2,7 @@
 // and the two output forms. Expected texts come from the opcode encodings of the 8085 data sheet.
 #include <gtest/gtest.h>
 
-#include "emu/disasm_listing.h"
+#include "emu/program/disasm_listing.h"
 
 namespace alp85::test {
 namespace {

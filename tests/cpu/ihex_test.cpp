@@ -4,8 +4,8 @@
 #include <map>
 #include <vector>
 
-#include "emu/cpm.h"
-#include "emu/ihex.h"
+#include "emu/cpm/cpm.h"
+#include "emu/program/ihex.h"
 
 namespace alp85::test {
 namespace {

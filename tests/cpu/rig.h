@@ -5,8 +5,8 @@
 #include <initializer_list>
 #include <vector>
 
-#include "emu/bus.h"
-#include "emu/i8085.h"
+#include "emu/core/bus.h"
+#include "emu/core/i8085.h"
 
 namespace alp85::test {
 

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "emu/symbols.h"
+#include "emu/program/symbols.h"
 #include "tests/cpu/rig.h"
 
 namespace alp85::test {

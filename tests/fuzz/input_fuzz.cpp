@@ -9,12 +9,12 @@
 #include <string_view>
 #include <vector>
 
-#include "emu/disasm_listing.h"
-#include "emu/ihex.h"
-#include "emu/machine.h"
+#include "emu/program/disasm_listing.h"
+#include "emu/program/ihex.h"
+#include "emu/board/machine.h"
 #include "emu/script/parser.h"
-#include "emu/snapshot_file.h"
-#include "emu/symbols.h"
+#include "emu/board/snapshot_file.h"
+#include "emu/program/symbols.h"
 
 namespace {
 

@@ -10,8 +10,8 @@
 #include <span>
 #include <string>
 
-#include "emu/image_loader.h"
-#include "emu/machine.h"
+#include "emu/program/image_loader.h"
+#include "emu/board/machine.h"
 #include "monitor_embed.h"
 
 namespace alp85::test {

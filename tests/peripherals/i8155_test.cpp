@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "peripherals/snapshot.h"
+#include "emu/util/state_io.h"
 
 namespace {
 
@@ -415,13 +415,13 @@ TEST_F(I8155Test, LoadRejectsBadSnapshots) {
     chip.save(blob);
     I8155 other;
     std::vector<std::uint8_t> truncated(blob.begin(), blob.end() - 1);
-    EXPECT_THROW(other.load(truncated), alp85::periph::SnapshotError);
+    EXPECT_THROW(other.load(truncated), alp85::SnapshotError);
     std::vector<std::uint8_t> wrong = blob;
     wrong[0] = 'X';
-    EXPECT_THROW(other.load(wrong), alp85::periph::SnapshotError);
+    EXPECT_THROW(other.load(wrong), alp85::SnapshotError);
     std::vector<std::uint8_t> extra = blob;
     extra.push_back(0);
-    EXPECT_THROW(other.load(extra), alp85::periph::SnapshotError);
+    EXPECT_THROW(other.load(extra), alp85::SnapshotError);
 }
 
 TEST_F(I8155Test, LoadRejectsATimerPeriodInTheFuture) {
@@ -438,7 +438,7 @@ TEST_F(I8155Test, LoadRejectsATimerPeriodInTheFuture) {
     EXPECT_EQ(blob[at], 7);  // the second period started at 7 (count 7)
     blob[at] = 200;          // a period starting after `now` (9)
     I8155 other;
-    EXPECT_THROW(other.load(blob), alp85::periph::SnapshotError);
+    EXPECT_THROW(other.load(blob), alp85::SnapshotError);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 #include <array>
 #include <vector>
 
-#include "peripherals/snapshot.h"
+#include "emu/util/state_io.h"
 
 namespace {
 
@@ -584,17 +584,17 @@ TEST_F(I8279Test, LoadRefusesADebounceThatCouldNeverEnd) {
     }
     ASSERT_EQ(matches, 1);
     I8279 other;
-    EXPECT_THROW(other.load(bad), alp85::periph::SnapshotError);
+    EXPECT_THROW(other.load(bad), alp85::SnapshotError);
 }
 
 TEST_F(I8279Test, LoadRejectsBadSnapshots) {
     std::vector<std::uint8_t> blob;
     chip.save(blob);
     I8279 other;
-    EXPECT_THROW(other.load(std::vector<std::uint8_t>(blob.begin(), blob.end() - 3)), alp85::periph::SnapshotError);
+    EXPECT_THROW(other.load(std::vector<std::uint8_t>(blob.begin(), blob.end() - 3)), alp85::SnapshotError);
     auto bad = blob;
     bad[2] = 99;  // version
-    EXPECT_THROW(other.load(bad), alp85::periph::SnapshotError);
+    EXPECT_THROW(other.load(bad), alp85::SnapshotError);
 }
 
 }  // namespace

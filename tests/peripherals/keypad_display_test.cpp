@@ -9,7 +9,7 @@
 #include "peripherals/i8279.h"
 #include "peripherals/keypad.h"
 #include "peripherals/seven_segment.h"
-#include "peripherals/snapshot.h"
+#include "emu/util/state_io.h"
 
 namespace {
 
@@ -80,7 +80,7 @@ TEST(Keypad, SnapshotRoundTripAndRejection) {
     copy.load(blob);
     EXPECT_TRUE(copy.is_pressed(Key::Step));
     blob.back() = 0x01;  // row 7: no keys there
-    EXPECT_THROW(copy.load(blob), alp85::periph::SnapshotError);
+    EXPECT_THROW(copy.load(blob), alp85::SnapshotError);
 }
 
 TEST(Keypad, KeyThroughThe8279GivesItsCode) {

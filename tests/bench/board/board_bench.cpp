@@ -4,7 +4,7 @@
 // bench board` prints the same comparison.
 #include <benchmark/benchmark.h>
 
-#include "emu/bench_board.h"
+#include "emu/bench/bench_board.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // to compare with `alp85 bench cpu`.
 #include <benchmark/benchmark.h>
 
-#include "emu/bench_cpu.h"
+#include "emu/bench/bench_cpu.h"
 
 namespace {
 

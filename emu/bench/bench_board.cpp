@@ -1,0 +1,31 @@
+#include "emu/bench/bench_board.h"
+
+#include <algorithm>
+
+#include "board_bench_program_embed.h"
+
+namespace alp85 {
+
+BoardBench::BoardBench() : ram_(0x10000, 0), bare_cpu_(bus_) {
+    const auto* program = bench::kBoardBenchProgram;
+    const auto size = bench::kBoardBenchProgram_size;
+    const auto origin = bench::kBoardBenchProgram_origin;
+    std::copy_n(program, size, ram_.begin() + origin);
+    bus_.map_ram(0, 0x10000, ram_.data());
+    bare_cpu_.reset();
+    bare_cpu_.regs().pc = origin;
+
+    board_.load(origin, std::span(program, size));
+    board_.reset();
+    board_.cpu().regs().pc = origin;
+}
+
+std::uint64_t BoardBench::run_bare(std::uint64_t tstates) { return bare_cpu_.run(bare_cpu_.cycles() + tstates); }
+
+std::uint64_t BoardBench::run_board(std::uint64_t tstates) {
+    const std::uint64_t before = board_.now();
+    board_.run_for(tstates);
+    return board_.now() - before;
+}
+
+}  // namespace alp85

@@ -1,0 +1,16 @@
+#include "emu/bench/bench_cpu.h"
+
+#include <algorithm>
+
+#include "cpu_bench_program_embed.h"
+
+namespace alp85 {
+
+CpuBench::CpuBench(Variant variant) : ram_(0x10000, 0), cpu_(bus_, variant) {
+    std::copy_n(bench::kCpuBenchProgram, bench::kCpuBenchProgram_size, ram_.begin() + bench::kCpuBenchProgram_origin);
+    bus_.map_ram(0, 0x10000, ram_.data());
+}
+
+std::uint64_t CpuBench::run(std::uint64_t tstates) { return cpu_.run(cpu_.cycles() + tstates); }
+
+}  // namespace alp85

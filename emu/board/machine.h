@@ -1,0 +1,158 @@
+// The ALP 85 as one object: CPU, bus, 8155, 8279, keypad and display wired as emu/board_map.h
+// declares, with a scheduler that runs the CPU in long batches up to the next peripheral event or
+// outside input. Every front end (CLI, script runner, debugger, GUI) drives this class; none of
+// them re-implements the machine.
+//
+// Time is the CPU's T-state counter (3.072 MHz). Outside inputs (keys, RESET, VECT INTR) are
+// events stamped in that time, so the same inputs always give the same run.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "emu/board/board_map.h"
+#include "emu/core/bus.h"
+#include "emu/core/i8085.h"
+#include "emu/core/image.h"
+#include "emu/board/input_queue.h"
+#include "peripherals/i8155.h"
+#include "peripherals/i8279.h"
+#include "peripherals/keypad.h"
+
+namespace alp85 {
+
+class Machine {
+public:
+    struct Options {
+        Variant cpu = Variant::I8085;
+    };
+
+    enum class Stop : std::uint8_t {
+        Deadline,    // the requested time was reached
+        Condition,   // the caller's condition became true
+        Breakpoint,  // the PC reached a breakpoint (the instruction there has not run)
+        Watchpoint,  // a watched address was accessed (after the instruction)
+    };
+
+    Machine();
+    explicit Machine(Options options);
+    Machine(const Machine&) = delete;
+    Machine& operator=(const Machine&) = delete;
+    ~Machine();
+
+    // ---- memory ------------------------------------------------------------------------------
+    // Places bytes into EPROM or RAM as a programmer or loader would (EPROMs are writable here).
+    // Throws std::out_of_range naming the first address that is not on the board.
+    void load(std::uint16_t address, std::span<const std::uint8_t> bytes);
+    void load(const std::vector<ImageSegment>& image);
+    // Bus view without side effects (reads FFH where nothing answers) and a debugger poke into
+    // RAM or EPROM storage (false where nothing is mapped).
+    std::uint8_t peek(std::uint16_t address) const { return bus_.peek(address); }
+    bool poke(std::uint16_t address, std::uint8_t value);
+    std::span<std::uint8_t> storage(board::Memory id);
+
+    // ---- control -----------------------------------------------------------------------------
+    // RESET IN: the CPU, the 8155 and the 8279 reset now; memory and time are kept.
+    void reset();
+    std::uint64_t now() const { return cpu_.cycles(); }
+    static constexpr double kSecondsPerTState = 1.0 / board::kCpuHz;
+    static constexpr std::uint64_t tstates_from_ms(double ms) {
+        return static_cast<std::uint64_t>(ms * board::kCpuHz / 1000.0 + 0.5);
+    }
+
+    // Runs until `until` (whole instructions: it may end a few T-states after), a breakpoint,
+    // a watchpoint, or — checked after every batch and every OUT — `condition` returns true.
+    Stop run_until(std::uint64_t until, const std::function<bool()>& condition = {});
+    Stop run_for(std::uint64_t tstates, const std::function<bool()>& condition = {}) {
+        return run_until(now() + tstates, condition);
+    }
+    // Runs until the PC reaches `pc` (Stop::Breakpoint) or until `until` (Stop::Deadline). Only
+    // `pc` stops it: the breakpoints are not armed meanwhile (a debugger's "run to here").
+    Stop run_to(std::uint16_t pc, std::uint64_t until);
+    // Exactly one instruction (or interrupt acknowledge, or idle T-state when halted),
+    // ignoring breakpoints at the current PC.
+    void step();
+
+    // ---- outside inputs ----------------------------------------------------------------------
+    void key_at(periph::Key key, bool down, std::uint64_t at);
+    void vect_intr_at(bool down, std::uint64_t at);
+    void reset_key_at(bool down, std::uint64_t at);
+    const InputQueue& inputs() const { return inputs_; }
+    const periph::Keypad& keypad() const { return keypad_; }
+    // Port B input pins of the 8155 (the transducers, later); unconnected inputs read high.
+    void set_port_b_source(std::function<std::uint8_t(std::uint64_t now)> source);
+
+    // ---- display -----------------------------------------------------------------------------
+    std::array<std::uint8_t, 8> display() const;  // segment bytes, leftmost digit first
+    std::string display_text() const;             // nearest character per digit, '.' for dp
+    std::array<std::string, 7> display_art() const;
+
+    // ---- debugging -----------------------------------------------------------------------------
+    void add_breakpoint(std::uint16_t pc);
+    void remove_breakpoint(std::uint16_t pc);
+    void clear_breakpoints();
+    const std::vector<std::uint16_t>& breakpoints() const { return breakpoints_; }
+    void add_watchpoint(std::uint16_t address);  // any data read or write of the address
+    void clear_watchpoints();
+    // Called before every instruction while set (a trace); like breakpoints, it puts the CPU on its
+    // debug path only while installed.
+    void set_trace(std::function<void(const I8085&)> trace);
+    // What stopped the last run at a watchpoint: the address accessed.
+    std::uint16_t watch_hit() const { return watch_hit_; }
+
+    // ---- parts, for inspection -------------------------------------------------------------------
+    I8085& cpu() { return cpu_; }
+    const I8085& cpu() const { return cpu_; }
+    Bus& bus() { return bus_; }
+    periph::I8155& rio() { return rio_; }  // the 8155 (RAM-I/O-timer)
+    const periph::I8155& rio() const { return rio_; }
+    periph::I8279& kdc() { return kdc_; }  // the 8279 (keyboard/display controller)
+    const periph::I8279& kdc() const { return kdc_; }
+
+    // ---- snapshots -------------------------------------------------------------------------------
+    // The whole machine (CPU, memories, chips, keypad, pending inputs, breakpoints are not part of
+    // it) to a versioned file, written atomically; load refuses an incompatible or corrupt file
+    // with a SnapshotError and leaves the machine unchanged.
+    void save_snapshot(const std::filesystem::path& path) const;
+    void load_snapshot(const std::filesystem::path& path);
+    std::vector<std::uint8_t> snapshot_bytes() const;
+    void restore_bytes(const std::vector<std::uint8_t>& bytes);
+
+private:
+    class Hooks;
+    class Port8279;
+    class Port8155;
+
+    void wire();
+    void deliver_inputs(std::uint64_t now);
+    void apply(const InputEvent& e);
+    void sync_chips(std::uint64_t now);
+    void update_hooks();
+
+    Options options_;
+    std::array<std::uint8_t, 0x0800> monitor_{};
+    std::array<std::uint8_t, 0x0800> user_{};
+    std::array<std::uint8_t, 0x1000> ram_{};
+    Bus bus_;
+    I8085 cpu_;
+    periph::I8155 rio_;
+    periph::I8279 kdc_;
+    periph::Keypad keypad_;
+    InputQueue inputs_;
+    std::function<std::uint8_t(std::uint64_t)> port_b_source_;
+
+    std::unique_ptr<Port8279> port8279_;
+    std::unique_ptr<Port8155> port8155_;
+    std::unique_ptr<Hooks> hooks_;
+    std::vector<std::uint16_t> breakpoints_;
+    std::vector<std::uint16_t> watchpoints_;
+    std::uint16_t watch_hit_ = 0;
+};
+
+}  // namespace alp85

@@ -1,0 +1,134 @@
+// alp85 cpm PROGRAM.COM [--cpu 8080|8085] [--max-cycles N] [--stats] [--trace OUT.csv [--trace-last N]]
+// Runs a CP/M .COM program (e.g. the period 8080/8085 CPU diagnostics) on the CP/M machine.
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "emu/util/atomic_file.h"
+#include "emu/cli/commands.h"
+#include "emu/cpm/cpm.h"
+#include "emu/debug/trace_csv.h"
+
+namespace alp85::cli {
+
+namespace {
+struct CpmArgs {
+    std::string program;
+    std::string cpu = "8085";
+    std::uint64_t max_cycles = 0;
+    bool stats = false;
+    std::string trace;
+    std::size_t trace_last = 0;  // 0: every instruction
+};
+
+// The CSV trace: streamed, or the last N lines kept in a ring (what a failing diagnostic did
+// just before it stopped), written oldest first by finish().
+class CsvTrace {
+public:
+    CsvTrace(std::ostream& out, std::size_t last) : out_(out), ring_(last) {}
+    void add(std::string line) {
+        if (ring_.empty())
+            out_ << line;
+        else
+            ring_[count_ % ring_.size()] = std::move(line);
+        ++count_;
+    }
+    void finish() {
+        const std::size_t n = std::min<std::size_t>(count_, ring_.size());
+        for (std::size_t i = 0; i < n; ++i) out_ << ring_[(count_ - n + i) % ring_.size()];
+    }
+
+private:
+    std::ostream& out_;
+    std::vector<std::string> ring_;
+    std::size_t count_ = 0;
+};
+
+int run_cpm(const CpmArgs& args) {
+    std::ifstream in(args.program, std::ios::binary);
+    if (!in) {
+        std::fprintf(stderr, "alp85 cpm: cannot open %s\n", args.program.c_str());
+        return 1;
+    }
+    std::vector<std::uint8_t> image((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) {
+        std::fprintf(stderr, "alp85 cpm: cannot read %s\n", args.program.c_str());
+        return 1;
+    }
+    const Variant variant = args.cpu == "8080" ? Variant::I8080 : Variant::I8085;
+    CpmMachine machine(variant);
+    if (const std::string err = machine.load_program(image); !err.empty()) {
+        std::fprintf(stderr, "alp85 cpm: %s: %s\n", args.program.c_str(), err.c_str());
+        return 1;
+    }
+    std::unique_ptr<AtomicOutput> trace_file;
+    std::unique_ptr<CsvTrace> trace;
+    if (!args.trace.empty()) {
+        try {
+            trace_file = std::make_unique<AtomicOutput>(args.trace);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "alp85 cpm: trace: %s\n", e.what());
+            return 1;
+        }
+        trace_file->stream() << trace_csv_header();
+        trace = std::make_unique<CsvTrace>(trace_file->stream(), args.trace_last);
+        machine.set_trace([&machine, &trace](const I8085& cpu) {
+            trace->add(trace_csv_line(cpu, [&machine](std::uint16_t a) { return machine.bus().peek(a); }));
+        });
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpu_start = std::clock();
+    const CpmMachine::Result r = machine.run(args.max_cycles, [](char ch) {
+        std::fputc(ch, stdout);
+        if (ch == '\n') std::fflush(stdout);
+    });
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    std::fflush(stdout);
+    if (trace) {  // written however the run ended: that is when a trace is wanted most
+        trace->finish();
+        try {
+            trace_file->commit();
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "alp85 cpm: trace: %s\n", e.what());
+            return 1;
+        }
+    }
+    if (!r.message.empty()) std::fprintf(stderr, "\nalp85 cpm: %s: %s\n", args.program.c_str(), r.message.c_str());
+    if (args.stats) {
+        std::fprintf(stderr,
+                     "\ncpu:          i%s\ninstructions: %llu\nT-states:     %llu\nwall time:    %.3f s (process CPU "
+                     "time %.3f s)\n",
+                     args.cpu.c_str(), static_cast<unsigned long long>(r.instructions),
+                     static_cast<unsigned long long>(r.tstates), seconds, cpu_seconds);
+        if (seconds > 0)
+            std::fprintf(stderr, "T-states/s:   %.4g (%.1f MHz equivalent)\n", r.tstates / seconds,
+                         r.tstates / seconds / 1e6);
+    }
+    return r.exit_status;
+}
+}  // namespace
+
+void add_cpm_command(CLI::App& app, int& status) {
+    auto args = std::make_shared<CpmArgs>();
+    CLI::App* cmd = app.add_subcommand("cpm", "Run a CP/M .COM program (loaded at 0100H) with a small BDOS");
+    cmd->add_option("program", args->program, "the .COM file")->required();
+    cmd->add_option("--cpu", args->cpu, "processor variant")->check(CLI::IsMember({"8080", "8085"}))->capture_default_str();
+    cmd->add_option("--max-cycles", args->max_cycles, "stop with an error after N T-states (0 = no limit)");
+    cmd->add_flag("--stats", args->stats, "print instructions, T-states, wall time and T-states per second");
+    auto* trace = cmd->add_option("--trace", args->trace, "write every executed instruction as CSV (T-state, PC, "
+                                                          "opcode, disassembly, registers before it)");
+    cmd->add_option("--trace-last", args->trace_last, "with --trace: only the last N instructions of the run")
+        ->needs(trace)
+        ->check(CLI::Range(std::size_t{1}, std::size_t{10'000'000}));  // the ring is kept in memory
+    cmd->callback([args, &status] { status = run_cpm(*args); });
+}
+
+}  // namespace alp85::cli

@@ -1,0 +1,96 @@
+// alp85 script FILE... [--junit OUT.xml] [--trace OUT.csv] [-v]: headless firmware tests
+// (docs/scripting.md). Exit status: 0 all passed, 1 an expectation failed, 2 a script error.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "emu/util/atomic_file.h"
+#include "emu/cli/commands.h"
+#include "emu/program/firmware.h"
+#include "emu/script/runner.h"
+
+namespace alp85::cli {
+
+void add_script_command(CLI::App& app, int& status) {
+    struct Args {
+        std::vector<std::string> files;
+        std::string junit, trace;
+        bool verbose = false;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("script", "Run headless test scripts against the ALP 85 (docs/scripting.md)");
+    cmd->add_option("files", args->files, "Script files (.alp)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--junit", args->junit, "Write a JUnit XML report");
+    cmd->add_option("--trace", args->trace, "Write every executed instruction as CSV");
+    cmd->add_flag("-v,--verbose", args->verbose, "Echo each command with the simulated time");
+    cmd->footer(
+        "Examples:\n"
+        "  alp85 script scripts/monitor/*.alp\n"
+        "  alp85 script test.alp --junit report.xml -v");
+    cmd->callback([args, &status] {
+        script::RunnerOptions o;
+        if (firmware::have_monitor()) o.monitor_rom = firmware::monitor;
+        o.out = &std::cout;
+        o.verbose = args->verbose;
+        // Every script is checked before any runs: a script error stops everything (status 2).
+        std::vector<std::vector<script::Command>> programs(args->files.size());
+        std::vector<script::ParseError> errors;
+        for (std::size_t i = 0; i < args->files.size(); ++i) script::prepare(args->files[i], programs[i], errors, o);
+        if (!errors.empty()) {
+            for (const auto& e : errors) std::cerr << e.format();
+            std::cerr << fmt::format("alp85 script: {} error(s); nothing was run\n", errors.size());
+            status = 2;
+            return;
+        }
+        // The trace appears whole when the run ends (passed or failed), or not at all.
+        std::unique_ptr<AtomicOutput> trace;
+        if (!args->trace.empty()) {
+            try {
+                trace = std::make_unique<AtomicOutput>(args->trace);
+            } catch (const std::exception& e) {
+                std::cerr << "alp85 script: trace: " << e.what() << '\n';
+                status = 2;
+                return;
+            }
+            o.trace = &trace->stream();
+        }
+        std::vector<script::ScriptResult> results;
+        int failed = 0;
+        for (std::size_t i = 0; i < args->files.size(); ++i) {
+            results.push_back(script::execute(args->files[i], programs[i], o));
+            const auto& r = results.back();
+            if (r.passed) {
+                std::cout << fmt::format("PASS {} ({} commands, {} simulated, {:.3f} s)\n", r.file, r.commands,
+                                         script::Session::format_time(r.tstates), r.seconds);
+            } else {
+                ++failed;
+                std::cout << fmt::format("FAIL {}\n{}\n", r.file, r.failure);
+            }
+        }
+        std::cout << fmt::format("{} passed, {} failed\n", results.size() - failed, failed);
+        if (trace) {
+            try {
+                trace->commit();
+            } catch (const std::exception& e) {
+                std::cerr << "alp85 script: trace: " << e.what() << '\n';
+                status = 2;
+                return;
+            }
+        }
+        if (!args->junit.empty()) {
+            try {
+                write_atomic(args->junit, script::junit_xml(results));
+            } catch (const std::exception& e) {
+                std::cerr << "alp85 script: " << e.what() << '\n';
+                status = 2;
+                return;
+            }
+        }
+        status = failed ? 1 : 0;
+    });
+}
+
+}  // namespace alp85::cli

@@ -1,0 +1,26 @@
+// alp85: the ALP 85 emulator's command-line front end.
+#include <cstdio>
+#include <exception>
+
+#include "emu/cli/commands.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"ALP85: emulator of the ALP 85 Intel 8085 board"};
+    app.require_subcommand(1);
+    int status = 0;
+    alp85::cli::add_cpm_command(app, status);
+    alp85::cli::add_bench_command(app, status);
+    alp85::cli::add_disasm_command(app, status);
+    alp85::cli::add_run_command(app, status);
+    alp85::cli::add_script_command(app, status);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "alp85: %s\n", e.what());
+        return 1;
+    }
+    return status;
+}

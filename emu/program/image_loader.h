@@ -1,0 +1,42 @@
+// Loading programs into the machine: .asm (assembled on the fly by asm85's library), .hex (Intel
+// HEX) and .bin (raw, at a given address). Every front end loads through here.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "asm/asm85.h"
+#include "emu/board/machine.h"
+
+namespace alp85 {
+
+// A load that failed: the message names the file and, for sources, every error as
+// file:line:col (asm85's diagnostics).
+class LoadError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct LoadedImage {
+    std::vector<ImageSegment> segments;
+    std::vector<asm85::Symbol> symbols;      // .asm only
+    std::optional<std::uint16_t> start;      // END's operand (.asm) or a start record (.hex)
+    std::optional<asm85::Result> assembly;   // .asm only: the whole result (line map, listing)
+    std::vector<std::string> warnings;       // formatted asm85 warnings
+};
+
+struct LoadOptions {
+    std::optional<std::uint16_t> address;  // where a .bin goes (required for .bin; a .com defaults to 0100H)
+    asm85::Options assembler;              // for .asm
+};
+
+// Reads and converts the file (by its extension; anything else is refused). Throws LoadError.
+LoadedImage read_image(const std::filesystem::path& path, const LoadOptions& options = {});
+// read_image, then Machine::load; nothing is placed when any byte falls off the board.
+LoadedImage load_image(Machine& machine, const std::filesystem::path& path, const LoadOptions& options = {});
+
+}  // namespace alp85

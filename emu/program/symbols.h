@@ -1,0 +1,49 @@
+// Symbols from asm85's JSON map ("alp85-asm-map", version 1) for the disassembler and debugger,
+// and disassembly of emulated memory with those symbols. The disassembler itself is asm85's
+// (asm/disasm.h, over the shared opcode table); this is the thin layer that feeds it names.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+
+#include "asm/disasm.h"
+#include "emu/core/bus.h"
+#include "emu/core/i8085.h"
+
+namespace alp85 {
+
+class SymbolTable {
+public:
+    // Adds the symbols of one map (several maps may be loaded). Returns "" or an error message.
+    std::string load_map_text(std::string_view json);
+    std::string load_map_file(const std::string& path);
+    // One symbol; kind is asm85's: "label", "equ" or "set" name addresses, others only values.
+    void add(std::string_view name, std::uint16_t value, std::string_view kind);
+
+    // The name for an address: a label if one is defined there, otherwise an EQU/SET name with
+    // that value; the first defined wins among equals. nullopt if none.
+    std::optional<std::string> name_at(std::uint16_t addr) const;
+    // The name for a 16-bit immediate (LXI): a label, or an EQU/SET name only for values above
+    // 00FFH, since small EQUs are usually 8-bit constants (KMODE EQU 0 would name LXI H,0).
+    std::optional<std::string> data_name_at(std::uint16_t value) const;
+    // A label defined exactly here (for "LOOP:" lines in a listing).
+    std::optional<std::string> label_at(std::uint16_t addr) const;
+    std::optional<std::uint16_t> value_of(std::string_view name) const;  // case-insensitive
+    std::size_t size() const { return by_name_.size(); }
+    const std::unordered_map<std::string, std::uint16_t>& names() const { return by_name_; }  // upper case
+
+private:
+    std::map<std::uint16_t, std::string> labels_, equates_;
+    std::unordered_map<std::string, std::uint16_t> by_name_;
+};
+
+// One instruction at `addr`, as the given variant decodes it, with a16/d16 operands named from
+// `symbols` (may be null). Reads memory with Bus::peek (no device side effects).
+asm85::Disassembly disassemble(const Bus& bus, std::uint16_t addr, Variant variant,
+                               const SymbolTable* symbols = nullptr);
+
+}  // namespace alp85
