@@ -1,0 +1,47 @@
+// A part of the board beside the CPU: a chip, the keypad, the machine tool. The Machine keeps
+// its parts in one list; its scheduler, RESET and snapshots loop over that list, so a new part
+// is added in one place (emu/board/machine.cpp, Machine::Machine) plus its wiring.
+//
+// Time is the CPU's T-state count. A part catches up lazily when advance(now) is called (the
+// machine calls it before every access, after every batch of instructions and before a snapshot)
+// and tells the scheduler, through next_event(), the earliest T-state at which it would change
+// something the CPU sees without being asked (an interrupt line, a pin the CPU does not poll).
+// A part knows nothing of the board it sits on: the machine wires its pins.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string_view>
+
+#include "emu/util/state_io.h"
+
+namespace alp85::periph {
+
+class Part {
+public:
+    static constexpr std::uint64_t kNever = std::numeric_limits<std::uint64_t>::max();
+
+    virtual ~Part() = default;
+
+    // For the debugger and messages: "8155", "8279", "keypad", "machine tool".
+    virtual std::string_view name() const = 0;
+    // The snapshot section that holds this part's state: exactly four characters, and the
+    // version of that state's layout (bump it when the field list changes).
+    virtual std::string_view tag() const = 0;
+    virtual std::uint8_t state_version() const = 0;
+
+    // RESET OUT of the CPU (power-on and the RESET key). Parts without a reset input ignore it.
+    virtual void reset(std::uint64_t now) = 0;
+    // Catches up to `now` (non-decreasing).
+    virtual void advance(std::uint64_t now) = 0;
+    virtual std::uint64_t next_event() const { return kNever; }
+    // The T-state the part has caught up to (a snapshot requires it to equal the CPU's).
+    virtual std::uint64_t now() const = 0;
+
+    // The part's state, listed once (StateWriter / StateReader, emu/util/state_io.h). load_state
+    // throws SnapshotError on a damaged or inconsistent record and then leaves the part unchanged.
+    virtual void save_state(StateWriter& w) const = 0;
+    virtual void load_state(StateReader& r) = 0;
+};
+
+}  // namespace alp85::periph
