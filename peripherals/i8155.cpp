@@ -9,7 +9,6 @@ namespace alp85::periph {
 
 namespace {
 constexpr std::uint16_t kCountMask = 0x3FFF;
-constexpr std::uint8_t kSnapshotVersion = 1;
 
 bool is_square(I8155::TimerMode m) {
     return m == I8155::TimerMode::SingleSquare || m == I8155::TimerMode::ContinuousSquare;
@@ -360,68 +359,14 @@ void I8155::advance(std::uint64_t now) {
 
 // ---- snapshot ----------------------------------------------------------------------------------
 
-void I8155::save(std::vector<std::uint8_t>& out) const {
-    ByteWriter w(out);
-    w.header('S', '5', kSnapshotVersion);
-    w.bytes(s_.ram);
-    w.u8(s_.command);
-    for (auto v : s_.latch) w.u8(v);
-    for (auto v : s_.pins) w.u8(v);
-    for (auto v : s_.strobe_latch) w.u8(v);
-    for (int i = 0; i < 2; ++i) {
-        w.boolean(s_.intr_ff[i]);
-        w.boolean(s_.bf[i]);
-        w.boolean(s_.stb[i]);
-    }
-    w.boolean(s_.timer_flag);
-    w.u16(s_.count_length);
-    w.boolean(s_.counted);
-    w.boolean(s_.running);
-    w.u16(s_.count);
-    w.u8(static_cast<std::uint8_t>(s_.mode));
-    w.u64(s_.period_start);
-    w.boolean(s_.pending_start);
-    w.boolean(s_.stop_after_tc);
-    w.u16(s_.held_value);
-    w.boolean(s_.timer_out);
-    w.u64(s_.pulse_end);
-    w.u64(s_.now);
-}
-
-void I8155::load(std::span<const std::uint8_t> in) {
-    ByteReader r(in, "i8155");
-    r.expect_header('S', '5', kSnapshotVersion);
+void I8155::load_state(StateReader& r) {
     State s;
-    r.bytes(s.ram);
-    s.command = r.u8();
-    if (s.command > 0x3F) r.fail("invalid command register");
-    for (auto& v : s.latch) v = r.u8();
-    for (auto& v : s.pins) v = r.u8();
-    for (auto& v : s.strobe_latch) v = r.u8();
-    for (int i = 0; i < 2; ++i) {
-        s.intr_ff[i] = r.boolean();
-        s.bf[i] = r.boolean();
-        s.stb[i] = r.boolean();
-    }
-    s.timer_flag = r.boolean();
-    s.count_length = r.u16();
-    s.counted = r.boolean();
-    s.running = r.boolean();
-    s.count = r.u16();
-    if (s.count < 2 || s.count > kCountMask) r.fail("invalid timer count");
-    const std::uint8_t mode = r.u8();
-    if (mode > 3) r.fail("invalid timer mode");
-    s.mode = static_cast<TimerMode>(mode);
-    s.period_start = r.u64();
-    s.pending_start = r.boolean();
-    s.stop_after_tc = r.boolean();
-    s.held_value = r.u16();
-    s.timer_out = r.boolean();
-    s.pulse_end = r.u64();
-    s.now = r.u64();
+    State::fields(s, r);
     r.expect_end();
-    if (s.running && (s.period_start > s.now || s.now >= s.period_start + s.count))
-        r.fail("timer state off its own clock");
+    r.check(s.command <= 0x3F, "invalid command register");
+    r.check(s.count >= 2 && s.count <= kCountMask, "invalid timer count");
+    r.check(!(s.running && (s.period_start > s.now || s.now >= s.period_start + s.count)),
+            "timer state off its own clock");
     s_ = s;
 }
 

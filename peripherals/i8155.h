@@ -33,11 +33,12 @@
 #include <span>
 #include <vector>
 
+#include "peripherals/part.h"
+
 namespace alp85::periph {
 
-class I8155 {
+class I8155 final : public Part {
 public:
-    static constexpr std::uint64_t kNever = std::numeric_limits<std::uint64_t>::max();
 
     enum class Port : std::uint8_t { A = 0, B = 1, C = 2 };
 
@@ -101,6 +102,16 @@ public:
         bool timer_out = true;                     // TIMER OUT level
         std::uint64_t pulse_end = kNever;          // end of the one-clock low pulse
         std::uint64_t now = 0;                     // last T-state caught up to
+
+        // The fields of a snapshot, in order (one list for save and load).
+        template <class S, class Io>
+        static void fields(S& s, Io& io) {
+            io(s.ram), io(s.command), io(s.latch), io(s.pins), io(s.strobe_latch);
+            for (int i = 0; i < 2; ++i) io(s.intr_ff[i]), io(s.bf[i]), io(s.stb[i]);
+            io(s.timer_flag), io(s.count_length), io(s.counted), io(s.running), io(s.count);
+            io(s.mode, TimerMode::ContinuousPulse), io(s.period_start), io(s.pending_start);
+            io(s.stop_after_tc), io(s.held_value), io(s.timer_out), io(s.pulse_end), io(s.now);
+        }
     };
 
     using InputFn = std::function<std::uint8_t(Port, std::uint64_t now)>;
@@ -110,7 +121,16 @@ public:
 
     I8155() = default;
 
-    void reset(std::uint64_t now);
+    // Part
+    std::string_view name() const override { return "8155"; }
+    std::string_view tag() const override { return "8155"; }
+    std::uint8_t state_version() const override { return 2; }
+    void reset(std::uint64_t now) override;
+    void advance(std::uint64_t now) override;
+    std::uint64_t next_event() const override;
+    std::uint64_t now() const override { return s_.now; }
+    void save_state(StateWriter& w) const override { State::fields(s_, w); }
+    void load_state(StateReader& r) override;
 
     // I/O space (IO/M high): offset = AD0-AD2.
     std::uint8_t read(std::uint8_t offset, std::uint64_t now);
@@ -120,9 +140,6 @@ public:
     std::span<std::uint8_t, 256> ram() { return s_.ram; }
     std::uint8_t read_memory(std::uint8_t address) const { return s_.ram[address]; }
     void write_memory(std::uint8_t address, std::uint8_t value) { s_.ram[address] = value; }
-
-    void advance(std::uint64_t now);
-    std::uint64_t next_event() const;
 
     // Pins.
     void set_port_input(Port port, std::uint8_t levels) { s_.pins[static_cast<int>(port)] = levels; }
@@ -143,10 +160,6 @@ public:
     const State& state() const { return s_; }
     std::uint8_t peek_status() const;
     std::uint16_t peek_counter(std::uint64_t now) const;  // what reading offsets 4/5 would give
-
-    // Snapshot.
-    void save(std::vector<std::uint8_t>& out) const;
-    void load(std::span<const std::uint8_t> in);  // throws SnapshotError; state unchanged on error
 
 private:
     std::uint8_t input_levels(Port port, std::uint64_t now) const;

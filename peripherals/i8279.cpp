@@ -9,7 +9,6 @@
 namespace alp85::periph {
 
 namespace {
-constexpr std::uint8_t kSnapshotVersion = 1;
 }
 
 void I8279::reset(std::uint64_t now) {
@@ -424,97 +423,19 @@ void I8279::command(std::uint8_t value, std::uint64_t now) {
 
 // ---- snapshot ----------------------------------------------------------------------------------
 
-void I8279::save(std::vector<std::uint8_t>& out) const {
-    ByteWriter w(out);
-    w.header('K', '9', kSnapshotVersion);
-    w.bytes(s_.display_ram);
-    w.bytes(s_.fifo);
-    w.u8(s_.fifo_head);
-    w.u8(s_.fifo_count);
-    w.u8(s_.mode);
-    w.u8(s_.prescaler);
-    w.boolean(s_.read_display);
-    w.u8(s_.display_address);
-    w.boolean(s_.display_ai);
-    w.u8(s_.sensor_address);
-    w.boolean(s_.sensor_ai);
-    w.u8(s_.inhibit_blank);
-    w.u8(s_.blank_code);
-    w.u8(s_.right_offset);
-    w.boolean(s_.overrun);
-    w.boolean(s_.underrun);
-    w.boolean(s_.error);
-    w.boolean(s_.special_error_mode);
-    w.boolean(s_.sensor_irq);
-    w.boolean(s_.irq);
-    w.u64(s_.du_until);
-    w.boolean(s_.shift);
-    w.boolean(s_.cntl);
-    w.u64(s_.origin_t);
-    w.u64(s_.origin_clk);
-    w.u64(s_.next_digit);
-    w.bytes(s_.matrix);
-    w.boolean(s_.dirty);
-    w.u8(s_.quiet);
-    w.u8(static_cast<std::uint8_t>(s_.candidate));
-    w.boolean(s_.candidate_multi);
-    w.u64(s_.candidate_digit);
-    w.u8(static_cast<std::uint8_t>(s_.locked));
-    w.bytes(s_.nkro);
-    for (auto v : s_.nkro_digit) w.u64(v);
-    w.u64(s_.now);
-}
-
-void I8279::load(std::span<const std::uint8_t> in) {
-    ByteReader r(in, "i8279");
-    r.expect_header('K', '9', kSnapshotVersion);
+void I8279::load_state(StateReader& r) {
     State s;
-    r.bytes(s.display_ram);
-    r.bytes(s.fifo);
-    s.fifo_head = r.u8();
-    s.fifo_count = r.u8();
+    State::fields(s, r);
     if (s.fifo_head > 7 || s.fifo_count > 8) r.fail("invalid FIFO pointers");
-    s.mode = r.u8();
     if (s.mode > 0x1F) r.fail("invalid mode");
-    s.prescaler = r.u8();
     if (s.prescaler < 2 || s.prescaler > 31) r.fail("invalid prescaler");
-    s.read_display = r.boolean();
-    s.display_address = r.u8();
-    s.display_ai = r.boolean();
-    s.sensor_address = r.u8();
-    s.sensor_ai = r.boolean();
-    s.inhibit_blank = r.u8();
-    s.blank_code = r.u8();
-    s.right_offset = r.u8();
     if (s.display_address > 15 || s.sensor_address > 7 || s.inhibit_blank > 15 || s.right_offset > 15) {
         r.fail("invalid address or flags");
     }
-    s.overrun = r.boolean();
-    s.underrun = r.boolean();
-    s.error = r.boolean();
-    s.special_error_mode = r.boolean();
-    s.sensor_irq = r.boolean();
-    s.irq = r.boolean();
-    s.du_until = r.u64();
-    s.shift = r.boolean();
-    s.cntl = r.boolean();
-    s.origin_t = r.u64();
-    s.origin_clk = r.u64();
-    s.next_digit = r.u64();
-    r.bytes(s.matrix);
-    s.dirty = r.boolean();
-    s.quiet = r.u8();
-    s.candidate = static_cast<std::int8_t>(r.u8());
-    s.candidate_multi = r.boolean();
-    s.candidate_digit = r.u64();
-    s.locked = static_cast<std::int8_t>(r.u8());
     if (s.candidate < -1 || s.locked < -1) r.fail("invalid key index");
-    r.bytes(s.nkro);
-    for (auto& v : s.nkro_digit) v = r.u64();
     for (auto v : s.nkro) {
         if (v > 2) r.fail("invalid key state");
     }
-    s.now = r.u64();
     r.expect_end();
     // The scan's invariants, so that a crafted file cannot leave a debounce that never ends (the
     // scan would then be revisited digit by digit forever):

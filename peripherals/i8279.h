@@ -41,11 +41,12 @@
 #include <span>
 #include <vector>
 
+#include "peripherals/part.h"
+
 namespace alp85::periph {
 
-class I8279 {
+class I8279 final : public Part {
 public:
-    static constexpr std::uint64_t kNever = std::numeric_limits<std::uint64_t>::max();
     static constexpr unsigned kClocksPerDigit = 64;  // internal clocks per scan (digit) time
     static constexpr unsigned kClearClocks = 16;     // display unavailable after a clear
 
@@ -107,6 +108,18 @@ public:
         std::array<std::uint8_t, 64> nkro{};        // N-key rollover: 0 open, 1 debouncing, 2 entered
         std::array<std::uint64_t, 64> nkro_digit{};  //   digit time at which debouncing began
         std::uint64_t now = 0;
+
+        // The fields of a snapshot, in order (one list for save and load).
+        template <class S, class Io>
+        static void fields(S& s, Io& io) {
+            io(s.display_ram), io(s.fifo), io(s.fifo_head), io(s.fifo_count), io(s.mode), io(s.prescaler);
+            io(s.read_display), io(s.display_address), io(s.display_ai), io(s.sensor_address), io(s.sensor_ai);
+            io(s.inhibit_blank), io(s.blank_code), io(s.right_offset), io(s.overrun), io(s.underrun), io(s.error);
+            io(s.special_error_mode), io(s.sensor_irq), io(s.irq), io(s.du_until), io(s.shift), io(s.cntl);
+            io(s.origin_t), io(s.origin_clk), io(s.next_digit), io(s.matrix), io(s.dirty), io(s.quiet);
+            io(s.candidate), io(s.candidate_multi), io(s.candidate_digit), io(s.locked), io(s.nkro);
+            io(s.nkro_digit), io(s.now);
+        }
     };
 
     using ReturnLinesFn = std::function<std::uint8_t(std::uint8_t scan_lines)>;
@@ -114,12 +127,19 @@ public:
 
     I8279() = default;
 
-    void reset(std::uint64_t now);
+    // Part
+    std::string_view name() const override { return "8279"; }
+    std::string_view tag() const override { return "8279"; }
+    std::uint8_t state_version() const override { return 2; }
+    void reset(std::uint64_t now) override;
+    void advance(std::uint64_t now) override;
+    std::uint64_t next_event() const override;
+    std::uint64_t now() const override { return s_.now; }
+    void save_state(StateWriter& w) const override { State::fields(s_, w); }
+    void load_state(StateReader& r) override;
+
     std::uint8_t read(std::uint8_t a0, std::uint64_t now);
     void write(std::uint8_t a0, std::uint8_t value, std::uint64_t now);
-    void advance(std::uint64_t now);
-    std::uint64_t next_event() const;
-
     // Pins.
     void set_return_lines_source(ReturnLinesFn fn) { source_ = std::move(fn); }
     void inputs_changed(std::uint64_t now);
@@ -140,9 +160,6 @@ public:
     bool right_entry() const { return (s_.mode & 0x10) != 0; }
     std::uint8_t scan_lines(std::uint64_t now) const;
     std::uint64_t digit_time() const { return std::uint64_t{kClocksPerDigit} * s_.prescaler; }  // T-states
-
-    void save(std::vector<std::uint8_t>& out) const;
-    void load(std::span<const std::uint8_t> in);  // throws SnapshotError; state unchanged on error
 
 private:
     bool decoded() const { return (s_.mode & 1) != 0; }

@@ -59,22 +59,16 @@ std::uint8_t Keypad::return_lines(std::uint8_t scan_lines) const {
     return static_cast<std::uint8_t>(~closed_[scan_lines & 7]);
 }
 
-void Keypad::save(std::vector<std::uint8_t>& out) const {
-    ByteWriter w(out);
-    w.header('K', 'P', 1);
-    w.bytes(closed_);
-}
-
-void Keypad::load(std::span<const std::uint8_t> in) {
-    ByteReader r(in, "keypad");
-    r.expect_header('K', 'P', 1);
+void Keypad::load_state(StateReader& r) {
     std::array<std::uint8_t, 8> rows{};
-    r.bytes(rows);
+    std::uint64_t now = 0;
+    r(now), r(rows);
     r.expect_end();
     for (std::size_t i = 3; i < rows.size(); ++i) {
         if (rows[i]) r.fail("key down on an unused row");
     }
     closed_ = rows;
+    now_ = now;
 }
 
 }  // namespace alp85::periph

@@ -18,6 +18,8 @@
 #include <string_view>
 #include <vector>
 
+#include "peripherals/part.h"
+
 namespace alp85::periph {
 
 enum class Key : std::uint8_t {
@@ -41,8 +43,19 @@ struct KeyInfo {
     std::uint8_t code() const { return static_cast<std::uint8_t>(row * 8 + column); }  // FIFO code
 };
 
-class Keypad {
+class Keypad final : public Part {
 public:
+    // Part: keys are contacts, with no reset and no clock of their own; the keypad only follows
+    // the machine's time so that a snapshot can check it.
+    std::string_view name() const override { return "keypad"; }
+    std::string_view tag() const override { return "KEYS"; }
+    std::uint8_t state_version() const override { return 2; }
+    void reset(std::uint64_t) override {}
+    void advance(std::uint64_t now) override { now_ = now; }
+    std::uint64_t now() const override { return now_; }
+    void save_state(StateWriter& w) const override { w(now_), w(closed_); }
+    void load_state(StateReader& r) override;
+
     static constexpr std::size_t kKeyCount = 24;
 
     static std::span<const KeyInfo, kKeyCount> layout();
@@ -60,11 +73,9 @@ public:
     std::uint8_t return_lines(std::uint8_t scan_lines) const;
 
     const std::array<std::uint8_t, 8>& closed_rows() const { return closed_; }
-    void save(std::vector<std::uint8_t>& out) const;
-    void load(std::span<const std::uint8_t> in);  // throws SnapshotError
-
 private:
     std::array<std::uint8_t, 8> closed_{};  // per row: bit n = key on RL n is down
+    std::uint64_t now_ = 0;
 };
 
 }  // namespace alp85::periph

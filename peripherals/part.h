@@ -11,7 +11,10 @@
 
 #include <cstdint>
 #include <limits>
+#include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "emu/util/state_io.h"
 
@@ -39,9 +42,23 @@ public:
     virtual std::uint64_t now() const = 0;
 
     // The part's state, listed once (StateWriter / StateReader, emu/util/state_io.h). load_state
-    // throws SnapshotError on a damaged or inconsistent record and then leaves the part unchanged.
+    // reads the whole record into a scratch state, checks r.expect_end() and the state's
+    // invariants, and only then commits: on SnapshotError the part is unchanged.
     virtual void save_state(StateWriter& w) const = 0;
     virtual void load_state(StateReader& r) = 0;
+
+    // The record as the machine's snapshot stores it: a header (the tag's first two characters
+    // and the version, ByteWriter::header) and the fields.
+    void save(std::vector<std::uint8_t>& out) const {
+        StateWriter w(out);
+        w.header(tag()[0], tag()[1], state_version());
+        save_state(w);
+    }
+    void load(std::span<const std::uint8_t> in) {
+        StateReader r(in, std::string(name()));
+        r.expect_header(tag()[0], tag()[1], state_version());
+        load_state(r);
+    }
 };
 
 }  // namespace alp85::periph

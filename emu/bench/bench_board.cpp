@@ -20,7 +20,7 @@ BoardBench::BoardBench() : ram_(0x10000, 0), bare_cpu_(bus_) {
     board_.cpu().regs().pc = origin;
 }
 
-std::uint64_t BoardBench::run_bare(std::uint64_t tstates) { return bare_cpu_.run(bare_cpu_.cycles() + tstates); }
+std::uint64_t BoardBench::run_bare(std::uint64_t tstates) { return bare_cpu_.run(bare_cpu_.tstates() + tstates); }
 
 std::uint64_t BoardBench::run_board(std::uint64_t tstates) {
     const std::uint64_t before = board_.now();

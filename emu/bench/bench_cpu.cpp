@@ -11,6 +11,6 @@ CpuBench::CpuBench(Variant variant) : ram_(0x10000, 0), cpu_(bus_, variant) {
     bus_.map_ram(0, 0x10000, ram_.data());
 }
 
-std::uint64_t CpuBench::run(std::uint64_t tstates) { return cpu_.run(cpu_.cycles() + tstates); }
+std::uint64_t CpuBench::run(std::uint64_t tstates) { return cpu_.run(cpu_.tstates() + tstates); }
 
 }  // namespace alp85

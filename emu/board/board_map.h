@@ -33,18 +33,24 @@ inline constexpr std::array<MemoryRegion, 4> kMemoryMap{{
 
 enum class Device : std::uint8_t { Kdc8279, Rio8155 };
 
+// A device on ports first..last; the chip sees register (port - first) & offset_mask on its
+// address lines (the board wires only the low address bits to the chip).
 struct IoRegion {
     Device device;
     std::uint8_t first;
     std::uint8_t last;
+    std::uint8_t offset_mask;
     std::string_view name;
     std::string_view registers;  // how the chip's address lines see the ports
+    constexpr std::uint8_t offset(std::uint8_t port) const {
+        return static_cast<std::uint8_t>((port - first) & offset_mask);
+    }
 };
 
 // Unmapped ports and memory read FFH (a floating, pulled-up data bus).
 inline constexpr std::array<IoRegion, 2> kIoMap{{
-    {Device::Kdc8279, 0xE0, 0xE1, "8279", "A0 = port bit 0: E0H data, E1H command/status"},
-    {Device::Rio8155, 0xF8, 0xFD, "8155",
+    {Device::Kdc8279, 0xE0, 0xE1, 0x01, "8279", "A0 = port bit 0: E0H data, E1H command/status"},
+    {Device::Rio8155, 0xF8, 0xFD, 0x07, "8155",
      "AD0-AD2 = port - F8H: F8H command/status, F9H port A (motor outputs), FAH port B "
      "(transducer inputs), FBH port C, FCH timer low, FDH timer high"},
 }};
@@ -52,6 +58,7 @@ inline constexpr std::array<IoRegion, 2> kIoMap{{
 enum class Source : std::uint8_t { Irq8279, TimerOut8155, VectIntrKey, ResetKey };
 enum class CpuPin : std::uint8_t { Rst55, Trap, Rst75, ResetIn };
 
+// Who drives which CPU input. The Machine connects exactly these (Machine::wire).
 struct Wire {
     Source source;
     CpuPin pin;
@@ -70,6 +77,24 @@ inline constexpr std::array<Wire, 4> kInterruptWiring{{
 inline constexpr std::uint32_t kCrystalHz = 6'144'000;
 inline constexpr std::uint32_t kCpuHz = kCrystalHz / 2;
 
+// The undriven 8155 inputs (nothing on the board drives them): pulled up, so ports A and B read
+// FFH and the six-bit port C reads 3FH.
+inline constexpr std::uint8_t kUndrivenPortAB = 0xFF;
+inline constexpr std::uint8_t kUndrivenPortC = 0x3F;
+
 constexpr const MemoryRegion& region(Memory id) { return kMemoryMap[static_cast<std::size_t>(id)]; }
+constexpr const IoRegion& io_region(Device d) {
+    for (const auto& r : kIoMap)
+        if (r.device == d) return r;
+    return kIoMap[0];
+}
+constexpr CpuPin pin_of(Source s) {
+    for (const auto& w : kInterruptWiring)
+        if (w.source == s) return w.pin;
+    return CpuPin::ResetIn;
+}
+
+// T-states of a duration on the board's clock, rounded to the nearest.
+constexpr std::uint64_t tstates_from_ms(double ms) { return static_cast<std::uint64_t>(ms * kCpuHz / 1000.0 + 0.5); }
 
 }  // namespace alp85::board

@@ -36,7 +36,7 @@ public:
         if (stop_here && !(skip_armed && pc == skip_pc)) {
             skip_armed = false;
             stopped = true;
-            reason = Stop::Breakpoint;
+            reason = run_to ? Stop::Target : Stop::Breakpoint;
             return false;
         }
         skip_armed = false;
@@ -57,39 +57,22 @@ private:
     }
 };
 
-// The 8279 on ports E0H-E1H: A0 selects data (0) or command/status (1).
-class Machine::Port8279 final : public IoDevice {
+// A chip on the I/O bus as board::kIoMap declares it: the chip sees the register offset, and a
+// write may move the chip's next event, so the batch ends there and the scheduler looks again.
+template <class Chip>
+class ChipPorts final : public IoDevice {
 public:
-    explicit Port8279(Machine& m) : m_(m) {}
-    std::uint8_t in(std::uint8_t port, std::uint64_t t) override { return m_.kdc_.read(port & 1, t); }
+    ChipPorts(Chip& chip, I8085& cpu, const board::IoRegion& region) : chip_(chip), cpu_(cpu), region_(region) {}
+    std::uint8_t in(std::uint8_t port, std::uint64_t t) override { return chip_.read(region_.offset(port), t); }
     void out(std::uint8_t port, std::uint8_t value, std::uint64_t t) override {
-        m_.kdc_.write(port & 1, value, t);
-        m_.cpu_.stop_at(t);  // the chip's next event may have moved: let the scheduler look again
+        chip_.write(region_.offset(port), value, t);
+        cpu_.stop_at(t);
     }
 
 private:
-    Machine& m_;
-};
-
-// The 8155 on ports F8H-FDH: AD0-AD2 = port - F8H.
-class Machine::Port8155 final : public IoDevice {
-public:
-    explicit Port8155(Machine& m) : m_(m) {}
-    std::uint8_t in(std::uint8_t port, std::uint64_t t) override {
-        return m_.rio_.read(static_cast<std::uint8_t>(port - kBase), t);
-    }
-    void out(std::uint8_t port, std::uint8_t value, std::uint64_t t) override {
-        m_.rio_.write(static_cast<std::uint8_t>(port - kBase), value, t);
-        m_.cpu_.stop_at(t);
-    }
-
-private:
-    static constexpr std::uint8_t kBase = [] {
-        for (const auto& r : board::kIoMap)
-            if (r.device == board::Device::Rio8155) return r.first;
-        return std::uint8_t{0};
-    }();
-    Machine& m_;
+    Chip& chip_;
+    I8085& cpu_;
+    const board::IoRegion& region_;
 };
 
 Machine::Machine() : Machine(Options{}) {}
@@ -97,8 +80,6 @@ Machine::Machine() : Machine(Options{}) {}
 Machine::Machine(Options options)
     : options_(options),
       cpu_(bus_, options.cpu),
-      port8279_(std::make_unique<Port8279>(*this)),
-      port8155_(std::make_unique<Port8155>(*this)),
       hooks_(std::make_unique<Hooks>()) {
     // Erased EPROMs read FFH (every cell charged); RAM powers up as zeros here (the real parts
     // are unpredictable, and a deterministic machine needs some fixed value).
@@ -119,22 +100,62 @@ void Machine::wire() {
         else
             bus_.map_ram(r.base, r.size, s.data());
     }
+    // The parts, in the order they are advanced, reset and saved.
+    parts_ = {&rio_, &kdc_, &keypad_};
     for (const auto& r : board::kIoMap) {
-        IoDevice& dev = r.device == board::Device::Kdc8279 ? static_cast<IoDevice&>(*port8279_)
-                                                             : static_cast<IoDevice&>(*port8155_);
-        bus_.map_io(r.first, r.last, dev);
+        switch (r.device) {
+            case board::Device::Kdc8279: chip_ports_.push_back(std::make_unique<ChipPorts<periph::I8279>>(kdc_, cpu_, r)); break;
+            case board::Device::Rio8155: chip_ports_.push_back(std::make_unique<ChipPorts<periph::I8155>>(rio_, cpu_, r)); break;
+        }
+        bus_.map_io(r.first, r.last, *chip_ports_.back());
     }
-    // Interrupt wiring (board::kInterruptWiring).
+    // Interrupt wiring, from board::kInterruptWiring (the keys are applied in apply()).
+    for (const board::Wire& w : board::kInterruptWiring) {
+        const board::CpuPin pin = w.pin;
+        switch (w.source) {
+            case board::Source::Irq8279: kdc_.on_irq([this, pin](bool level, std::uint64_t) { drive(pin, level); }); break;
+            case board::Source::TimerOut8155:
+                rio_.on_timer_out([this, pin](bool level, std::uint64_t) { drive(pin, level); });
+                break;
+            case board::Source::VectIntrKey:
+            case board::Source::ResetKey: break;
+        }
+    }
     // SHIFT and CNTL/STB are grounded on the ALP 85 (docs/peripherals.md): key codes carry 0 there.
     kdc_.set_shift(false, 0);
     kdc_.set_cntl_stb(false, 0);
-    rio_.on_timer_out([this](bool level, std::uint64_t) { cpu_.set_trap(level); });
-    kdc_.on_irq([this](bool level, std::uint64_t) { cpu_.set_rst55(level); });
     kdc_.set_return_lines_source([this](std::uint8_t sl) { return keypad_.return_lines(sl); });
     rio_.set_input_callback([this](I8155::Port port, std::uint64_t now) -> std::uint8_t {
         if (port == I8155::Port::B && port_b_source_) return port_b_source_(now);
-        return port == I8155::Port::C ? 0x3F : 0xFF;  // unconnected inputs are pulled high
+        return port == I8155::Port::C ? board::kUndrivenPortC : board::kUndrivenPortAB;
     });
+}
+
+void Machine::drive(board::CpuPin pin, bool level) {
+    switch (pin) {
+        case board::CpuPin::Rst55: cpu_.set_rst55(level); break;
+        case board::CpuPin::Trap: cpu_.set_trap(level); break;
+        case board::CpuPin::Rst75: cpu_.set_rst75(level); break;
+        case board::CpuPin::ResetIn:
+            if (level) reset();
+            break;
+    }
+}
+
+void Machine::attach(periph::Part& part, IoDevice* io, std::uint8_t first, std::uint8_t last) {
+    for (const periph::Part* p : parts_) {
+        if (p->tag() == part.tag())
+            throw std::invalid_argument(fmt::format("a part tagged '{}' is already on the board", part.tag()));
+    }
+    part.advance(now());
+    parts_.push_back(&part);
+    if (io) bus_.map_io(first, last, *io);
+}
+
+periph::Part* Machine::find_part(std::string_view name) const {
+    for (periph::Part* p : parts_)
+        if (p->name() == name) return p;
+    return nullptr;
 }
 
 std::span<std::uint8_t> Machine::storage(board::Memory id) {
@@ -185,13 +206,10 @@ bool Machine::poke(std::uint16_t address, std::uint8_t value) {
 void Machine::reset() {
     const std::uint64_t t = now();
     cpu_.reset();
-    rio_.reset(t);
-    kdc_.reset(t);
-}
-
-void Machine::sync_chips(std::uint64_t t) {
-    rio_.advance(t);
-    kdc_.advance(t);
+    for (periph::Part* p : parts_) {
+        p->advance(t);
+        p->reset(t);
+    }
 }
 
 void Machine::apply(const InputEvent& e) {
@@ -205,15 +223,21 @@ void Machine::apply(const InputEvent& e) {
             kdc_.inputs_changed(t);
             break;
         }
-        case InputKind::VectIntr: cpu_.set_rst75(e.level); break;
-        case InputKind::Reset:
-            if (e.level) reset();
-            break;
+        case InputKind::VectIntr: drive(board::pin_of(board::Source::VectIntrKey), e.level); break;
+        case InputKind::Reset: drive(board::pin_of(board::Source::ResetKey), e.level); break;
     }
 }
 
 void Machine::deliver_inputs(std::uint64_t t) {
-    while (inputs_.due(t)) apply(inputs_.pop());
+    while (inputs_.due(t)) {
+        const InputEvent e = inputs_.pop();
+        input_log_.push_back(e);
+        apply(e);
+    }
+}
+
+void Machine::replay(const std::vector<InputEvent>& events) {
+    for (const InputEvent& e : events) inputs_.schedule(e.at, e.kind, e.code, e.level);
 }
 
 Machine::Stop Machine::run_until(std::uint64_t until, const std::function<bool()>& condition) {
@@ -224,14 +248,14 @@ Machine::Stop Machine::run_until(std::uint64_t until, const std::function<bool()
     for (;;) {
         const std::uint64_t t = now();
         deliver_inputs(t);
-        sync_chips(t);
+        sync_parts(t);
         if (condition && condition()) return Stop::Condition;
         if (t >= until) return Stop::Deadline;
-        std::uint64_t next = std::min({until, inputs_.next_time(), rio_.next_event(), kdc_.next_event()});
+        std::uint64_t next = std::min({until, inputs_.next_time(), next_part_event()});
         if (next <= t) next = t + 1;
         cpu_.run(next);
         if (h.stopped) {
-            sync_chips(now());
+            sync_parts(now());
             if (h.reason == Stop::Watchpoint) watch_hit_ = h.hit_address;
             return h.reason;
         }
@@ -255,10 +279,10 @@ void Machine::step() {
     h.skip_armed = true;
     h.skip_pc = cpu_.regs().pc;
     deliver_inputs(now());
-    sync_chips(now());
+    sync_parts(now());
     cpu_.step();
     deliver_inputs(now());
-    sync_chips(now());
+    sync_parts(now());
 }
 
 void Machine::key_at(periph::Key key, bool down, std::uint64_t at) {
@@ -308,12 +332,10 @@ void Machine::set_trace(std::function<void(const I8085&)> trace) {
 }
 void Machine::add_watchpoint(std::uint16_t address) {
     hooks_->watch[address] = true;
-    watchpoints_.push_back(address);
     update_hooks();
 }
 void Machine::clear_watchpoints() {
     hooks_->watch.reset();
-    watchpoints_.clear();
     update_hooks();
 }
 

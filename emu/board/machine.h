@@ -7,6 +7,7 @@
 // events stamped in that time, so the same inputs always give the same run.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "emu/board/board_map.h"
@@ -24,6 +26,7 @@
 #include "peripherals/i8155.h"
 #include "peripherals/i8279.h"
 #include "peripherals/keypad.h"
+#include "peripherals/part.h"
 
 namespace alp85 {
 
@@ -38,6 +41,7 @@ public:
         Condition,   // the caller's condition became true
         Breakpoint,  // the PC reached a breakpoint (the instruction there has not run)
         Watchpoint,  // a watched address was accessed (after the instruction)
+        Target,      // run_to reached its address (the instruction there has not run)
     };
 
     Machine();
@@ -58,13 +62,10 @@ public:
     std::span<std::uint8_t> storage(board::Memory id);
 
     // ---- control -----------------------------------------------------------------------------
-    // RESET IN: the CPU, the 8155 and the 8279 reset now; memory and time are kept.
+    // RESET IN: the CPU and every part reset now (RESET OUT); memory and time are kept.
     void reset();
-    std::uint64_t now() const { return cpu_.cycles(); }
-    static constexpr double kSecondsPerTState = 1.0 / board::kCpuHz;
-    static constexpr std::uint64_t tstates_from_ms(double ms) {
-        return static_cast<std::uint64_t>(ms * board::kCpuHz / 1000.0 + 0.5);
-    }
+    std::uint64_t now() const { return cpu_.tstates(); }
+    static constexpr std::uint64_t tstates_from_ms(double ms) { return board::tstates_from_ms(ms); }
 
     // Runs until `until` (whole instructions: it may end a few T-states after), a breakpoint,
     // a watchpoint, or — checked after every batch and every OUT — `condition` returns true.
@@ -72,8 +73,8 @@ public:
     Stop run_for(std::uint64_t tstates, const std::function<bool()>& condition = {}) {
         return run_until(now() + tstates, condition);
     }
-    // Runs until the PC reaches `pc` (Stop::Breakpoint) or until `until` (Stop::Deadline). Only
-    // `pc` stops it: the breakpoints are not armed meanwhile (a debugger's "run to here").
+    // Runs until the PC reaches `pc` (Stop::Target) or until `until` (Stop::Deadline). Only `pc`
+    // stops it: the breakpoints are not armed meanwhile (a debugger's "run to here").
     Stop run_to(std::uint16_t pc, std::uint64_t until);
     // Exactly one instruction (or interrupt acknowledge, or idle T-state when halted),
     // ignoring breakpoints at the current PC.
@@ -84,6 +85,10 @@ public:
     void vect_intr_at(bool down, std::uint64_t at);
     void reset_key_at(bool down, std::uint64_t at);
     const InputQueue& inputs() const { return inputs_; }
+    // Every outside input applied so far, with its T-state, in the order applied: scheduling
+    // these again on a machine restored to an earlier snapshot replays the run exactly.
+    const std::vector<InputEvent>& input_log() const { return input_log_; }
+    void replay(const std::vector<InputEvent>& events);
     const periph::Keypad& keypad() const { return keypad_; }
     // Port B input pins of the 8155 (the transducers, later); unconnected inputs read high.
     void set_port_b_source(std::function<std::uint8_t(std::uint64_t now)> source);
@@ -106,7 +111,14 @@ public:
     // What stopped the last run at a watchpoint: the address accessed.
     std::uint16_t watch_hit() const { return watch_hit_; }
 
-    // ---- parts, for inspection -------------------------------------------------------------------
+    // ---- parts ------------------------------------------------------------------------------------
+    // Every part beside the CPU, in the order they are advanced, reset and saved.
+    const std::vector<periph::Part*>& parts() const { return parts_; }
+    periph::Part* find_part(std::string_view name) const;
+    // Adds a part to the board (it must outlive the machine): it is advanced, reset and saved
+    // with the others from now on; `io`, if given, answers the ports first..last. A front end or
+    // test adding an accessory calls this; the board's own parts are attached by the constructor.
+    void attach(periph::Part& part, IoDevice* io = nullptr, std::uint8_t first = 0, std::uint8_t last = 0);
     I8085& cpu() { return cpu_; }
     const I8085& cpu() const { return cpu_; }
     Bus& bus() { return bus_; }
@@ -116,8 +128,8 @@ public:
     const periph::I8279& kdc() const { return kdc_; }
 
     // ---- snapshots -------------------------------------------------------------------------------
-    // The whole machine (CPU, memories, chips, keypad, pending inputs, breakpoints are not part of
-    // it) to a versioned file, written atomically; load refuses an incompatible or corrupt file
+    // The whole machine (CPU, memories, every part, pending inputs; breakpoints and the input log
+    // are not part of it) to a versioned file, written atomically; load refuses an incompatible or corrupt file
     // with a SnapshotError and leaves the machine unchanged.
     void save_snapshot(const std::filesystem::path& path) const;
     void load_snapshot(const std::filesystem::path& path);
@@ -126,14 +138,21 @@ public:
 
 private:
     class Hooks;
-    class Port8279;
-    class Port8155;
 
     void wire();
+    void drive(board::CpuPin pin, bool level);
     void deliver_inputs(std::uint64_t now);
     void apply(const InputEvent& e);
-    void sync_chips(std::uint64_t now);
+    void sync_parts(std::uint64_t now) {
+        for (periph::Part* p : parts_) p->advance(now);
+    }
+    std::uint64_t next_part_event() const {
+        std::uint64_t next = periph::Part::kNever;
+        for (const periph::Part* p : parts_) next = std::min(next, p->next_event());
+        return next;
+    }
     void update_hooks();
+    void restore_sections(const std::vector<std::uint8_t>& bytes);
 
     Options options_;
     std::array<std::uint8_t, 0x0800> monitor_{};
@@ -145,13 +164,13 @@ private:
     periph::I8279 kdc_;
     periph::Keypad keypad_;
     InputQueue inputs_;
+    std::vector<InputEvent> input_log_;
     std::function<std::uint8_t(std::uint64_t)> port_b_source_;
+    std::vector<periph::Part*> parts_;
 
-    std::unique_ptr<Port8279> port8279_;
-    std::unique_ptr<Port8155> port8155_;
+    std::vector<std::unique_ptr<IoDevice>> chip_ports_;  // the chips' I/O decoding (board::kIoMap)
     std::unique_ptr<Hooks> hooks_;
     std::vector<std::uint16_t> breakpoints_;
-    std::vector<std::uint16_t> watchpoints_;
     std::uint16_t watch_hit_ = 0;
 };
 

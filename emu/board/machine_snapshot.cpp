@@ -1,4 +1,5 @@
-// Machine snapshots: every part's state in one versioned, checksummed file (emu/snapshot_file.h).
+// Machine snapshots: the machine's own section, the CPU, the memories and every part's record in
+// one checksummed file (emu/board/snapshot_file.h). Each section opens with ByteWriter::header.
 #include <string>
 
 #include "emu/board/machine.h"
@@ -9,9 +10,8 @@ namespace {
 
 using snapshot::Section;
 
-constexpr std::uint8_t kMachineVersion = 1;
-
-std::vector<std::uint8_t> bytes_of(std::span<const std::uint8_t> s) { return {s.begin(), s.end()}; }
+// Version 2: parts framed by their own headers and saved through one field list each.
+constexpr std::uint8_t kMachineVersion = 2;
 
 struct MachineSection {
     Variant variant = Variant::I8085;
@@ -19,24 +19,37 @@ struct MachineSection {
     std::vector<InputEvent> pending;
 };
 
+template <class E, class Io>
+void event_fields(E& e, Io& io) {
+    io(e.at), io(e.seq), io(e.kind, InputKind::Reset), io(e.code), io(e.level);
+}
+
+Section machine_section(Variant variant, const InputQueue& inputs) {
+    Section s{"MACH", {}};
+    StateWriter w(s.data);
+    w.header('M', 'A', kMachineVersion);
+    w(variant), w(inputs.next_seq());
+    const auto pending = inputs.pending();
+    w(static_cast<std::uint32_t>(pending.size()));
+    for (const InputEvent& e : pending) event_fields(e, w);
+    return s;
+}
+
 MachineSection parse_machine(const Section& s) {
-    ByteReader r(s.data, "machine");
+    StateReader r(s.data, "machine");
+    if (r.remaining() >= 3 && s.data[0] == 'M' && s.data[1] == 'A' && s.data[2] != kMachineVersion)
+        throw SnapshotError("snapshot was written by another ALP85 (machine section version " +
+                            std::to_string(s.data[2]) + "; this one reads version " +
+                            std::to_string(kMachineVersion) + ")");
+    r.expect_header('M', 'A', kMachineVersion);
     MachineSection m;
-    if (r.u8() != kMachineVersion) r.fail("unknown machine section version");
-    const std::uint8_t v = r.u8();
-    if (v > 1) r.fail("unknown CPU variant");
-    m.variant = static_cast<Variant>(v);
-    m.next_seq = r.u64();
-    const std::uint32_t n = r.u32();
+    r(m.variant, Variant::I8080), r(m.next_seq);
+    std::uint32_t n = 0;
+    r(n);
+    if (n > r.remaining()) r.fail("invalid event count");
     for (std::uint32_t i = 0; i < n; ++i) {
         InputEvent e;
-        e.at = r.u64();
-        e.seq = r.u64();
-        const std::uint8_t kind = r.u8();
-        if (kind > static_cast<std::uint8_t>(InputKind::Reset)) r.fail("unknown input kind");
-        e.kind = static_cast<InputKind>(kind);
-        e.code = r.u16();
-        e.level = r.boolean();
+        event_fields(e, r);
         if (e.kind == InputKind::Key && e.code >= periph::Keypad::kKeyCount) r.fail("unknown key");
         m.pending.push_back(e);
     }
@@ -44,96 +57,80 @@ MachineSection parse_machine(const Section& s) {
     return m;
 }
 
-void copy_exact(const Section& s, std::span<std::uint8_t> dst, const char* what) {
-    if (s.data.size() != dst.size())
-        throw snapshot::SnapshotError(std::string(what) + " snapshot: size " + std::to_string(s.data.size()) +
-                                      ", expected " + std::to_string(dst.size()));
-    std::copy(s.data.begin(), s.data.end(), dst.begin());
+// A memory as a section: header and the bytes.
+Section memory_section(const char* tag, std::span<const std::uint8_t> bytes) {
+    Section s{tag, {}};
+    ByteWriter w(s.data);
+    w.header(tag[0], tag[1], 1);
+    w.bytes(bytes);
+    return s;
+}
+
+void load_memory(const Section& s, std::span<std::uint8_t> dst, const char* what) {
+    ByteReader r(s.data, what);
+    r.expect_header(s.tag[0], s.tag[1], 1);
+    if (r.remaining() != dst.size())
+        r.fail("size " + std::to_string(r.remaining()) + ", expected " + std::to_string(dst.size()));
+    r.bytes(dst);
 }
 
 }  // namespace
 
 std::vector<std::uint8_t> Machine::snapshot_bytes() const {
     std::vector<Section> sections;
-    {
-        Section s{"MACH", {}};
-        ByteWriter w(s.data);
-        w.u8(kMachineVersion);
-        w.u8(static_cast<std::uint8_t>(options_.cpu));
-        w.u64(inputs_.next_seq());
-        const auto pending = inputs_.pending();
-        w.u32(static_cast<std::uint32_t>(pending.size()));
-        for (const InputEvent& e : pending) {
-            w.u64(e.at);
-            w.u64(e.seq);
-            w.u8(static_cast<std::uint8_t>(e.kind));
-            w.u16(e.code);
-            w.boolean(e.level);
-        }
-        sections.push_back(std::move(s));
-    }
+    sections.push_back(machine_section(options_.cpu, inputs_));
     {
         Section s{"CPU ", {}};
         cpu_.save(s.data);
         sections.push_back(std::move(s));
     }
-    sections.push_back({"MON ", bytes_of(monitor_)});
-    sections.push_back({"USER", bytes_of(user_)});
-    sections.push_back({"RAM ", bytes_of(ram_)});
-    {
-        Section s{"8155", {}};
-        rio_.save(s.data);
-        sections.push_back(std::move(s));
-    }
-    {
-        Section s{"8279", {}};
-        kdc_.save(s.data);
-        sections.push_back(std::move(s));
-    }
-    {
-        Section s{"KEYS", {}};
-        keypad_.save(s.data);
+    sections.push_back(memory_section("MON ", monitor_));
+    sections.push_back(memory_section("USER", user_));
+    sections.push_back(memory_section("RAM ", ram_));
+    for (const periph::Part* p : parts_) {
+        Section s{std::string(p->tag()), {}};
+        p->save(s.data);
         sections.push_back(std::move(s));
     }
     return snapshot::encode(sections);
 }
 
-void Machine::restore_bytes(const std::vector<std::uint8_t>& bytes) {
+void Machine::restore_sections(const std::vector<std::uint8_t>& bytes) {
     const std::vector<Section> sections = snapshot::decode(bytes);
     const MachineSection m = parse_machine(snapshot::find(sections, "MACH"));
     if (m.variant != options_.cpu)
-        throw snapshot::SnapshotError(std::string("snapshot was taken on an ") +
-                                      (m.variant == Variant::I8080 ? "8080" : "8085") + " machine, this one is an " +
-                                      (options_.cpu == Variant::I8080 ? "8080" : "8085"));
-    // Validate every part on scratch copies first: a bad file leaves this machine untouched.
-    {
-        Bus scratch_bus;
-        I8085 scratch_cpu(scratch_bus, options_.cpu);
-        scratch_cpu.load(snapshot::find(sections, "CPU ").data);
-        periph::I8155 scratch_rio;
-        scratch_rio.load(snapshot::find(sections, "8155").data);
-        periph::I8279 scratch_kdc;
-        scratch_kdc.load(snapshot::find(sections, "8279").data);
-        // The machine keeps its chips caught up with the CPU (sync_chips after every run), so a
-        // chip at another time is a damaged file; a timer far behind would also take ages to
-        // catch up, one event at a time.
-        if (scratch_rio.state().now != scratch_cpu.cycles() || scratch_kdc.state().now != scratch_cpu.cycles())
-            throw snapshot::SnapshotError("the chips' time differs from the CPU's");
-        periph::Keypad scratch_keys;
-        scratch_keys.load(snapshot::find(sections, "KEYS").data);
-        std::array<std::uint8_t, 0x1000> scratch_mem{};
-        copy_exact(snapshot::find(sections, "MON "), std::span(scratch_mem).first(monitor_.size()), "monitor EPROM");
-        copy_exact(snapshot::find(sections, "USER"), std::span(scratch_mem).first(user_.size()), "user EPROM");
-        copy_exact(snapshot::find(sections, "RAM "), std::span(scratch_mem).first(ram_.size()), "RAM");
+        throw SnapshotError(std::string("snapshot was taken on an ") + (m.variant == Variant::I8080 ? "8080" : "8085") +
+                            " machine, this one is an " + (options_.cpu == Variant::I8080 ? "8080" : "8085"));
+    for (const Section& s : sections) {
+        const bool known = s.tag == "MACH" || s.tag == "CPU " || s.tag == "MON " || s.tag == "USER" || s.tag == "RAM " ||
+                           std::any_of(parts_.begin(), parts_.end(), [&](const periph::Part* p) { return p->tag() == s.tag; });
+        if (!known) throw SnapshotError("snapshot has a part this machine lacks ('" + s.tag + "')");
     }
     cpu_.load(snapshot::find(sections, "CPU ").data);
-    rio_.load(snapshot::find(sections, "8155").data);
-    kdc_.load(snapshot::find(sections, "8279").data);
-    keypad_.load(snapshot::find(sections, "KEYS").data);
-    copy_exact(snapshot::find(sections, "MON "), monitor_, "monitor EPROM");
-    copy_exact(snapshot::find(sections, "USER"), user_, "user EPROM");
-    copy_exact(snapshot::find(sections, "RAM "), ram_, "RAM");
+    load_memory(snapshot::find(sections, "MON "), monitor_, "monitor EPROM");
+    load_memory(snapshot::find(sections, "USER"), user_, "user EPROM");
+    load_memory(snapshot::find(sections, "RAM "), ram_, "RAM");
+    for (periph::Part* p : parts_) p->load(snapshot::find(sections, p->tag()).data);
+    // The machine keeps its parts caught up with the CPU (sync_parts after every run), so a part
+    // at another time is a damaged file; a timer far behind would also take ages to catch up.
+    for (const periph::Part* p : parts_) {
+        if (p->now() != cpu_.tstates()) throw SnapshotError("the chips' time differs from the CPU's");
+    }
     inputs_.restore(m.pending, m.next_seq);
+}
+
+void Machine::restore_bytes(const std::vector<std::uint8_t>& bytes) {
+    // Parts load one by one; should a later one refuse, the whole machine goes back to where it
+    // was, so a bad file leaves it untouched.
+    const std::vector<std::uint8_t> before = snapshot_bytes();
+    try {
+        restore_sections(bytes);
+    } catch (const SnapshotError&) {
+        restore_sections(before);
+        throw;
+    }
+    // Inputs applied after the restored moment have not happened (yet) in this run.
+    std::erase_if(input_log_, [this](const InputEvent& e) { return e.at > now(); });
 }
 
 void Machine::save_snapshot(const std::filesystem::path& path) const {
@@ -144,8 +141,8 @@ void Machine::load_snapshot(const std::filesystem::path& path) {
     const std::vector<std::uint8_t> bytes = snapshot::read_bytes(path);
     try {
         restore_bytes(bytes);
-    } catch (const snapshot::SnapshotError& e) {
-        throw snapshot::SnapshotError(path.string() + ": " + e.what());
+    } catch (const SnapshotError& e) {
+        throw SnapshotError(path.string() + ": " + e.what());
     }
 }
 

@@ -198,7 +198,7 @@ void I8085::halt_entered() {
 // debug hooks. Memory: the page table's direct pointers, with a call only for device, ROM-write
 // and unmapped-write pages. The T-state counter is advanced by the opcode's base T-states before
 // its body runs (plus the extra of a taken condition), so a handler called from the body sees
-// t - 3 = the first T-state of the instruction's last machine cycle (see cycles()).
+// t - 3 = the first T-state of the instruction's last machine cycle (see tstates()).
 template <Variant V, bool Debug>
 void I8085::execute() {
     constexpr bool k85 = V == Variant::I8085;

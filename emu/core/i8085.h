@@ -6,7 +6,7 @@
 //   and HLDA output (callback on change). T-states are counted per instruction from the opcode
 //   table asm/isa.h (the data sheets' figures).
 // Not emulated: READY/wait states, RESET OUT, CLK OUT, S0/S1/ALE status timing; the position of
-//   each access inside an instruction is approximated (see cycles()); INTA only accepts RST n and
+//   each access inside an instruction is approximated (see tstates()); INTA only accepts RST n and
 //   CALL (any other byte is taken as a NOP acknowledge: 6 T-states, IE stays cleared); HOLD is
 //   granted at instruction boundaries only. On the 8080 variant TRAP, RST 5.5-7.5, SID and SOD do
 //   not exist: their setters are ignored and SOD stays low.
@@ -72,12 +72,12 @@ public:
     const Registers& regs() const { return r_; }
 
     // ---- running -------------------------------------------------------------------------------
-    // Runs whole instructions (and interrupt acknowledges) while cycles() < deadline, or until a
+    // Runs whole instructions (and interrupt acknowledges) while tstates() < deadline, or until a
     // stop is requested. A halted or held CPU idles up to the deadline. Returns the T-states run.
     std::uint64_t run(std::uint64_t deadline);
     // One instruction, or one interrupt acknowledge, or (halted) one idle T-state.
     std::uint64_t step() { return run(t_ + 1); }
-    // Shortens the current run: it returns after the instruction during which cycles() reaches t.
+    // Shortens the current run: it returns after the instruction during which tstates() reaches t.
     // Safe from I/O and memory handlers and from debug hooks.
     void stop_at(std::uint64_t t) {
         if (t < deadline_) deadline_ = t;
@@ -89,7 +89,7 @@ public:
     // the first T-state of the IN/OUT's I/O machine cycle (exact). Inside a memory-mapped device
     // handler: the first T-state of the instruction's last machine cycle (exact for single-access
     // instructions such as MOV M,r, LDA, STA, MVI M; approximate for multi-access ones).
-    std::uint64_t cycles() const { return t_; }
+    std::uint64_t tstates() const { return t_; }
     std::uint64_t instructions() const { return instructions_; }
 
     // ---- state -----------------------------------------------------------------------------------

@@ -45,12 +45,12 @@ CpmMachine::Result CpmMachine::run(std::uint64_t max_tstates, const std::functio
     // A CALL 0005H pushes its return address onto the stack the program set up; the warm-boot HLT
     // stops the run through on_halt.
     bool stopped = false;
-    while (!cpu_.halted() && cpu_.cycles() < deadline && !stopped)
+    while (!cpu_.halted() && cpu_.tstates() < deadline && !stopped)
         stopped = cpu_.run(deadline) == 0;  // nothing ran: a debug hook refused the next instruction
 
     Result r;
     r.instructions = cpu_.instructions();
-    r.tstates = cpu_.cycles();
+    r.tstates = cpu_.tstates();
     char buf[96];
     if (cpu_.halted() && bad_function_ >= 0) {
         r.end = End::BadFunction;
@@ -74,7 +74,7 @@ CpmMachine::Result CpmMachine::run(std::uint64_t max_tstates, const std::functio
         r.end = End::CycleLimit;
         r.exit_status = 4;
         std::snprintf(buf, sizeof buf, "cycle limit reached: %llu T-states (PC=%04XH)",
-                      static_cast<unsigned long long>(cpu_.cycles()), static_cast<unsigned>(cpu_.regs().pc));
+                      static_cast<unsigned long long>(cpu_.tstates()), static_cast<unsigned>(cpu_.regs().pc));
         r.message = buf;
     }
     console_ = nullptr;

@@ -14,7 +14,7 @@ std::string trace_csv_line(const I8085& cpu, const std::function<std::uint8_t(st
     o.cpu8080 = cpu.variant() == Variant::I8080;
     const auto d = asm85::disassemble(peek, r.pc, o);
     return fmt::format("{},{:04X},{:02X},\"{}\",{:02X},{:02X},{:02X},{:02X},{:02X},{:02X},{:02X},{:02X},{:04X}\n",
-                       cpu.cycles(), r.pc, d.bytes[0], d.text, r.a, r.f, r.b, r.c, r.d, r.e, r.h, r.l, r.sp);
+                       cpu.tstates(), r.pc, d.bytes[0], d.text, r.a, r.f, r.b, r.c, r.d, r.e, r.h, r.l, r.sp);
 }
 
 }  // namespace alp85

@@ -385,7 +385,7 @@ Session::Outcome Session::execute(const Command& c) {
             const auto a = resolve(*c.address, e);
             if (!a) return fail(c, e);
             const auto target = static_cast<std::uint16_t>(*a);
-            if (m.run_to(target, m.now() + c.time) != Machine::Stop::Breakpoint)
+            if (m.run_to(target, m.now() + c.time) != Machine::Stop::Target)
                 return fail(c, fmt::format("the PC did not reach {} within {}", hex(target, 4), format_time(c.time)));
             return {};
         }

@@ -133,7 +133,7 @@ TEST(BoardDebug, RunToStopsOnlyAtItsTargetAndKeepsTheBreakpoints) {
     const LoadedImage img = boot(m, "hello.asm");
     const std::uint16_t show = img.assembly->find_symbol("SHOW")->value;
     m.add_breakpoint(0x0040);  // START: passed on the way to SHOW, but not armed by run_to
-    ASSERT_EQ(m.run_to(show, m.now() + ms(5)), Machine::Stop::Breakpoint);
+    ASSERT_EQ(m.run_to(show, m.now() + ms(5)), Machine::Stop::Target);
     EXPECT_EQ(m.cpu().regs().pc, show);
     EXPECT_EQ(m.breakpoints(), std::vector<std::uint16_t>{0x0040});
     // A target that is never reached: the deadline ends the run.

@@ -23,7 +23,7 @@ struct Outcome {
 };
 
 Outcome outcome(const Machine& m) {
-    return {m.cpu().cycles(), m.cpu().instructions(), m.display_text(), m.peek(0x1000), m.peek(0x1001),
+    return {m.cpu().tstates(), m.cpu().instructions(), m.display_text(), m.peek(0x1000), m.peek(0x1001),
             m.peek(0x1002)};
 }
 

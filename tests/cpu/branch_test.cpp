@@ -165,7 +165,7 @@ TEST_P(Branch, HltStopsTheCpu) {
     EXPECT_TRUE(rig.cpu.halted());
     EXPECT_EQ(rig.r().pc, 0x0101);
     // Halted with interrupts off: time passes, nothing executes.
-    EXPECT_EQ(rig.cpu.run(rig.cpu.cycles() + 1000), 1000u);
+    EXPECT_EQ(rig.cpu.run(rig.cpu.tstates() + 1000), 1000u);
     EXPECT_EQ(rig.r().pc, 0x0101);
 }
 

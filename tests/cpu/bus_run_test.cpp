@@ -92,7 +92,7 @@ TEST(Run, WholeInstructionsUpToTheDeadline) {
     EXPECT_EQ(rig.cpu.run(5), 8u);          // the second NOP starts before 5 and finishes
     EXPECT_EQ(rig.cpu.instructions(), 2u);
     EXPECT_EQ(rig.cpu.run(8), 0u);          // already there
-    EXPECT_EQ(rig.cpu.cycles(), 8u);
+    EXPECT_EQ(rig.cpu.tstates(), 8u);
 }
 
 TEST(Run, HandlerCanShortenTheBatch) {
@@ -126,7 +126,7 @@ TEST(Run, DelayLoopTiming) {
                       0x76});             // HLT
     rig.cpu.on_halt = [&] { rig.cpu.request_stop(); };
     rig.cpu.run(1000000);
-    EXPECT_EQ(rig.cpu.cycles(), 7u + 199 * 14 + 11 + 5);
+    EXPECT_EQ(rig.cpu.tstates(), 7u + 199 * 14 + 11 + 5);
     EXPECT_EQ(rig.cpu.instructions(), 1u + 400 + 1);
 }
 
@@ -135,7 +135,7 @@ TEST(Run, DelayLoopTiming8080) {
     rig.load(0x0000, {0x06, 0xC8, 0x05, 0xC2, 0x02, 0x00, 0x76});
     rig.cpu.on_halt = [&] { rig.cpu.request_stop(); };
     rig.cpu.run(1000000);
-    EXPECT_EQ(rig.cpu.cycles(), 7u + 200 * 15 + 7);  // DCR 5 + JNZ 10 either way; HLT 7
+    EXPECT_EQ(rig.cpu.tstates(), 7u + 200 * 15 + 7);  // DCR 5 + JNZ 10 either way; HLT 7
 }
 
 // Debugger hooks: stop before an address, watch a write, and the same results as the plain path.
@@ -158,7 +158,7 @@ TEST(Debug, BreakpointStopsBeforeTheInstruction) {
     rig.cpu.set_debug_hooks(&hooks);
     rig.cpu.run(1000);
     EXPECT_EQ(rig.r().pc, 0x0002);
-    EXPECT_EQ(rig.cpu.cycles(), 8u);
+    EXPECT_EQ(rig.cpu.tstates(), 8u);
     hooks.break_at = 0xFFFF;
     rig.cpu.step();
     EXPECT_EQ(hooks.writes, (std::vector<std::uint16_t>{0x3000}));
@@ -184,7 +184,7 @@ TEST(Debug, DebugPathMatchesPlainPath) {
     debug.cpu.set_debug_hooks(&hooks);
     plain.cpu.run(100000);
     debug.cpu.run(100000);
-    EXPECT_EQ(plain.cpu.cycles(), debug.cpu.cycles());
+    EXPECT_EQ(plain.cpu.tstates(), debug.cpu.tstates());
     EXPECT_EQ(plain.cpu.instructions(), debug.cpu.instructions());
     EXPECT_EQ(plain.r().hl(), debug.r().hl());
     EXPECT_EQ(plain.ram, debug.ram);
@@ -202,7 +202,7 @@ TEST(Determinism, TwoRunsGiveIdenticalCounters) {
         for (unsigned i = 0; i < 256; ++i) rig.ram[0x1000 + i] = static_cast<std::uint8_t>(i * 7);
         rig.cpu.on_halt = [&rig] { rig.cpu.request_stop(); };
         rig.cpu.run(10'000'000);
-        return std::tuple{rig.cpu.instructions(), rig.cpu.cycles(), rig.r().a};
+        return std::tuple{rig.cpu.instructions(), rig.cpu.tstates(), rig.r().a};
     };
     EXPECT_EQ(run(), run());
 }

@@ -87,10 +87,10 @@ TEST(Interrupts, Rst75TakenAfterUnmaskEvenIfPinFell) {
     rig.sim(0x08);  // unmask all
     rig.ei();
     rig.cpu.step();  // the instruction after EI
-    const std::uint64_t t0 = rig.cpu.cycles();
+    const std::uint64_t t0 = rig.cpu.tstates();
     rig.cpu.step();  // acknowledge
     EXPECT_EQ(rig.r().pc, 0x003C);
-    EXPECT_EQ(rig.cpu.cycles() - t0, 12u);
+    EXPECT_EQ(rig.cpu.tstates() - t0, 12u);
     EXPECT_FALSE(rig.cpu.interrupts_enabled());
     EXPECT_FALSE(rig.cpu.rst75_latched());
     EXPECT_EQ(rig.pushed_pc(), 0x0102);
@@ -160,8 +160,8 @@ TEST(Interrupts, EiDelayHoldsAcrossRunBoundaries) {
     IrqRig rig;
     rig.cpu.set_intr(true);
     rig.ram[0x0100] = 0xFB;
-    rig.cpu.run(rig.cpu.cycles() + 1);  // ends right after EI
-    rig.cpu.run(rig.cpu.cycles() + 1);  // the next run must execute the NOP first
+    rig.cpu.run(rig.cpu.tstates() + 1);  // ends right after EI
+    rig.cpu.run(rig.cpu.tstates() + 1);  // the next run must execute the NOP first
     EXPECT_EQ(rig.r().pc, 0x0102);
 }
 
@@ -172,13 +172,13 @@ TEST(Interrupts, EiHltWakesOnInterrupt) {
     rig.ram[0x0101] = 0x76;  // HLT
     rig.cpu.run(1000);
     EXPECT_TRUE(rig.cpu.halted());
-    EXPECT_EQ(rig.cpu.cycles(), 1000u);  // idled to the deadline
+    EXPECT_EQ(rig.cpu.tstates(), 1000u);  // idled to the deadline
     rig.cpu.set_rst65(true);
     rig.cpu.run(1001);
     EXPECT_FALSE(rig.cpu.halted());
     EXPECT_EQ(rig.r().pc, 0x0034);
     EXPECT_EQ(rig.pushed_pc(), 0x0102);  // returns after the HLT
-    EXPECT_EQ(rig.cpu.cycles(), 1012u);
+    EXPECT_EQ(rig.cpu.tstates(), 1012u);
 }
 
 TEST(Interrupts, TrapIsNonMaskableAndSavesIe) {
@@ -227,10 +227,10 @@ TEST(Interrupts, IntrAcknowledgeWithCall) {
         rig.cpu.set_intr(true);
         rig.ei();
         rig.cpu.step();
-        const std::uint64_t t0 = rig.cpu.cycles();
+        const std::uint64_t t0 = rig.cpu.tstates();
         rig.cpu.step();
         EXPECT_EQ(rig.r().pc, 0x1234);
-        EXPECT_EQ(rig.cpu.cycles() - t0, v == Variant::I8085 ? 18u : 17u);
+        EXPECT_EQ(rig.cpu.tstates() - t0, v == Variant::I8085 ? 18u : 17u);
         EXPECT_EQ(cycles, (std::vector<unsigned>{0, 1, 2}));
         EXPECT_EQ(rig.pushed_pc(), 0x0102);
         EXPECT_FALSE(rig.cpu.interrupts_enabled());
@@ -244,10 +244,10 @@ TEST(Interrupts, IntrAcknowledgeWithRst) {
         rig.cpu.set_intr(true);
         rig.ei();
         rig.cpu.step();
-        const std::uint64_t t0 = rig.cpu.cycles();
+        const std::uint64_t t0 = rig.cpu.tstates();
         rig.cpu.step();
         EXPECT_EQ(rig.r().pc, 0x0028);
-        EXPECT_EQ(rig.cpu.cycles() - t0, v == Variant::I8085 ? 12u : 11u);
+        EXPECT_EQ(rig.cpu.tstates() - t0, v == Variant::I8085 ? 12u : 11u);
     }
 }
 
@@ -300,7 +300,7 @@ TEST(Interrupts, PinChangeFromHandlerIsSeenAfterTheInstruction) {
     rig.ram[0x0101] = 0x00;  // NOP
     rig.ram[0x0102] = 0xD3;  // OUT 10H
     rig.ram[0x0103] = 0x10;
-    rig.cpu.run(rig.cpu.cycles() + 4 + 4 + 10 + 12);
+    rig.cpu.run(rig.cpu.tstates() + 4 + 4 + 10 + 12);
     EXPECT_EQ(rig.r().pc, 0x0034);
     EXPECT_EQ(rig.pushed_pc(), 0x0104);
 }
