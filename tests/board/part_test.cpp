@@ -1,0 +1,139 @@
+// A part added in one place: a toy LED latch on port 00H with a heartbeat clock. It shows that the
+// machine advances, resets and saves any periph::Part without knowing what it is.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+
+#include "emu/board/machine.h"
+#include "peripherals/part.h"
+
+namespace alp85::test {
+namespace {
+
+// Eight LEDs latched by OUT 00H; it integrates how long the LEDs were lit (T-states x lit LEDs)
+// and ticks a heartbeat every 1000 T-states (an event the scheduler must stop at).
+class LedLatch final : public periph::Part, public IoDevice {
+public:
+    struct State {
+        std::uint8_t value = 0;
+        std::uint64_t lit = 0;    // LED-T-states
+        std::uint64_t beats = 0;  // heartbeats seen
+        std::uint64_t now = 0;
+        template <class S, class Io>
+        static void fields(S& s, Io& io) { io(s.value), io(s.lit), io(s.beats), io(s.now); }
+    };
+    static constexpr std::uint64_t kBeat = 1000;
+
+    std::string_view name() const override { return "leds"; }
+    std::string_view tag() const override { return "LEDS"; }
+    std::uint8_t state_version() const override { return 1; }
+    void reset(std::uint64_t) override { s.value = 0; }
+    void advance(std::uint64_t now) override {
+        s.lit += (now - s.now) * static_cast<unsigned>(std::popcount(s.value));
+        s.beats = now / kBeat;
+        s.now = now;
+    }
+    std::uint64_t next_event() const override { return (s.now / kBeat + 1) * kBeat; }
+    std::uint64_t now() const override { return s.now; }
+    void save_state(StateWriter& w) const override { State::fields(s, w); }
+    void load_state(StateReader& r) override {
+        State n;
+        State::fields(n, r);
+        r.expect_end();
+        s = n;
+    }
+    std::uint8_t in(std::uint8_t, std::uint64_t) override { return s.value; }
+    void out(std::uint8_t, std::uint8_t v, std::uint64_t t) override {
+        advance(t);
+        s.value = v;
+    }
+
+    State s;
+};
+
+// MVI A,55H (7 T) / OUT 00H (10 T: its I/O write cycle starts at T-state 7 + 7 = 14) / JMP $ (10 T).
+const std::vector<std::uint8_t> kProgram = {0x3E, 0x55, 0xD3, 0x00, 0xC3, 0x04, 0x08};
+
+struct Board {
+    Machine m;
+    LedLatch leds;
+    Board() {
+        m.attach(leds, &leds, 0x00, 0x00);  // the one place the part is added
+        m.load(0x0800, kProgram);
+        m.cpu().regs().pc = 0x0800;
+    }
+};
+
+TEST(Parts, AToyPartAdvancesWithTheMachine) {
+    Board b;
+    EXPECT_EQ(b.m.find_part("leds"), &b.leds);
+    b.m.run_until(10'000);
+    const std::uint64_t t = b.m.now();
+    EXPECT_EQ(b.leds.s.value, 0x55);
+    EXPECT_EQ(b.leds.s.now, t);                 // caught up with the CPU
+    EXPECT_EQ(b.leds.s.lit, (t - 14) * 4);      // 55H lights four LEDs from the OUT's write cycle on
+    EXPECT_EQ(b.leds.s.beats, t / 1000);
+}
+
+TEST(Parts, TheSchedulerStopsAtAPartsEvent) {
+    Board b;
+    std::vector<std::uint64_t> seen;
+    // The condition is checked after every batch; batches end at the part's heartbeats, so the
+    // machine is seen within one instruction (at most 10 T-states: JMP) after each beat.
+    b.m.run_until(5'000, [&] {
+        seen.push_back(b.m.now());
+        return false;
+    });
+    for (std::uint64_t beat = 1000; beat < 5000; beat += 1000) {
+        const bool near = std::any_of(seen.begin(), seen.end(), [&](std::uint64_t t) { return t >= beat && t < beat + 10; });
+        EXPECT_TRUE(near) << "no stop near " << beat;
+    }
+}
+
+TEST(Parts, AToyPartResetsWithTheMachine) {
+    Board b;
+    b.m.run_until(1'000);
+    ASSERT_EQ(b.leds.s.value, 0x55);
+    b.m.reset();
+    EXPECT_EQ(b.leds.s.value, 0x00);
+}
+
+TEST(Parts, AToyPartSurvivesSnapshotRestoreContinueBitForBit) {
+    Board a;
+    a.m.run_until(2'345);
+    const std::vector<std::uint8_t> snap = a.m.snapshot_bytes();
+    a.m.run_until(50'000);
+
+    Board b;
+    b.m.run_until(777);  // somewhere else entirely
+    b.m.restore_bytes(snap);
+    b.m.run_until(50'000);
+    EXPECT_EQ(b.m.now(), a.m.now());
+    EXPECT_EQ(b.leds.s.lit, a.leds.s.lit);
+    EXPECT_EQ(b.leds.s.beats, a.leds.s.beats);
+    EXPECT_EQ(b.m.snapshot_bytes(), a.m.snapshot_bytes());
+}
+
+TEST(Parts, AMachineWithoutThePartRefusesItsSnapshot) {
+    Board a;
+    a.m.run_until(1'000);
+    Machine plain;
+    const auto before = plain.snapshot_bytes();
+    try {
+        plain.restore_bytes(a.m.snapshot_bytes());
+        FAIL() << "a machine without LEDs accepted their snapshot";
+    } catch (const SnapshotError& e) {
+        EXPECT_NE(std::string(e.what()).find("LEDS"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(plain.snapshot_bytes(), before);
+}
+
+TEST(Parts, TwoPartsWithOneTagAreRefused) {
+    Board b;
+    LedLatch other;
+    EXPECT_THROW(b.m.attach(other), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace alp85::test
