@@ -18,10 +18,8 @@ bool have_monitor() { return true; }
 Firmware monitor() {
     Firmware f;
     f.segments.push_back({kMonitorRom_origin, {kMonitorRom, kMonitorRom + kMonitorRom_size}});
-    SymbolTable table;
-    if (const std::string err = table.load_map_text(kMonitorMap); !err.empty())
+    if (const std::string err = f.symbols.load_map_text(kMonitorMap); !err.empty())
         throw std::logic_error("the built-in monitor map is damaged: " + err);
-    for (const auto& [name, value] : table.names()) f.symbols.emplace(name, value);
     return f;
 }
 const char* monitor_map() { return kMonitorMap; }

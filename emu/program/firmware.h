@@ -6,13 +6,14 @@
 #include <vector>
 
 #include "emu/core/image.h"
+#include "emu/program/symbols.h"
 
 namespace alp85::firmware {
 
 // A built-in firmware image and the symbols of its source (from asm85's map).
 struct Firmware {
     std::vector<ImageSegment> segments;
-    std::map<std::string, std::uint16_t> symbols;  // upper case
+    SymbolTable symbols;  // its symbols and source lines (from asm85's map)
 };
 
 bool have_monitor();

@@ -33,17 +33,108 @@ std::string SymbolTable::load_map_text(std::string_view json) {
             return "asm85 map: a symbol without a name or a 16-bit value";
         if (s.contains("kind") && !s["kind"].is_string()) return "asm85 map: a symbol kind that is not a string";
     }
+    std::vector<std::string> files;
+    if (j.contains("files")) {
+        if (!j["files"].is_array()) return "asm85 map: files is not an array";
+        for (const auto& f : j["files"]) {
+            if (!f.is_string()) return "asm85 map: a file name that is not a string";
+            files.push_back(f.get<std::string>());
+        }
+    }
+    if (j.contains("lines")) {
+        if (!j["lines"].is_array()) return "asm85 map: lines is not an array";
+        for (const auto& l : j["lines"]) {
+            if (!l.is_object() || !l.contains("address") || !l["address"].is_number_unsigned() ||
+                l["address"].get<unsigned long long>() > 0xFFFF || !l.contains("length") ||
+                !l["length"].is_number_unsigned() || l["length"].get<unsigned long long>() > 0x10000 ||
+                !l.contains("file") || !l["file"].is_number_unsigned() ||
+                l["file"].get<unsigned long long>() >= files.size() || !l.contains("line") ||
+                !l["line"].is_number_integer())
+                return "asm85 map: a line entry without address, length, file or line";
+        }
+    }
     for (const auto& s : j["symbols"]) {
         const std::string name = s["name"].get<std::string>();
         const auto value = static_cast<std::uint16_t>(s["value"].get<unsigned>());
         const std::string kind = s.contains("kind") ? s["kind"].get<std::string>() : "label";
         add(name, value, kind);
     }
+    if (j.contains("lines")) {
+        for (const auto& l : j["lines"])
+            add_line(static_cast<std::uint16_t>(l["address"].get<unsigned>()),
+                     static_cast<std::uint16_t>(std::min(l["length"].get<unsigned>(), 0xFFFFu)),
+                     files[l["file"].get<std::size_t>()], l["line"].get<int>());
+    }
     return {};
 }
 
+void SymbolTable::add_assembly(const asm85::Result& result) {
+    for (const asm85::Symbol& s : result.symbols) {
+        add(s.name, s.value, asm85::kind_name(s.kind));
+    }
+    for (const asm85::LineSpan& l : result.line_map) {
+        if (l.file >= 0 && static_cast<std::size_t>(l.file) < result.files.size())
+            add_line(l.address, l.length, result.files[static_cast<std::size_t>(l.file)], l.line);
+    }
+}
+
+void SymbolTable::add_table(const SymbolTable& other) {
+    for (const auto& [addr, name] : other.labels_) add(name, addr, "label");
+    for (const auto& [addr, name] : other.equates_) add(name, addr, "equ");
+    for (const auto& [name, value] : other.names()) by_name_[name] = value;
+    for (const Span& sp : other.spans_)
+        add_line(sp.address, sp.length, other.files_[static_cast<std::size_t>(sp.file)], sp.line);
+}
+
+int SymbolTable::file_index(const std::string& file) {
+    for (std::size_t i = 0; i < files_.size(); ++i)
+        if (files_[i] == file) return static_cast<int>(i);
+    files_.push_back(file);
+    return static_cast<int>(files_.size() - 1);
+}
+
+void SymbolTable::add_line(std::uint16_t address, std::uint16_t length, const std::string& file, int line) {
+    if (length == 0) return;
+    spans_.push_back({address, length, file_index(file), line});
+}
+
+std::optional<SourceLine> SymbolTable::line_of(std::uint16_t addr) const {
+    for (auto it = spans_.rbegin(); it != spans_.rend(); ++it) {
+        if (static_cast<std::uint16_t>(addr - it->address) < it->length)
+            return SourceLine{files_[static_cast<std::size_t>(it->file)], it->line};
+    }
+    return std::nullopt;
+}
+
+bool SymbolTable::file_matches(int index, std::string_view file) const {
+    const std::string& full = files_[static_cast<std::size_t>(index)];
+    if (full == file) return true;
+    // "thesis.asm" or "thesis/thesis.asm" names the file whose path ends in those components.
+    return full.size() > file.size() && full.compare(full.size() - file.size(), file.size(), file) == 0 &&
+           full[full.size() - file.size() - 1] == '/';
+}
+
+std::vector<std::uint16_t> SymbolTable::addresses_of(std::string_view file, int line) const {
+    std::vector<std::uint16_t> out;
+    for (const Span& s : spans_) {
+        if (s.line == line && file_matches(s.file, file) &&
+            std::find(out.begin(), out.end(), s.address) == out.end())
+            out.push_back(s.address);
+    }
+    return out;
+}
+
+std::optional<SourceLine> SymbolTable::next_line_with_code(std::string_view file, int line) const {
+    std::optional<SourceLine> best;
+    for (const Span& s : spans_) {
+        if (s.line >= line && file_matches(s.file, file) && (!best || s.line < best->line))
+            best = SourceLine{files_[static_cast<std::size_t>(s.file)], s.line};
+    }
+    return best;
+}
+
 void SymbolTable::add(std::string_view name, std::uint16_t value, std::string_view kind) {
-    by_name_.emplace(upper(name), value);
+    by_name_[upper(name)] = value;
     if (kind == "label")
         labels_.emplace(value, std::string(name));
     else if (kind == "equ" || kind == "set")

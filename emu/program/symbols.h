@@ -1,5 +1,7 @@
-// Symbols from asm85's JSON map ("alp85-asm-map", version 1) for the disassembler and debugger,
-// and disassembly of emulated memory with those symbols. The disassembler itself is asm85's
+// The one table of what is known about the loaded programs: their symbols and the source line of
+// every byte, from asm85's result or its JSON map ("alp85-asm-map", version 1), for the
+// disassembler, the script language and the debugger; and disassembly of emulated memory with
+// those symbols. The disassembler itself is asm85's
 // (asm/disasm.h, over the shared opcode table); this is the thin layer that feeds it names.
 #pragma once
 
@@ -9,6 +11,9 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <vector>
+
+#include "asm/asm85.h"
 
 #include "asm/disasm.h"
 #include "emu/core/bus.h"
@@ -16,8 +21,19 @@
 
 namespace alp85 {
 
+// Where a byte came from: a source file and a 1-based line.
+struct SourceLine {
+    std::string file;
+    int line = 0;
+    friend bool operator==(const SourceLine&, const SourceLine&) = default;
+};
+
 class SymbolTable {
 public:
+    // Adds the symbols and source lines of an assembly, or of another table (a later definition
+    // of a name wins).
+    void add_assembly(const asm85::Result& result);
+    void add_table(const SymbolTable& other);
     // Adds the symbols of one map (several maps may be loaded). Returns "" or an error message.
     std::string load_map_text(std::string_view json);
     std::string load_map_file(const std::string& path);
@@ -34,11 +50,32 @@ public:
     std::optional<std::string> label_at(std::uint16_t addr) const;
     std::optional<std::uint16_t> value_of(std::string_view name) const;  // case-insensitive
     std::size_t size() const { return by_name_.size(); }
+    bool empty() const { return by_name_.empty(); }
     const std::unordered_map<std::string, std::uint16_t>& names() const { return by_name_; }  // upper case
 
+    // ---- source lines ----------------------------------------------------------------------------
+    void add_line(std::uint16_t address, std::uint16_t length, const std::string& file, int line);
+    // The source line of the byte at `addr` (the last loaded program wins where two overlap).
+    std::optional<SourceLine> line_of(std::uint16_t addr) const;
+    // The first address of every span that `file:line` produced; `file` matches a loaded file's
+    // full name or its last component(s) ("thesis.asm" finds "/x/firmware/thesis/thesis.asm").
+    std::vector<std::uint16_t> addresses_of(std::string_view file, int line) const;
+    // The next line of `file` at or after `line` that produced code (a breakpoint on a comment
+    // binds there), or nullopt.
+    std::optional<SourceLine> next_line_with_code(std::string_view file, int line) const;
+
 private:
+    struct Span {
+        std::uint16_t address, length;
+        int file, line;
+    };
+    int file_index(const std::string& file);
+    bool file_matches(int index, std::string_view file) const;
+
     std::map<std::uint16_t, std::string> labels_, equates_;
     std::unordered_map<std::string, std::uint16_t> by_name_;
+    std::vector<std::string> files_;
+    std::vector<Span> spans_;  // in load order
 };
 
 // One instruction at `addr`, as the given variant decodes it, with a16/d16 operands named from

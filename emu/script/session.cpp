@@ -30,7 +30,23 @@ std::string lower_ext(const std::filesystem::path& p) {
 }  // namespace
 
 Session::Session(SessionOptions options)
-    : options_(std::move(options)), machine_(std::make_unique<Machine>(Machine::Options{options_.cpu})) {}
+    : options_(std::move(options)),
+      machine_(std::make_unique<Machine>(Machine::Options{options_.cpu})),
+      debugger_(*machine_) {
+    // The text front ends (alp85 script, alp85 run) read the events as they always printed them.
+    if (std::ostream* out = options_.out) {
+        debugger_.listen([out](const debug::Event& e) {
+            switch (e.kind) {
+                case debug::Event::Kind::Output: *out << e.text << '\n'; break;
+                case debug::Event::Kind::Stopped:
+                    *out << fmt::format("{}:{}: stopped at {} {}\n", e.origin.file, e.origin.line, debug::name(e.stop.reason),
+                                        hex(e.stop.reason == debug::StopReason::Watchpoint ? *e.stop.data : e.stop.pc, 4));
+                    break;
+                case debug::Event::Kind::ExpectFailed: break;  // the runner reports the outcome
+            }
+        });
+    }
+}
 
 std::string Session::format_time(std::uint64_t t) {
     return fmt::format("{:.3f} ms ({} T-states)", static_cast<double>(t) * 1000.0 / board::kCpuHz, t);
@@ -48,12 +64,12 @@ std::filesystem::path Session::resolve(const std::string& path) const {
 
 std::optional<std::int64_t> Session::resolve(const Value& v, std::string& error) const {
     if (v.symbol.empty()) return v.number;
-    const auto it = symbols_.find(v.symbol);
-    if (it == symbols_.end()) {
+    const auto value = debugger_.program().value_of(v.symbol);
+    if (!value) {
         error = fmt::format("unknown symbol '{}'", v.symbol);
         return std::nullopt;
     }
-    return it->second + v.number;
+    return *value + v.number;
 }
 
 Session::Outcome Session::fail(const Command& c, std::string what) const {
@@ -62,6 +78,8 @@ Session::Outcome Session::fail(const Command& c, std::string what) const {
 }
 
 Session::Outcome Session::fail_expect(const Command& c, const std::string& expected, const std::string& actual) const {
+    debugger_.emit({debug::Event::Kind::ExpectFailed, debugger_.here(debug::StopReason::Condition),
+                    fmt::format("expected: {}; actual: {}", expected, actual), origin(c)});
     return {Status::Failed, fmt::format("{}:{}: expectation failed: {}\n  expected: {}\n  actual:   {}\n  {}",
                                         c.where.file, c.where.line, rtrim(c.line), expected, actual, where_now())};
 }
@@ -129,7 +147,10 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
             case Op::Monitor:
                 if (!options_.monitor_rom) err(c, c.where.col, "this alp85 was built without the monitor ROM");
                 else
-                    for (const auto& s : options_.monitor_rom().symbols) known.insert(s.first);
+                {
+                    const firmware::Firmware rom = options_.monitor_rom();
+                    for (const auto& s : rom.symbols.names()) known.insert(s.first);
+                }
                 break;
             case Op::RunUntil:
             case Op::Break:
@@ -170,7 +191,10 @@ Session::Outcome Session::load(const Command& c) {
         const auto cached = assembled_.find(path.string());
         const LoadedImage img = cached != assembled_.end() && !lo.address ? cached->second : read_image(path, lo);
         machine_->load(img.segments);
-        for (const auto& s : img.symbols) symbols_[s.name] = s.value;
+        if (img.assembly)
+            debugger_.program().add_assembly(*img.assembly);
+        else
+            for (const auto& s : img.symbols) debugger_.program().add(s.name, s.value, asm85::kind_name(s.kind));
     } catch (const LoadError& e) {
         return fail(c, e.what());
     } catch (const std::out_of_range& e) {
@@ -197,9 +221,7 @@ Session::Outcome Session::press(const Command& c, const KeyRef& key, std::uint64
             m.vect_intr_at(false, t + hold);
             break;
     }
-    if (m.run_until(t + hold + gap) == Machine::Stop::Breakpoint && options_.out)
-        *options_.out << fmt::format("{}:{}: stopped at breakpoint {}\n", c.where.file, c.where.line,
-                                     hex(m.cpu().regs().pc, 4));
+    debugger_.run_until(t + hold + gap, {}, origin(c));
     return {};
 }
 
@@ -311,9 +333,9 @@ Session::Outcome Session::expect(const Command& c) {
         case Op::ExpectSymbol: {
             const auto v = value(c.values[0]);
             if (!v) return fail(c, e);
-            const auto it = symbols_.find(c.name);
-            if (it == symbols_.end()) return fail(c, fmt::format("unknown symbol '{}'", c.name));
-            if (it->second != static_cast<std::uint16_t>(*v)) return fail_expect(c, hex(*v & 0xFFFF, 4), hex(it->second, 4));
+            const auto actual = debugger_.program().value_of(c.name);
+            if (!actual) return fail(c, fmt::format("unknown symbol '{}'", c.name));
+            if (*actual != static_cast<std::uint16_t>(*v)) return fail_expect(c, hex(*v & 0xFFFF, 4), hex(*actual, 4));
             return {};
         }
         case Op::ExpectTime: {
@@ -342,8 +364,7 @@ Session::Outcome Session::expect(const Command& c) {
 
 Session::Outcome Session::execute(const Command& c) {
     Machine& m = *machine_;
-    std::ostream* out = options_.out;
-    if (options_.verbose && out) *out << fmt::format("[{}] {}:{}: {}\n", format_time(elapsed()), c.where.file, c.where.line, rtrim(c.line));
+    if (options_.verbose) output(c, fmt::format("[{}] {}:{}: {}", format_time(elapsed()), c.where.file, c.where.line, rtrim(c.line)));
     std::string e;
     switch (c.op) {
         case Op::Load: return load(c);
@@ -352,7 +373,7 @@ Session::Outcome Session::execute(const Command& c) {
             {
                 const firmware::Firmware rom = options_.monitor_rom();
                 m.load(rom.segments);
-                for (const auto& [name, value] : rom.symbols) symbols_[name] = value;
+                debugger_.program().add_table(rom.symbols);
             }
             return {};
         case Op::Reset:
@@ -378,8 +399,7 @@ Session::Outcome Session::execute(const Command& c) {
             return {};
         }
         case Op::Run:
-            if (m.run_for(c.time) == Machine::Stop::Breakpoint && out)
-                *out << fmt::format("{}:{}: stopped at breakpoint {}\n", c.where.file, c.where.line, hex(m.cpu().regs().pc, 4));
+            debugger_.run_for(c.time, {}, origin(c));
             return {};
         case Op::RunUntil: {
             const auto a = resolve(*c.address, e);
@@ -443,13 +463,15 @@ Session::Outcome Session::execute(const Command& c) {
             }
             return {};
         case Op::PrintDisplay:
-            if (out && c.text == "text") *out << '"' << m.display_text() << "\"\n";
-            else if (out)
-                for (const std::string& line : m.display_art()) *out << line << '\n';
+            if (c.text == "text") {
+                output(c, '"' + m.display_text() + '"');
+            } else {
+                std::string art;
+                for (const std::string& line : m.display_art()) art += (art.empty() ? "" : "\n") + line;
+                output(c, art);
+            }
             return {};
-        case Op::Print:
-            if (out) *out << c.text << '\n';
-            return {};
+        case Op::Print: output(c, c.text); return {};
         default: return expect(c);
     }
 }

@@ -15,6 +15,7 @@
 #include "emu/program/firmware.h"
 #include "emu/program/image_loader.h"
 #include "emu/board/machine.h"
+#include "emu/debug/debugger.h"
 #include "emu/script/command.h"
 #include "emu/script/parser.h"
 
@@ -26,7 +27,7 @@ struct SessionOptions {
     // The monitor EPROM image and its symbols for the `monitor` command (the front end supplies
     // the built ROM, firmware::monitor).
     std::function<firmware::Firmware()> monitor_rom;
-    std::ostream* out = nullptr;  // print, -v echo
+    std::ostream* out = nullptr;  // events as text (print, stops, -v echo); nullptr: none
     bool verbose = false;
 };
 
@@ -42,6 +43,8 @@ public:
 
     Machine& machine() { return *machine_; }
     const Machine& machine() const { return *machine_; }
+    // The debugging API over this session's machine: front ends listen to its events.
+    debug::Debugger& debugger() { return debugger_; }
 
     // Runs one command. Failed expectations and commands that cannot be carried out (a load that
     // falls off the board, a snapshot that is refused, a run-until that times out) give Failed.
@@ -52,7 +55,7 @@ public:
     // problem to `errors` and keeps the assembled images for the run.
     void check(const std::vector<Command>& commands, std::vector<ParseError>& errors);
 
-    const std::map<std::string, std::uint16_t>& symbols() const { return symbols_; }
+    const SymbolTable& symbols() const { return debugger_.program(); }
     std::uint64_t elapsed() const { return machine_->now() - time_origin_; }
     // "at 12.345 ms (37920 T-states), PC=0123H, display "H1=----"" - for failure reports.
     std::string where_now() const;
@@ -66,6 +69,10 @@ private:
     static std::filesystem::path output_path(const std::string& path) { return path; }  // snapshots: from the working directory
     std::optional<std::int64_t> resolve(const Value& v, std::string& error) const;
     Outcome fail(const Command& c, std::string what) const;
+    debug::Origin origin(const Command& c) const { return {c.where.file, c.where.line}; }
+    void output(const Command& c, std::string text) const {
+        debugger_.emit({debug::Event::Kind::Output, {}, std::move(text), origin(c)});
+    }
     Outcome fail_expect(const Command& c, const std::string& expected, const std::string& actual) const;
     Outcome load(const Command& c);
     Outcome press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap);
@@ -75,7 +82,7 @@ private:
 
     SessionOptions options_;
     std::unique_ptr<Machine> machine_;
-    std::map<std::string, std::uint16_t> symbols_;
+    debug::Debugger debugger_;
     std::map<std::string, LoadedImage> assembled_;  // from check(), by resolved path
     std::uint64_t time_origin_ = 0;
     std::ostream* trace_ = nullptr;
