@@ -1,4 +1,4 @@
-// The board benchmark: one firmware-like workload (emu/bench_board.asm, assembled at build time)
+// The board benchmark: one firmware-like workload (emu/bench/bench_board.asm, assembled at build time)
 // on the bare core with a flat 64 KiB RAM, and on the ALP 85 board with its 8155 and 8279 idle.
 // The ratio is what the board's scheduler costs. Used by `alp85 bench board` and tests/bench/board.
 #pragma once

@@ -1,4 +1,4 @@
-// The CPU benchmark workload (emu/bench_cpu.asm, assembled at build time): one fixed program on a
+// The CPU benchmark workload (emu/bench/bench_cpu.asm, assembled at build time): one fixed program on a
 // bare CPU with 64 KiB of RAM, run for a given number of T-states. Used by `alp85 bench cpu`
 // and by the Google Benchmark target in tests/bench/cpu.
 #pragma once

@@ -1,4 +1,4 @@
-// The board's scheduler overhead: the same firmware-like workload (emu/bench_board.asm) on the
+// The board's scheduler overhead: the same firmware-like workload (emu/bench/bench_board.asm) on the
 // bare core and on the ALP 85 with its 8155 and 8279 idle. Target: the board at >= 90% of the bare
 // core's T-states per second. Figures are reported (counter "Tstates/s"), never asserted; `alp85
 // bench board` prints the same comparison.
