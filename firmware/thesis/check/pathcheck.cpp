@@ -1,4 +1,14 @@
-// Throwaway harness: thesis firmware on the board with a simple transducer model.
+// Verification harness (not part of the build): the thesis firmware on the emulated board with a
+// minimal transducer model -- a rising edge of the X (Y) pulse on port A moves the axis one step
+// in the direction its port A direction bit gives, toggles port B bit 1 (bit 0) and sets port B
+// bit 2 (bit 3) to that direction. Types the Appendix C session, runs to HLT, prints the result.
+//   g++ -std=c++20 -O2 -I. -Ibuild -Ibuild/firmware/monitor firmware/thesis/check/pathcheck.cpp \
+//     -o /tmp/h/h build/emu/libalp85_script.a build/emu/libalp85_board.a \
+//     build/emu/libalp85_atomic_file.a build/emu/libalp85_emu.a \
+//     build/firmware/monitor/libmonitor_embed.a build/peripherals/libalp85_peripherals.a \
+//     build/asm/libalp85_asm.a $(find build -name libalp85_isa.a) -lfmt
+//   /tmp/h/h build/firmware/thesis/thesis-fixed.hex Z X1 Y1 X2 Y2 FEED [max_ms]   (4 digits each)
+// PATHLOG=1 prints every step.
 #include <cstdio>
 #include <fstream>
 #include <sstream>

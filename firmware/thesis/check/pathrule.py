@@ -1,3 +1,6 @@
+# The path rule of docs/thesis.md in Python, checked against thesis-fixed on the emulated board
+# with pathcheck.cpp's transducer model: python3 pathrule.py SEED COUNT MAXCOORD (from the repo
+# root, /tmp/h/h = pathcheck built as in its header).
 import subprocess, random, sys
 def rule(x1,y1,x2,y2):
     dx,dy=x2-x1,y2-y1
@@ -23,7 +26,7 @@ def rule(x1,y1,x2,y2):
 random.seed(int(sys.argv[1]) if len(sys.argv)>1 else 1)
 bad=0
 for i in range(int(sys.argv[2]) if len(sys.argv)>2 else 8):
-    x1,y1,x2,y2=[random.randint(0,60) for _ in range(4)]
+    x1,y1,x2,y2=[random.randint(0,int(sys.argv[3]) if len(sys.argv)>3 else 60) for _ in range(4)]
     out=subprocess.run(['/tmp/h/h','build/firmware/thesis/thesis-fixed.hex','0000']+['%04d'%v for v in (x1,y1,x2,y2)]+['1500','60000'],
         capture_output=True,text=True,env={'PATHLOG':'1'}).stdout.split('\n')
     got=[(l.split()[0],int(l.split()[1]),int(l.split()[2])) for l in out if l[:1] in 'XY' and len(l.split())==3]
