@@ -121,7 +121,7 @@ r(range(786, 796), 'ANA\'s test: erratum E12')
 r([805, 819], 'SOEEN read as SOBE (no other label; B read as E)')
 r([820, 823], 'ONYP never writes 0CH: erratum E13')
 r([851], '1B39H (the sign of dY) where 1B38H (the delay) is meant: erratum E14')
-r([866], 'H830 reversed = 038H; E read as 3: 0E8H (above 0C8H, below it BBOL2 is the middle case)')
+r([866], 'H830 reversed = 038H, E read as 3: 0E8H. A is at least C8H here, so 38H would send every ratio to BBOL3')
 r([888], 'END')
 CONF = str.maketrans({'O':'0','I':'1','L':'1','B':'8','Z':'2','S':'5','K':'M','Н':'H','В':'B','А':'A','Α':'A','Λ':'A','Μ':'M','Х':'X','С':'C','G':'6'})
 def norm(t):
