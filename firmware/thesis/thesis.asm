@@ -379,7 +379,6 @@ Y:      MVI     A,6EH                   ; L300
 ;      The prompt helpers, the 4-digit decimal entry, the Z axis, SPEED, and the start of PARAM.
 ;      Style of the surviving code: literal addresses, AUS with B advancing, BASLA-type polls.
 
-; ; END OF COORD                                                           ; NEW
 ONEE:   MVI     A,06H                   ; NEW  "1" after H (X1 prompt)
         CALL    AUS                     ; NEW
         RET                             ; NEW
