@@ -1,25 +1,61 @@
 #include "emu/program/firmware.h"
 
-#ifdef ALP85_HAVE_MONITOR
 #include <stdexcept>
 
-#include "emu/program/symbols.h"
-#include "monitor_embed.h"
+#include "emu/program/ihex.h"
 
+#ifdef ALP85_HAVE_MONITOR
+#include "monitor_embed.h"
 namespace alp85 {
 extern const char kMonitorMap[];  // monitor.json, embedded by emu/embed_text.cmake
 }
 #endif
+#ifdef ALP85_HAVE_THESIS
+namespace alp85 {
+extern const char kThesisHex[], kThesisMap[], kThesisFixedHex[], kThesisFixedMap[];  // emu/embed_text.cmake
+}
+#endif
 
 namespace alp85::firmware {
+namespace {
+
+void load_map(Firmware& f, const char* map) {
+    if (const std::string err = f.symbols.load_map_text(map); !err.empty())
+        throw std::logic_error("the built-in " + f.name + " map is damaged: " + err);
+}
+
+[[maybe_unused]] Firmware from_hex(std::string name, const char* hex, const char* map) {
+    Firmware f;
+    f.name = std::move(name);
+    std::vector<std::uint8_t> bytes(0x10000);
+    std::vector<bool> used(0x10000);
+    const std::string err = load_intel_hex(hex, [&](std::uint16_t a, std::uint8_t b) {
+        bytes[a] = b;
+        used[a] = true;
+    });
+    if (!err.empty()) throw std::logic_error("the built-in " + f.name + " image is damaged: " + err);
+    for (std::size_t a = 0; a < used.size();) {
+        if (!used[a]) {
+            ++a;
+            continue;
+        }
+        ImageSegment seg{static_cast<std::uint16_t>(a), {}};
+        while (a < used.size() && used[a]) seg.bytes.push_back(bytes[a++]);
+        f.segments.push_back(std::move(seg));
+    }
+    load_map(f, map);
+    return f;
+}
+
+}  // namespace
 
 #ifdef ALP85_HAVE_MONITOR
 bool have_monitor() { return true; }
 Firmware monitor() {
     Firmware f;
+    f.name = "monitor";
     f.segments.push_back({kMonitorRom_origin, {kMonitorRom, kMonitorRom + kMonitorRom_size}});
-    if (const std::string err = f.symbols.load_map_text(kMonitorMap); !err.empty())
-        throw std::logic_error("the built-in monitor map is damaged: " + err);
+    load_map(f, kMonitorMap);
     return f;
 }
 const char* monitor_map() { return kMonitorMap; }
@@ -28,5 +64,24 @@ bool have_monitor() { return false; }
 Firmware monitor() { return {}; }
 const char* monitor_map() { return ""; }
 #endif
+
+std::vector<Entry> builtin() {
+    std::vector<Entry> out;
+    if (have_monitor()) out.push_back({"monitor", "the ALP 85 monitor EPROM at 0000H (firmware/monitor)"});
+#ifdef ALP85_HAVE_THESIS
+    out.push_back({"thesis", "the thesis firmware of Appendix B at 0800H, as printed (firmware/thesis)"});
+    out.push_back({"thesis-fixed", "the thesis firmware with its errata repaired (firmware/thesis/RECONSTRUCTION.md)"});
+#endif
+    return out;
+}
+
+std::optional<Firmware> find(std::string_view name) {
+    if (name == "monitor" && have_monitor()) return monitor();
+#ifdef ALP85_HAVE_THESIS
+    if (name == "thesis") return from_hex("thesis", kThesisHex, kThesisMap);
+    if (name == "thesis-fixed") return from_hex("thesis-fixed", kThesisFixedHex, kThesisFixedMap);
+#endif
+    return std::nullopt;
+}
 
 }  // namespace alp85::firmware

@@ -1,8 +1,10 @@
-// Firmware built into alp85 by the build: the ALP 85 monitor EPROM (firmware/monitor).
+// Firmware built into alp85 by the build: the ALP 85 monitor EPROM (firmware/monitor) and the
+// two builds of the thesis firmware (firmware/thesis: "thesis" as printed, "thesis-fixed").
 #pragma once
 
-#include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "emu/core/image.h"
@@ -12,6 +14,7 @@ namespace alp85::firmware {
 
 // A built-in firmware image and the symbols of its source (from asm85's map).
 struct Firmware {
+    std::string name;
     std::vector<ImageSegment> segments;
     SymbolTable symbols;  // its symbols and source lines (from asm85's map)
 };
@@ -22,5 +25,15 @@ bool have_monitor();
 Firmware monitor();
 // The monitor's asm85 map (JSON, "alp85-asm-map"); empty when this build has no monitor.
 const char* monitor_map();
+
+// Every firmware built into this alp85, by name ("monitor", "thesis", "thesis-fixed"), with a
+// line saying what it is.
+struct Entry {
+    std::string_view name;
+    std::string_view what;
+};
+std::vector<Entry> builtin();
+// The named firmware (image and symbols), or nullopt.
+std::optional<Firmware> find(std::string_view name);
 
 }  // namespace alp85::firmware

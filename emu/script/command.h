@@ -36,7 +36,7 @@ enum class Reg : std::uint8_t { A, B, C, D, E, H, L, F, BC, DE, HL, SP, PC, PSW 
 enum class Compare : std::uint8_t { Lt, Le, Eq, Ge, Gt };
 
 enum class Op : std::uint8_t {
-    Load, Monitor, Reset,
+    Load, Monitor, Firmware, Reset,
     Press, Type, KeyDown, KeyUp,
     Run, RunUntil, WaitDisplay, Step,
     Break, Delete, DeleteAll,

@@ -49,7 +49,7 @@ public:
             {"BREAK", &LineParser::brk},       {"DELETE", &LineParser::del},
             {"EXPECT", &LineParser::expect},   {"SET", &LineParser::set},
             {"SAVE", &LineParser::save},       {"RESTORE", &LineParser::restore},
-            {"PRINT", &LineParser::print},
+            {"PRINT", &LineParser::print},     {"FIRMWARE", &LineParser::firmware},
         };
         const auto it = verbs.find(verb);
         if (it == verbs.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
@@ -232,6 +232,10 @@ private:
     bool monitor(Command& c) {
         c.op = Op::Monitor;
         return true;
+    }
+    bool firmware(Command& c) {
+        c.op = Op::Firmware;
+        return string_operand(c.text, "a firmware name (thesis, thesis-fixed, monitor)");
     }
     bool reset(Command& c) {
         c.op = Op::Reset;

@@ -152,6 +152,17 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                     for (const auto& s : rom.symbols.names()) known.insert(s.first);
                 }
                 break;
+            case Op::Firmware: {
+                const auto fw = firmware::find(c.text);
+                if (!fw) {
+                    std::string names;
+                    for (const auto& e : firmware::builtin()) names += (names.empty() ? "" : ", ") + std::string(e.name);
+                    err(c, col_of(c, c.text), fmt::format("no firmware '{}' in this alp85 (built in: {})", c.text, names));
+                } else {
+                    for (const auto& s : fw->symbols.names()) known.insert(s.first);
+                }
+                break;
+            }
             case Op::RunUntil:
             case Op::Break:
             case Op::Delete: check_value(c, *c.address, 0, 0xFFFF, "address"); break;
@@ -376,6 +387,13 @@ Session::Outcome Session::execute(const Command& c) {
                 debugger_.program().add_table(rom.symbols);
             }
             return {};
+        case Op::Firmware: {
+            const auto fw = firmware::find(c.text);
+            if (!fw) return fail(c, fmt::format("no firmware '{}' in this alp85", c.text));
+            m.load(fw->segments);
+            debugger_.program().add_table(fw->symbols);
+            return {};
+        }
         case Op::Reset:
             m.reset();
             time_origin_ = m.now();
