@@ -28,7 +28,9 @@ MachineTool::MachineTool(const Params& p) : p_(p) {
         load.theta_lo = x.table.low_stop_mm() / x.mm_per_rad;
         load.theta_hi = x.table.high_stop_mm() / x.mm_per_rad;
         x.motor.configure(ap.motor, load);
-        x.step_mm = x.motor.step_angle() * x.mm_per_rad;
+        x.step_mm = ap.table.lead_mm_per_rev / (4.0 * ap.motor.rotor_teeth);
+        x.lo_steps = static_cast<std::int64_t>(std::ceil(x.table.low_stop_mm() / x.step_mm - 1e-9));
+        x.hi_steps = static_cast<std::int64_t>(std::floor(x.table.high_stop_mm() / x.step_mm + 1e-9));
         init_axis(a);
     }
 }
@@ -101,15 +103,15 @@ void MachineTool::set_drive(Axis axis, bool pulse, bool direction, std::uint64_t
     const std::uint8_t ph = Sequencer::phases(st.sequencer);
     if (s_.model == MotorModel::Ideal) {
         const std::int64_t next = st.ideal_steps + d;
-        const double x = static_cast<double>(next) * ax_[a].step_mm;
-        const Table& table = ax_[a].table;
+        const AxisParts& x = ax_[a];
+        const Table& table = x.table;
         std::int8_t at = 0;
-        if (x > table.high_stop_mm() || x < table.low_stop_mm()) {
+        if (next > x.hi_steps || next < x.lo_steps) {
             at = d > 0 ? 1 : -1;  // the screw stalls the motor: the step is lost
         } else {
             st.ideal_steps = next;
-            if (x >= table.high_stop_mm()) at = 1;
-            if (x <= table.low_stop_mm()) at = -1;
+            if (next == x.hi_steps) at = 1;
+            if (next == x.lo_steps) at = -1;
         }
         st.motor.phases = ph;
         st.motor.theta = static_cast<double>(st.ideal_steps) * ax_[a].motor.step_angle();

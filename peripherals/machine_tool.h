@@ -144,8 +144,9 @@ private:
         StepperMotor motor;
         Table table;
         Transducer transducer;
-        double step_mm = 0.05;
+        double step_mm = 0.05;          // lead / steps per revolution
         double mm_per_rad = 0;
+        std::int64_t lo_steps = 0, hi_steps = 0;  // the end stops in whole steps (ideal model)
     };
     static int idx(Axis a) { return static_cast<int>(a); }
     void integrate_to(int a, std::uint64_t t);
