@@ -27,10 +27,12 @@
 // electrical time constant L/R = 126 us (on) and L/(r+R+Rf) (off) never limits the step; the
 // mechanics then take a semi-implicit (symplectic) Euler step with the torque of the step's mean
 // current, which keeps the lightly damped ringing from gaining or losing energy numerically.
-// The step H is therefore set by the mechanics and the EMF's rate of change: H = 96 T-states
-// (31.25 us, a quarter of the electrical time constant); the rotor's fastest natural period
-// (rotor alone, ~4.6 ms) is ~150 steps, and at 500 steps/s the electrical angle moves 0.02 rad
-// per step. (Docs: the calibration is repeated at H/2 and agrees.)
+// The step H is therefore set by the mechanics and the EMF's rate of change: H = 192 T-states
+// (62.5 us, half the electrical time constant); the rotor's fastest natural period (rotor alone,
+// ~4.6 ms) is ~70 steps, the loaded ringing (~12 ms) ~190, and at 500 steps/s the electrical angle
+// moves 0.05 rad per step. The calibration sweep gives the same start-stop limit at H = 48, 96,
+// 192 and 256 T-states (docs/machine.md); the ringing frequency agrees with the linearised hand
+// calculation within 1 %.
 //
 // Settling: a rotor whose velocity is zero and stuck (Coulomb friction or an end stop holds it), or
 // whose residual motion is below 1e-6 rad in amplitude (energy test), with all currents within
@@ -68,7 +70,7 @@ public:
         double detent_nm = 0.02;          // ~5 % of the holding torque, typical for hybrids
         double viscous_nms = 1e-4;        // bearings and screw lubrication, N m s/rad
         // Integration.
-        std::uint32_t step_tstates = 96;  // H (31.25 us at 3.072 MHz)
+        std::uint32_t step_tstates = 192; // H (62.5 us at 3.072 MHz)
     };
 
     // Per-axis dynamic state (the grid time is kept by the owner).
@@ -128,7 +130,13 @@ private:
     Params p_;
     Load load_;
     double step_angle_ = 0, vs_ = 0, r_on_ = 0, r_off_ = 0, kt_ = 0, j_ = 0, i_on_ = 0;
-    double h_ = 0, a_on_ = 0, a_off_ = 0, stiffness_ = 0;
+    struct Drive {  // per drive pattern: each half-winding's steady current, conductance, on/off
+        double i0[4];
+        double g[4];
+        std::uint8_t on[4];
+    };
+    Drive drive_[16]{};
+    double h_ = 0, a_on_ = 0, a_off_ = 0, stiffness_ = 0, inv_j_ = 0, g_on_ = 0, g_off_ = 0;
 };
 
 }  // namespace alp85::periph
