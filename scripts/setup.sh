@@ -9,6 +9,7 @@ packages=(
   libfmt-dev libcli11-dev nlohmann-json3-dev
   clang libclang-rt-14-dev
   zlib1g-dev
+  libcairo2-dev
 )
 
 missing=()

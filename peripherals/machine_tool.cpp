@@ -1,0 +1,226 @@
+// The machine tool: three axes of sequencer, motor, table and transducer; see machine_tool.h.
+#include "peripherals/machine_tool.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace alp85::periph {
+
+MachineTool::Params MachineTool::default_params() {
+    Params p;
+    p.axes[0].table.travel_mm = 1500.0;  // X: the workpiece's length (thesis §3.1)
+    p.axes[1].table.travel_mm = 200.0;   // Y: its width
+    p.axes[2].table.travel_mm = 100.0;   // Z: its height
+    return p;
+}
+
+MachineTool::MachineTool(const Params& p) : p_(p) {
+    for (int a = 0; a < kAxes; ++a) {
+        const AxisParams& ap = p.axes[a];
+        AxisParts& x = ax_[a];
+        x.sequencer = Sequencer(ap.sequencer);
+        x.table = Table(ap.table);
+        x.transducer = Transducer(ap.transducer);
+        x.mm_per_rad = x.table.mm_per_rad();
+        StepperMotor::Load load;
+        load.inertia = x.table.reflected_inertia();
+        load.coulomb = x.table.reflected_friction();
+        load.theta_lo = x.table.low_stop_mm() / x.mm_per_rad;
+        load.theta_hi = x.table.high_stop_mm() / x.mm_per_rad;
+        x.motor.configure(ap.motor, load);
+        x.step_mm = ap.table.lead_mm_per_rev / (4.0 * ap.motor.rotor_teeth);
+        x.lo_steps = static_cast<std::int64_t>(std::ceil(x.table.low_stop_mm() / x.step_mm - 1e-9));
+        x.hi_steps = static_cast<std::int64_t>(std::floor(x.table.high_stop_mm() / x.step_mm + 1e-9));
+        init_axis(a);
+    }
+}
+
+void MachineTool::init_axis(int a) {
+    AxisState& st = s_.axes[a];
+    st = AxisState{};
+    ax_[a].motor.init_at_rest(st.motor, 0.0, Sequencer::phases(st.sequencer));
+    ax_[a].transducer.init(st.transducer, 0.0);
+}
+
+double MachineTool::position_mm(int a, const StepperMotor::State& m) const {
+    if (s_.model == MotorModel::Ideal) return static_cast<double>(s_.axes[a].ideal_steps) * ax_[a].step_mm;
+    return m.theta * ax_[a].mm_per_rad;
+}
+
+void MachineTool::after_step(int a, unsigned flags, std::uint64_t t) {
+    AxisState& st = s_.axes[a];
+    ax_[a].transducer.update(st.transducer, st.motor.theta * ax_[a].mm_per_rad);
+    const std::int8_t at = (flags & StepperMotor::kStopHigh) ? 1 : (flags & StepperMotor::kStopLow) ? -1 : 0;
+    if (at != st.table.at_stop && ax_[a].table.update_stop(st.table, at, t) && on_end_stop_)
+        on_end_stop_(static_cast<Axis>(a), at > 0, t);
+}
+
+void MachineTool::integrate_to(int a, std::uint64_t t) {
+    AxisState& st = s_.axes[a];
+    const StepperMotor& motor = ax_[a].motor;
+    const std::uint32_t h = motor.params().step_tstates;
+    while (!st.motor.settled && st.grid_t + h <= t) {
+        const unsigned flags = motor.step(st.motor, h);
+        st.grid_t += h;
+        after_step(a, flags, st.grid_t);
+        if (motor.is_settled(st.motor)) st.motor.settled = true;
+    }
+}
+
+void MachineTool::advance(std::uint64_t now) {
+    if (now <= s_.now) return;
+    if (s_.model == MotorModel::Physical)
+        for (int a = 0; a < kAxes; ++a)
+            if (!s_.axes[a].motor.settled) integrate_to(a, now);
+    s_.now = now;
+}
+
+void MachineTool::set_model(MotorModel m) {
+    if (m == s_.model) return;
+    for (int a = 0; a < kAxes; ++a) {
+        AxisState& st = s_.axes[a];
+        const double theta = s_.model == MotorModel::Ideal
+                                 ? static_cast<double>(st.ideal_steps) * ax_[a].motor.step_angle()
+                                 : motor_view(a).theta;
+        st.ideal_steps = static_cast<std::int64_t>(std::llround(theta / ax_[a].motor.step_angle()));
+    }
+    s_.model = m;
+    for (int a = 0; a < kAxes; ++a) {
+        AxisState& st = s_.axes[a];
+        ax_[a].motor.init_at_rest(st.motor, static_cast<double>(st.ideal_steps) * ax_[a].motor.step_angle(),
+                                  Sequencer::phases(st.sequencer));
+        st.grid_t = s_.now;
+        ax_[a].transducer.update(st.transducer, position_mm(a, st.motor));
+    }
+}
+
+void MachineTool::set_drive(Axis axis, bool pulse, bool direction, std::uint64_t t) {
+    advance(t);
+    const int a = idx(axis);
+    AxisState& st = s_.axes[a];
+    const int d = ax_[a].sequencer.set_inputs(st.sequencer, pulse, direction);
+    if (d == 0) return;
+    const std::uint8_t ph = Sequencer::phases(st.sequencer);
+    if (s_.model == MotorModel::Ideal) {
+        const std::int64_t next = st.ideal_steps + d;
+        const AxisParts& x = ax_[a];
+        const Table& table = x.table;
+        std::int8_t at = 0;
+        if (next > x.hi_steps || next < x.lo_steps) {
+            at = d > 0 ? 1 : -1;  // the screw stalls the motor: the step is lost
+        } else {
+            st.ideal_steps = next;
+            if (next == x.hi_steps) at = 1;
+            if (next == x.lo_steps) at = -1;
+        }
+        st.motor.phases = ph;
+        st.motor.theta = static_cast<double>(st.ideal_steps) * ax_[a].motor.step_angle();
+        ax_[a].transducer.update(st.transducer, position_mm(a, st.motor));
+        if (at != st.table.at_stop && table.update_stop(st.table, at, t) && on_end_stop_)
+            on_end_stop_(axis, at > 0, t);
+        return;
+    }
+    // Physical: split the integration exactly at t.
+    if (!st.motor.settled && t > st.grid_t) {
+        const unsigned flags = ax_[a].motor.step(st.motor, static_cast<std::uint32_t>(t - st.grid_t));
+        after_step(a, flags, t);
+    }
+    st.grid_t = t;
+    StepperMotor::set_phases(st.motor, ph);
+}
+
+StepperMotor::State MachineTool::motor_view(int a) const {
+    const AxisState& st = s_.axes[a];
+    StepperMotor::State m = st.motor;
+    if (s_.model == MotorModel::Physical && !m.settled && s_.now > st.grid_t)
+        ax_[a].motor.step(m, static_cast<std::uint32_t>(s_.now - st.grid_t));
+    return m;
+}
+
+MachineTool::Sense MachineTool::sense(Axis axis, std::uint64_t t) {
+    advance(t);
+    const int a = idx(axis);
+    Transducer::State tr = s_.axes[a].transducer;
+    if (s_.model == MotorModel::Physical) ax_[a].transducer.update(tr, position_mm(a, motor_view(a)));
+    const auto o = ax_[a].transducer.outputs(tr);
+    return {o.count, o.direction};
+}
+
+std::int64_t MachineTool::commanded_steps(Axis axis) const { return s_.axes[idx(axis)].sequencer.count; }
+
+double MachineTool::rotor_angle_deg(Axis axis) const {
+    const int a = idx(axis);
+    if (s_.model == MotorModel::Ideal) return static_cast<double>(s_.axes[a].ideal_steps) * 360.0 / (4.0 * p_.axes[a].motor.rotor_teeth);
+    return motor_view(a).theta * 180.0 / std::numbers::pi;
+}
+
+double MachineTool::rotor_speed_rad_s(Axis axis) const {
+    return s_.model == MotorModel::Ideal ? 0.0 : motor_view(idx(axis)).omega;
+}
+
+double MachineTool::table_mm(Axis axis) const {
+    const int a = idx(axis);
+    return position_mm(a, motor_view(a));
+}
+
+double MachineTool::table_steps(Axis axis) const {
+    const int a = idx(axis);
+    if (s_.model == MotorModel::Ideal) return static_cast<double>(s_.axes[a].ideal_steps);
+    return motor_view(a).theta / ax_[a].motor.step_angle();
+}
+
+std::int64_t MachineTool::transducer_count(Axis axis) const {
+    const int a = idx(axis);
+    Transducer::State tr = s_.axes[a].transducer;
+    if (s_.model == MotorModel::Physical) ax_[a].transducer.update(tr, position_mm(a, motor_view(a)));
+    return tr.count;
+}
+
+std::int64_t MachineTool::lost_steps(Axis axis) const {
+    const int a = idx(axis);
+    const std::int64_t actual = s_.model == MotorModel::Ideal
+                                    ? s_.axes[a].ideal_steps
+                                    : static_cast<std::int64_t>(std::llround(table_steps(axis)));
+    return s_.axes[a].sequencer.count - actual;
+}
+
+std::uint8_t MachineTool::phase_pattern(Axis axis) const { return Sequencer::phases(s_.axes[idx(axis)].sequencer); }
+
+std::array<double, 4> MachineTool::winding_currents(Axis axis) const { return motor_view(idx(axis)).i; }
+
+MachineTool::EndStop MachineTool::end_stop(Axis axis) const {
+    const Table::State& t = s_.axes[idx(axis)].table;
+    return {t.at_stop, t.hits, t.last_hit_t, t.last_hit_high};
+}
+
+bool MachineTool::settled(Axis axis) const {
+    return s_.model == MotorModel::Ideal || s_.axes[idx(axis)].motor.settled;
+}
+
+bool MachineTool::all_settled() const {
+    for (int a = 0; a < kAxes; ++a)
+        if (!settled(static_cast<Axis>(a))) return false;
+    return true;
+}
+
+void MachineTool::load_state(StateReader& r) {
+    State s;
+    State::fields(s, r);
+    r.expect_end();
+    for (int a = 0; a < kAxes; ++a) {
+        const AxisState& st = s.axes[a];
+        const StepperMotor::Load& load = ax_[a].motor.load();
+        r.check(std::isfinite(st.motor.theta) && std::isfinite(st.motor.omega), "non-finite rotor state");
+        r.check(st.motor.theta >= load.theta_lo && st.motor.theta <= load.theta_hi, "rotor beyond the end stops");
+        for (double i : st.motor.i) r.check(std::isfinite(i) && i >= 0.0, "invalid winding current");
+        r.check(st.motor.phases == Sequencer::phases(st.sequencer), "phases disagree with the sequencer");
+        r.check(st.motor.settled || st.grid_t <= s.now, "motor state ahead of the clock");
+        r.check(st.table.at_stop >= -1 && st.table.at_stop <= 1, "invalid end-stop state");
+        const double x = s.model == MotorModel::Ideal ? static_cast<double>(st.ideal_steps) * ax_[a].step_mm
+                                                      : st.motor.theta * ax_[a].mm_per_rad;
+        r.check(ax_[a].transducer.q_of(x) == st.transducer.q, "transducer disagrees with the table");
+    }
+    s_ = s;
+}
+
+}  // namespace alp85::periph

@@ -1,0 +1,142 @@
+// The stepping motor of one axis, PH265-03 (thesis Table 3.2), on the unipolar voltage drive of
+// thesis §3.2.2.1, with the table's load. Two models, chosen per run (MachineTool::set_model):
+//
+//   Ideal     each sequencer step turns the rotor exactly one step (1.8 deg) at that T-state.
+//   Physical  a two-phase hybrid stepper, 50 rotor teeth (N = 50, 200 full steps per revolution):
+//
+//   Electrical, per half-winding j in {A, /A, B, /B} (centre-tapped windings, unipolar drive):
+//     on  (transistor saturated):  L di/dt = Vs - Vce - (r + R) i - e_j                  (eq. 3.1)
+//     off (freewheeling diode):    L di/dt = -Vd - (r + R + Rf) i - e_j,   i >= 0         (§3.2.2.1)
+//   with back-EMF e_A = -Ke w sin x, e_/A = -e_A, e_B = Ke w cos x, e_/B = -e_B, where
+//   x = N theta + pi/4 (theta = 0 is the equilibrium of the sequencer's index 0, A and B on).
+//   Vs follows eq. 3.1 with the rated current: Vs = I (r + R).
+//
+//   Mechanical:  J dw/dt = Kt [ -(iA - i/A) sin x + (iB - i/B) cos x ]      (phase torques)
+//                          - Td sin 4x                                     (detent, stable at
+//                                                                           one-phase-on positions)
+//                          - b w - Tc sgn w                                (viscous, Coulomb + stiction)
+//                J = J_rotor + J_load (table mass reflected through 10 mm/rev, table.h).
+//   Kt = Ke = T_hold / (sqrt 2 I_rated): two phases at rated current give the holding torque.
+//   Small-signal stiffness about a two-phase-on equilibrium: k = N (T_hold I/I_rated - 4 Td);
+//   the rotor rings at sqrt(k/J)/2pi, damped by the back-EMF (Kt^2/(r+R)) and friction.
+//
+// Integration (deterministic, in T-states of the 3.072 MHz clock): a fixed grid of H T-states
+// anchored at the last input change, split exactly at each phase change. Per step: the currents
+// are advanced by the EXACT solution of their linear ODE with the back-EMF frozen at the step's
+// start (i -> i_inf + (i - i_inf) exp(-h/tau), clamped at zero when a diode blocks), so the
+// electrical time constant L/R = 126 us (on) and L/(r+R+Rf) (off) never limits the step; the
+// mechanics then take a semi-implicit (symplectic) Euler step with the torque of the step's mean
+// current, which keeps the lightly damped ringing from gaining or losing energy numerically.
+// The step H is therefore set by the mechanics and the EMF's rate of change: H = 192 T-states
+// (62.5 us, half the electrical time constant); the rotor's fastest natural period (rotor alone,
+// ~4.6 ms) is ~70 steps, the loaded ringing (~12 ms) ~190, and at 500 steps/s the electrical angle
+// moves 0.05 rad per step. The calibration sweep gives the same start-stop limit at H = 48, 96,
+// 192 and 256 T-states (docs/machine.md); the ringing frequency agrees with the linearised hand
+// calculation within 1 %.
+//
+// Settling: a rotor whose velocity is zero and stuck (Coulomb friction or an end stop holds it), or
+// whose residual motion is below 1e-6 rad in amplitude (energy test), with all currents within
+// 1e-6 A of their steady values, is SETTLED: it is not integrated until its phases change again
+// (1e-6 rad is 1.6 nm of table, 1/30000 of the scale pitch: it cannot move an edge of the
+// transducer; 1e-6 A is 5e-6 of the rated current: the torque error is below the friction).
+//
+// Not emulated: the magnetic coupling of the two halves of a centre-tapped winding (each half is an
+// independent L, r), saturation, the torque's higher harmonics other than the detent, eddy-current
+// and hysteresis losses, the transistors' switching times, a drooping or poorly regulated supply
+// (thesis §5.1 tested at reduced voltage: that is folded into the calibration), temperature.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace alp85::periph {
+
+class StepperMotor {
+public:
+    struct Params {
+        // Thesis Table 3.2, PH265-03.
+        double winding_ohm = 114.0;       // r, per phase (per half-winding in unipolar use)
+        double inductance_h = 14.4e-3;    // L
+        double rated_a = 0.21;            // I
+        double holding_nm = 0.412;        // 41.2 N cm, two phases on at rated current
+        double rotor_kgm2 = 110e-7;       // 110 g cm^2
+        int rotor_teeth = 50;             // 1.8 deg full step (§3.2.1): 200 steps/rev
+        // Drive, thesis §3.2.2.1 (values not given: assumed, docs/machine.md).
+        double forcing_ohm = 0.0;         // R: Table 3.2's 24 V = 0.21 A x 114 ohm, so R = 0 at 24 V
+        double freewheel_ohm = 100.0;     // Rf: Vce,max = Vs + Rf I = 45 V (eq. 3.2)
+        double vce_sat = 0.1;             // "typically 0.1 V" (§3.2.2.1)
+        double diode_v = 0.7;             // freewheeling diode forward drop
+        // Not in the thesis (assumed, docs/machine.md).
+        double detent_nm = 0.02;          // ~5 % of the holding torque, typical for hybrids
+        double viscous_nms = 1e-4;        // bearings and screw lubrication, N m s/rad
+        // Integration.
+        std::uint32_t step_tstates = 192; // H (62.5 us at 3.072 MHz)
+    };
+
+    // Per-axis dynamic state (the grid time is kept by the owner).
+    struct State {
+        double theta = 0.0;                 // rotor angle, rad, from the power-on equilibrium
+        double omega = 0.0;                 // rad/s
+        std::array<double, 4> i{};          // half-winding currents A, /A, B, /B (A)
+        std::uint8_t phases = 0;            // drive pattern (Sequencer bits)
+        bool settled = true;
+
+        template <class S, class Io>
+        static void fields(S& s, Io& io) {
+            io(s.theta), io(s.omega), io(s.i), io(s.phases, 15), io(s.settled);
+        }
+    };
+
+    // Where the table's end stops are, in rotor angle, and the load it adds.
+    struct Load {
+        double inertia = 0.0;     // kg m^2 reflected
+        double coulomb = 0.0;     // N m reflected
+        double theta_lo = -1e300;
+        double theta_hi = 1e300;
+    };
+
+    enum StepFlags : unsigned { kNone = 0, kStopLow = 1, kStopHigh = 2 };
+
+    StepperMotor() { configure(Params{}, Load{}); }
+    void configure(const Params& p, const Load& load);
+
+    const Params& params() const { return p_; }
+    const Load& load() const { return load_; }
+    double step_angle() const { return step_angle_; }
+    double supply_v() const { return vs_; }
+    double torque_constant() const { return kt_; }
+    double total_inertia() const { return j_; }
+    double on_current() const { return i_on_; }  // steady current of an ON half-winding
+    double stiffness() const;                    // small-signal k about a two-phase equilibrium
+    double tau_on() const { return p_.inductance_h / r_on_; }
+    double tau_off() const { return p_.inductance_h / r_off_; }
+
+    // A rotor at rest at `theta` with `phases` applied long ago.
+    void init_at_rest(State& s, double theta, std::uint8_t phases) const;
+    // Applies a new drive pattern (the rotor is no longer settled).
+    static void set_phases(State& s, std::uint8_t phases) {
+        s.phases = phases;
+        s.settled = false;
+    }
+    // One step of h T-states (h == step_tstates uses the precomputed factors). Returns StepFlags
+    // for an end stop in contact after the step.
+    unsigned step(State& s, std::uint32_t h) const;
+    // The settling test (see the file's opening comment).
+    bool is_settled(const State& s) const;
+    // The equilibrium (rad) of the present pattern nearest the rotor.
+    double equilibrium(const State& s) const;
+
+private:
+    Params p_;
+    Load load_;
+    double step_angle_ = 0, vs_ = 0, r_on_ = 0, r_off_ = 0, kt_ = 0, j_ = 0, i_on_ = 0;
+    struct Drive {  // per drive pattern: each half-winding's steady current, conductance, on/off
+        double i0[4];
+        double g[4];
+        std::uint8_t on[4];
+    };
+    Drive drive_[16]{};
+    double h_ = 0, a_on_ = 0, a_off_ = 0, stiffness_ = 0, inv_j_ = 0, g_on_ = 0, g_off_ = 0;
+};
+
+}  // namespace alp85::periph

@@ -1,0 +1,208 @@
+// MachineTool as a Part: the ideal model's counts, the transducer bits the firmware reads, end
+// stops, snapshots (save -> load -> continue bit for bit), determinism, settled rotors.
+// Expected values from the parameters: 0.05 mm per step, travel + 5 mm overtravel.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <tuple>
+#include <vector>
+
+#include "tests/machine/sim.h"
+
+namespace alp85::test {
+namespace {
+
+using Model = MachineTool::MotorModel;
+constexpr std::uint64_t kPeriod = 7680;  // 400 steps/s at 3.072 MHz
+
+// n steps on one axis from t0 with the firmware's pulse shape; returns the next free T-state.
+std::uint64_t steps(MachineTool& m, Axis a, int n, bool dir, std::uint64_t t0, std::uint64_t period = kPeriod) {
+    for (int k = 0; k < n; ++k) {
+        m.set_drive(a, false, dir, t0 + k * period);  // direction first
+        m.set_drive(a, true, dir, t0 + k * period + 100);
+        m.set_drive(a, false, dir, t0 + k * period + 100 + period / 2);
+    }
+    return t0 + n * period;
+}
+
+TEST(MachineToolIdeal, CountsStepsPositionAndTransducer) {
+    MachineTool m;
+    m.set_model(Model::Ideal);
+    auto t = steps(m, Axis::X, 200, true, 1000);
+    EXPECT_EQ(m.commanded_steps(Axis::X), 200);
+    EXPECT_DOUBLE_EQ(m.table_mm(Axis::X), 10.0);  // 200 x 0.05 mm (thesis §3.2.2)
+    EXPECT_DOUBLE_EQ(m.rotor_angle_deg(Axis::X), 360.0);
+    EXPECT_EQ(m.transducer_count(Axis::X), 200);
+    EXPECT_EQ(m.lost_steps(Axis::X), 0);
+    t = steps(m, Axis::X, 30, false, t);
+    EXPECT_EQ(m.commanded_steps(Axis::X), 170);
+    EXPECT_EQ(m.transducer_count(Axis::X), 170);
+    EXPECT_NEAR(m.table_mm(Axis::X), 8.5, 1e-12);
+    EXPECT_EQ(m.commanded_steps(Axis::Y), 0);
+    EXPECT_EQ(m.phase_pattern(Axis::X), periph::Sequencer::kPattern[170 % 4]);
+}
+
+TEST(MachineToolIdeal, SenseTogglesCountOncePerStepWithDirection) {
+    MachineTool m;
+    m.set_model(Model::Ideal);
+    std::uint64_t t = 1000;
+    bool last = m.sense(Axis::Y, t).count;
+    for (int k = 0; k < 12; ++k) {
+        const bool dir = k < 8;
+        t = steps(m, Axis::Y, 1, dir, t);
+        const auto s = m.sense(Axis::Y, t);
+        EXPECT_NE(s.count, last) << k;
+        EXPECT_EQ(s.direction, dir) << k;
+        last = s.count;
+    }
+    EXPECT_EQ(m.transducer_count(Axis::Y), 4);
+}
+
+TEST(MachineToolIdeal, EndStopHoldsTheTableAndReports) {
+    MachineTool m;
+    m.set_model(Model::Ideal);
+    std::vector<std::tuple<Axis, bool, std::uint64_t>> events;
+    m.on_end_stop([&](Axis a, bool high, std::uint64_t t) { events.emplace_back(a, high, t); });
+    // Z: 100 mm of travel + 5 mm overtravel = 105 mm = 2100 steps; ask for 2150.
+    steps(m, Axis::Z, 2150, true, 1000);
+    EXPECT_DOUBLE_EQ(m.table_mm(Axis::Z), 105.0);
+    EXPECT_EQ(m.commanded_steps(Axis::Z), 2150);
+    EXPECT_EQ(m.lost_steps(Axis::Z), 50);
+    EXPECT_EQ(m.transducer_count(Axis::Z), 2100);
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_EQ(std::get<0>(events[0]), Axis::Z);
+    EXPECT_TRUE(std::get<1>(events[0]));
+    EXPECT_EQ(std::get<2>(events[0]), 1000 + 2099 * kPeriod + 100);  // the 2100th pulse's rising edge
+    EXPECT_EQ(m.end_stop(Axis::Z).at, 1);
+    EXPECT_EQ(m.end_stop(Axis::Z).hits, 1u);
+    steps(m, Axis::Z, 10, false, 1000 + 2150 * kPeriod);
+    EXPECT_EQ(m.end_stop(Axis::Z).at, 0);
+    EXPECT_DOUBLE_EQ(m.table_mm(Axis::Z), 104.5);
+}
+
+TEST(MachineToolPhysical, EndStopStallsTheMotor) {
+    MachineTool m;
+    int hits = 0;
+    m.on_end_stop([&](Axis a, bool high, std::uint64_t) { hits += a == Axis::Y && !high; });
+    // Y from 0 toward the low stop at -5 mm (-100 steps), 201 steps asked at 100 steps/s: the
+    // last pattern's equilibrium is -101 steps, beyond the stop, so the motor stays pressed on it.
+    double lowest = 0;
+    std::uint64_t t = 1000;
+    for (int k = 0; k < 201; ++k) {
+        t = steps(m, Axis::Y, 1, false, t, 30720);
+        for (int r = 0; r < 8; ++r) {
+            m.advance(t - r * 3840);
+            lowest = std::min(lowest, m.table_mm(Axis::Y));
+        }
+    }
+    m.advance(t + tstates(0.5));
+    EXPECT_GE(lowest, -5.0 - 1e-12);
+    EXPECT_DOUBLE_EQ(m.table_mm(Axis::Y), -5.0);
+    EXPECT_EQ(m.end_stop(Axis::Y).at, -1);
+    EXPECT_TRUE(m.settled(Axis::Y));
+    EXPECT_GE(hits, 1);
+    EXPECT_EQ(m.lost_steps(Axis::Y), -101);
+    EXPECT_EQ(m.transducer_count(Axis::Y), -100);
+}
+
+// Drives all three axes with a pattern, reading the transducers `reads` times per step.
+void workload(MachineTool& m, std::uint64_t t0, int n, int reads) {
+    for (int k = 0; k < n; ++k) {
+        const std::uint64_t t = t0 + static_cast<std::uint64_t>(k) * 6000;
+        for (int a = 0; a < 3; ++a) {
+            const bool dir = (k / (7 + a)) % 2 == 0;
+            m.set_drive(static_cast<Axis>(a), true, dir, t + 37 * a);
+            for (int r = 1; r <= reads; ++r) m.sense(static_cast<Axis>(a), t + 37 * a + r * 1000 / (reads + 1));
+            m.set_drive(static_cast<Axis>(a), false, dir, t + 37 * a + 3000);
+        }
+    }
+}
+
+std::vector<std::uint8_t> saved(const MachineTool& m) {
+    std::vector<std::uint8_t> out;
+    m.save(out);
+    return out;
+}
+
+TEST(MachineToolPhysical, SameInputsSameResultWhateverTheReads) {
+    MachineTool a, b;
+    workload(a, 500, 120, 0);
+    workload(b, 500, 120, 5);
+    a.advance(2'000'000);
+    b.advance(2'000'000);
+    EXPECT_EQ(saved(a), saved(b));
+    for (int ax = 0; ax < 3; ++ax)
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(a.table_mm(static_cast<Axis>(ax))),
+                  std::bit_cast<std::uint64_t>(b.table_mm(static_cast<Axis>(ax))));
+}
+
+TEST(MachineToolPhysical, SaveLoadContinueIsBitForBit) {
+    MachineTool a;
+    workload(a, 500, 60, 1);
+    a.advance(500 + 60 * 6000 + 777);  // mid-ring, between grid points
+    ASSERT_FALSE(a.all_settled());
+    const auto snap = saved(a);
+    MachineTool b;
+    b.load(snap);
+    EXPECT_EQ(saved(b), snap);
+    workload(a, 500 + 61 * 6000, 60, 2);
+    workload(b, 500 + 61 * 6000, 60, 2);
+    for (std::uint64_t t : {800'000ull, 1'000'000ull, 3'000'000ull}) {
+        a.advance(t);
+        b.advance(t);
+        for (int ax = 0; ax < 3; ++ax) {
+            const auto x = static_cast<Axis>(ax);
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(a.table_mm(x)), std::bit_cast<std::uint64_t>(b.table_mm(x)));
+            EXPECT_EQ(a.transducer_count(x), b.transducer_count(x));
+        }
+    }
+    EXPECT_EQ(saved(a), saved(b));
+}
+
+TEST(MachineToolPhysical, LoadRejectsBadStateAndKeepsItsOwn) {
+    MachineTool a;
+    workload(a, 500, 10, 0);
+    auto snap = saved(a);
+    MachineTool b;
+    const auto before = saved(b);
+    auto truncated = snap;
+    truncated.pop_back();
+    EXPECT_THROW(b.load(truncated), SnapshotError);
+    auto bad_model = snap;
+    bad_model[3] = 7;  // the model byte follows the 3-byte header
+    EXPECT_THROW(b.load(bad_model), SnapshotError);
+    EXPECT_EQ(saved(b), before);
+    EXPECT_EQ(b.tag(), "TOOL");
+}
+
+TEST(MachineToolPhysical, SettledRotorsAreNotIntegrated) {
+    MachineTool m;
+    auto t = steps(m, Axis::X, 3, true, 1000);
+    EXPECT_FALSE(m.settled(Axis::X));
+    m.advance(t + tstates(0.5));
+    ASSERT_TRUE(m.all_settled());
+    const auto snap = saved(m);
+    const double x = m.table_mm(Axis::X);
+    m.advance(t + tstates(100.0));  // 100 s later: nothing moves, nothing is integrated
+    auto later = saved(m);
+    // Only the part's clock (the last 8 bytes) differs.
+    ASSERT_EQ(later.size(), snap.size());
+    EXPECT_TRUE(std::equal(snap.begin(), snap.end() - 8, later.begin()));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(m.table_mm(Axis::X)), std::bit_cast<std::uint64_t>(x));
+    EXPECT_NEAR(x, 0.15, 0.05 * 0.05);  // within a twentieth of a step of 3 steps
+}
+
+TEST(MachineTool, IsAPartWithNoEvents) {
+    MachineTool m;
+    periph::Part& p = m;
+    EXPECT_EQ(p.next_event(), periph::Part::kNever);
+    p.advance(12345);
+    EXPECT_EQ(p.now(), 12345u);
+    p.reset(20000);
+    EXPECT_EQ(p.now(), 20000u);
+    EXPECT_EQ(p.name(), "machine tool");
+}
+
+}  // namespace
+}  // namespace alp85::test

@@ -1,0 +1,125 @@
+// The physical motor model against hand calculation and the thesis (§5.1):
+//   - small-signal ringing at sqrt(k/J)/2pi with k = N (T_hold I/I_rated - 4 T_detent) and
+//     J = J_rotor + m (lead/2pi)^2, all from the parameters' values typed in here;
+//   - no lost step in 2000 steps at 300 steps/s from standstill to an abrupt stop;
+//   - lost steps at 600 steps/s; the start-stop limit between 350 and 450 steps/s.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "tests/machine/sim.h"
+
+namespace alp85::test {
+namespace {
+
+// Rotor angle (rad, minus the target) sampled every `dt` T-states after one step at t0.
+std::vector<double> step_response(MachineTool& m, std::uint64_t t0, std::uint64_t dt, int n) {
+    m.set_drive(Axis::X, true, true, t0);
+    m.set_drive(Axis::X, false, true, t0 + 3072);
+    std::vector<double> y;
+    const double target = 2 * std::numbers::pi / 200;  // one step, 1.8 deg
+    for (int k = 0; k < n; ++k) {
+        m.advance(t0 + k * dt);
+        y.push_back(m.rotor_angle_deg(Axis::X) * std::numbers::pi / 180 - target);
+    }
+    return y;
+}
+
+TEST(MotorPhysical, SmallSignalRingingFrequency) {
+    // Friction off so the ringing stays visible down to small amplitude (small signal).
+    auto p = MachineTool::default_params();
+    p.axes[0].table.friction_mu = 0.0;
+    p.axes[0].motor.viscous_nms = 0.0;
+    MachineTool m(p);
+    const std::uint64_t dt = 8;  // 2.6 us samples
+    const auto y = step_response(m, 1000, dt, 40000);
+    // Zero crossings (linear interpolation), in T-states.
+    std::vector<double> z;
+    for (std::size_t k = 1; k < y.size(); ++k)
+        if ((y[k - 1] < 0) != (y[k] < 0) && y[k - 1] != 0) z.push_back((k - 1 + y[k - 1] / (y[k - 1] - y[k])) * dt);
+    ASSERT_GE(z.size(), 9u);
+    // Cycles 2..4 (crossings 2..8): the amplitude is below a tenth of a step there.
+    const double period_s = (z[8] - z[2]) / 3.0 / kClock;
+    const double f_sim = 1.0 / period_s;
+
+    // Hand calculation (thesis Table 3.2; stepper_motor.h and table.h defaults).
+    const double i_on = 0.21 - 0.1 / 114.0;                     // (Vs - Vce)/(r+R), Vs = 0.21 x 114
+    const double k = 50.0 * (0.412 * i_on / 0.21 - 4 * 0.02);   // N m/rad
+    const double lead = 0.010 / (2 * std::numbers::pi);          // m/rad
+    const double j = 110e-7 + 18.0 * lead * lead;                // kg m^2
+    const double f_n = std::sqrt(k / j) / (2 * std::numbers::pi);
+    EXPECT_NEAR(f_sim, f_n, 0.05 * f_n) << "f_sim " << f_sim << " Hz, sqrt(k/J)/2pi " << f_n << " Hz";
+    // Linearised with the winding's electrical response: the back-EMF Kt w drives a current
+    // through R + jwL (R = 114, L = 14.4 mH, Kt = 0.412/(sqrt2 x 0.21)), which adds damping
+    // b = Kt^2 R/(R^2 + w^2 L^2) and stiffness Kt^2 w^2 L/(R^2 + w^2 L^2); damped frequency:
+    const double kt = 0.412 / (std::numbers::sqrt2 * 0.21);
+    const double w = 2 * std::numbers::pi * f_n, z2 = 114.0 * 114.0 + w * w * 14.4e-3 * 14.4e-3;
+    const double b = kt * kt * 114.0 / z2;
+    const double k_eff = k + kt * kt * w * w * 14.4e-3 / z2;
+    const double f_d = std::sqrt(k_eff / j - (b / (2 * j)) * (b / (2 * j))) / (2 * std::numbers::pi);
+    EXPECT_NEAR(f_sim, f_d, 0.01 * f_d) << "damped " << f_d << " Hz";
+    // And it decays: each cycle's peak smaller than the last.
+    EXPECT_LT(std::fabs(y[static_cast<std::size_t>((z[3] + z[4]) / 2 / dt)]),
+              std::fabs(y[static_cast<std::size_t>((z[1] + z[2]) / 2 / dt)]));
+}
+
+TEST(MotorPhysical, OneStepSettlesOnTheStep) {
+    MachineTool m;
+    m.set_drive(Axis::X, true, true, 1000);
+    m.advance(1000 + tstates(0.5));
+    EXPECT_TRUE(m.settled(Axis::X));
+    // Coulomb friction holds the rotor within T_c/k of the step: T_c = mu m g lead/2pi.
+    const double lead = 0.010 / (2 * std::numbers::pi);
+    const double tc = 0.1 * 18.0 * 9.80665 * lead;
+    const double k = 50.0 * (0.412 * (0.21 - 0.1 / 114.0) / 0.21 - 4 * 0.02);
+    EXPECT_NEAR(m.rotor_angle_deg(Axis::X), 1.8, tc / k * 180 / std::numbers::pi);
+}
+
+TEST(MotorPhysical, NoLossIn2000StepsAt300) {
+    MachineTool m;
+    pulse_train(m, Axis::X, 2000, 300.0, true, 1000);
+    EXPECT_EQ(m.commanded_steps(Axis::X), 2000);
+    EXPECT_EQ(m.lost_steps(Axis::X), 0);
+    EXPECT_NEAR(m.table_mm(Axis::X), 100.0, 0.025);
+    EXPECT_EQ(m.transducer_count(Axis::X), 2000);
+}
+
+TEST(MotorPhysical, LosesStepsAt600AndTheTransducerSeesTheRealPosition) {
+    MachineTool m;
+    pulse_train(m, Axis::X, 200, 600.0, true, 1000);
+    EXPECT_GT(m.lost_steps(Axis::X), 0);
+    // The scale's lines lie half-way between steps: the count is the nearest whole step.
+    EXPECT_EQ(m.transducer_count(Axis::X), std::llround(m.table_steps(Axis::X)));
+    EXPECT_EQ(m.transducer_count(Axis::X), 200 - m.lost_steps(Axis::X));
+}
+
+TEST(MotorPhysical, StartStopLimitNear400) {
+    // Start-stop runs of 200 steps from 300 steps/s upward in 10 steps/s: the first rate that
+    // loses a step is the limit (thesis §5.1: none lost up to about 400).
+    const auto p = MachineTool::default_params();
+    int first_loss = 0;
+    for (int rate = 300; rate <= 600; rate += 10) {
+        if (start_stop_loss(p, 200, rate) != 0) {
+            first_loss = rate;
+            break;
+        }
+    }
+    EXPECT_GT(first_loss, 350);
+    EXPECT_LE(first_loss, 450);
+    // And nothing lost on the way up from the slowest rates.
+    for (int rate : {20, 50, 86, 100, 150, 200, 250}) EXPECT_EQ(start_stop_loss(p, 200, rate), 0) << rate;
+}
+
+TEST(MotorPhysical, ReverseRunsBack) {
+    MachineTool m;
+    auto t = pulse_train(m, Axis::Y, 100, 200.0, true, 1000);
+    pulse_train(m, Axis::Y, 60, 200.0, false, t);
+    EXPECT_EQ(m.commanded_steps(Axis::Y), 40);
+    EXPECT_EQ(m.lost_steps(Axis::Y), 0);
+    EXPECT_EQ(m.transducer_count(Axis::Y), 40);
+}
+
+}  // namespace
+}  // namespace alp85::test
