@@ -59,13 +59,16 @@ private:
 
 // A chip on the I/O bus as board::kIoMap declares it: the chip sees the register offset, and a
 // write may move the chip's next event, so the batch ends there and the scheduler looks again.
+// `after_write` lets the board follow pins a write may change (the 8155's port A drives the tool).
 template <class Chip>
 class ChipPorts final : public IoDevice {
 public:
-    ChipPorts(Chip& chip, I8085& cpu, const board::IoRegion& region) : chip_(chip), cpu_(cpu), region_(region) {}
+    ChipPorts(Chip& chip, I8085& cpu, const board::IoRegion& region, std::function<void(std::uint64_t)> after_write = {})
+        : chip_(chip), cpu_(cpu), region_(region), after_write_(std::move(after_write)) {}
     std::uint8_t in(std::uint8_t port, std::uint64_t t) override { return chip_.read(region_.offset(port), t); }
     void out(std::uint8_t port, std::uint8_t value, std::uint64_t t) override {
         chip_.write(region_.offset(port), value, t);
+        if (after_write_) after_write_(t);
         cpu_.stop_at(t);
     }
 
@@ -73,6 +76,7 @@ private:
     Chip& chip_;
     I8085& cpu_;
     const board::IoRegion& region_;
+    std::function<void(std::uint64_t)> after_write_;
 };
 
 Machine::Machine() : Machine(Options{}) {}
@@ -101,11 +105,15 @@ void Machine::wire() {
             bus_.map_ram(r.base, r.size, s.data());
     }
     // The parts, in the order they are advanced, reset and saved.
-    parts_ = {&rio_, &kdc_, &keypad_};
+    parts_ = {&rio_, &kdc_, &keypad_, &tool_};
+    tool_.set_model(options_.motor);
     for (const auto& r : board::kIoMap) {
         switch (r.device) {
             case board::Device::Kdc8279: chip_ports_.push_back(std::make_unique<ChipPorts<periph::I8279>>(kdc_, cpu_, r)); break;
-            case board::Device::Rio8155: chip_ports_.push_back(std::make_unique<ChipPorts<periph::I8155>>(rio_, cpu_, r)); break;
+            case board::Device::Rio8155:
+                chip_ports_.push_back(
+                    std::make_unique<ChipPorts<periph::I8155>>(rio_, cpu_, r, [this](std::uint64_t t) { drive_tool(t); }));
+                break;
         }
         bus_.map_io(r.first, r.last, *chip_ports_.back());
     }
@@ -126,9 +134,57 @@ void Machine::wire() {
     kdc_.set_cntl_stb(false, 0);
     kdc_.set_return_lines_source([this](std::uint8_t sl) { return keypad_.return_lines(sl); });
     rio_.set_input_callback([this](I8155::Port port, std::uint64_t now) -> std::uint8_t {
-        if (port == I8155::Port::B && port_b_source_) return port_b_source_(now);
+        if (port == I8155::Port::B) return sense_tool(now);
         return port == I8155::Port::C ? board::kUndrivenPortC : board::kUndrivenPortAB;
     });
+}
+
+namespace {
+constexpr I8155::Port port_of(std::uint8_t port) {
+    return board::io_region(board::Device::Rio8155).offset(port) == I8155::kPortA ? I8155::Port::A : I8155::Port::B;
+}
+static_assert(port_of(board::kToolOutPort) == I8155::Port::A && port_of(board::kToolInPort) == I8155::Port::B,
+              "the machine tool sits on the 8155's ports A (out) and B (in)");
+}  // namespace
+
+void Machine::drive_tool(std::uint64_t t) {
+    // Pins programmed as inputs are not driven: the sequencers' inputs are pulled high.
+    const std::uint8_t mask = rio_.port_output_mask(I8155::Port::A);
+    const std::uint8_t pins = static_cast<std::uint8_t>((rio_.port_output(I8155::Port::A) & mask) | ~mask);
+    std::array<bool, 3> pulse{}, direction{};
+    for (const board::ToolBit& b : board::kToolWiring) {
+        if (b.port != board::kToolOutPort) continue;
+        const bool level = (pins >> b.bit) & 1;
+        if (b.signal == board::ToolSignal::Pulse) pulse[static_cast<std::size_t>(b.axis)] = level;
+        if (b.signal == board::ToolSignal::Direction) direction[static_cast<std::size_t>(b.axis)] = level;
+    }
+    for (std::size_t a = 0; a < 3; ++a) tool_.set_drive(static_cast<board::ToolAxis>(a), pulse[a], direction[a], t);
+}
+
+std::uint8_t Machine::sense_tool(std::uint64_t t) {
+    std::uint8_t pins = board::kUndrivenPortAB;  // bits the tool does not drive are pulled high
+    for (const board::ToolBit& b : board::kToolWiring) {
+        if (b.port != board::kToolInPort) continue;
+        const periph::MachineTool::Sense s = tool_.sense(b.axis, t);
+        const bool level = b.signal == board::ToolSignal::Count ? s.count : s.direction;
+        pins = static_cast<std::uint8_t>(level ? pins | (1u << b.bit) : pins & ~(1u << b.bit));
+    }
+    return pins;
+}
+
+void Machine::set_sampler(std::uint64_t period, std::function<void(std::uint64_t)> fn) {
+    sample_period_ = fn ? period : 0;
+    sampler_ = std::move(fn);
+    next_sample_ = sample_period_ ? (now() / sample_period_ + 1) * sample_period_ : periph::Part::kNever;
+}
+
+void Machine::sample(std::uint64_t t) {
+    while (next_sample_ <= t) {
+        const std::uint64_t at = next_sample_;
+        next_sample_ += sample_period_;
+        for (periph::Part* p : parts_) p->advance(std::max(at, p->now()));
+        sampler_(at);
+    }
 }
 
 void Machine::drive(board::CpuPin pin, bool level) {
@@ -248,6 +304,7 @@ Machine::Stop Machine::run_until(std::uint64_t until, const std::function<bool()
     for (;;) {
         const std::uint64_t t = now();
         deliver_inputs(t);
+        if (next_sample_ <= t) sample(t);
         sync_parts(t);
         if (condition && condition()) return Stop::Condition;
         if (t >= until) return Stop::Deadline;
@@ -291,9 +348,6 @@ void Machine::key_at(periph::Key key, bool down, std::uint64_t at) {
 void Machine::vect_intr_at(bool down, std::uint64_t at) { inputs_.schedule(at, InputKind::VectIntr, 0, down); }
 void Machine::reset_key_at(bool down, std::uint64_t at) { inputs_.schedule(at, InputKind::Reset, 0, down); }
 
-void Machine::set_port_b_source(std::function<std::uint8_t(std::uint64_t)> source) {
-    port_b_source_ = std::move(source);
-}
 
 std::array<std::uint8_t, 8> Machine::display() const { return periph::seven_segment::read_digits(kdc_); }
 std::string Machine::display_text() const {

@@ -26,6 +26,7 @@
 #include "peripherals/i8155.h"
 #include "peripherals/i8279.h"
 #include "peripherals/keypad.h"
+#include "peripherals/machine_tool.h"
 #include "peripherals/part.h"
 
 namespace alp85 {
@@ -34,6 +35,7 @@ class Machine {
 public:
     struct Options {
         Variant cpu = Variant::I8085;
+        periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
     };
 
     enum class Stop : std::uint8_t {
@@ -90,8 +92,6 @@ public:
     const std::vector<InputEvent>& input_log() const { return input_log_; }
     void replay(const std::vector<InputEvent>& events);
     const periph::Keypad& keypad() const { return keypad_; }
-    // Port B input pins of the 8155 (the transducers, later); unconnected inputs read high.
-    void set_port_b_source(std::function<std::uint8_t(std::uint64_t now)> source);
 
     // ---- display -----------------------------------------------------------------------------
     std::array<std::uint8_t, 8> display() const;  // segment bytes, leftmost digit first
@@ -126,6 +126,11 @@ public:
     const periph::I8155& rio() const { return rio_; }
     periph::I8279& kdc() { return kdc_; }  // the 8279 (keyboard/display controller)
     const periph::I8279& kdc() const { return kdc_; }
+    periph::MachineTool& tool() { return tool_; }  // the machine tool on the 8155's ports A and B
+    const periph::MachineTool& tool() const { return tool_; }
+    // Calls fn(t) at every multiple of `period` T-states while set (a recorder's sampling clock);
+    // the batches end there. period 0 removes it.
+    void set_sampler(std::uint64_t period, std::function<void(std::uint64_t t)> fn);
 
     // ---- snapshots -------------------------------------------------------------------------------
     // The whole machine (CPU, memories, every part, pending inputs; breakpoints and the input log
@@ -147,10 +152,13 @@ private:
         for (periph::Part* p : parts_) p->advance(now);
     }
     std::uint64_t next_part_event() const {
-        std::uint64_t next = periph::Part::kNever;
+        std::uint64_t next = next_sample_;
         for (const periph::Part* p : parts_) next = std::min(next, p->next_event());
         return next;
     }
+    void drive_tool(std::uint64_t t);          // port A's pins to the sequencers
+    std::uint8_t sense_tool(std::uint64_t t);  // the transducers to port B's pins
+    void sample(std::uint64_t t);
     void update_hooks();
     void restore_sections(const std::vector<std::uint8_t>& bytes);
 
@@ -163,9 +171,12 @@ private:
     periph::I8155 rio_;
     periph::I8279 kdc_;
     periph::Keypad keypad_;
+    periph::MachineTool tool_;
     InputQueue inputs_;
     std::vector<InputEvent> input_log_;
-    std::function<std::uint8_t(std::uint64_t)> port_b_source_;
+    std::uint64_t sample_period_ = 0;
+    std::uint64_t next_sample_ = periph::Part::kNever;
+    std::function<void(std::uint64_t)> sampler_;
     std::vector<periph::Part*> parts_;
 
     std::vector<std::unique_ptr<IoDevice>> chip_ports_;  // the chips' I/O decoding (board::kIoMap)
