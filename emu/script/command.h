@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +43,7 @@ enum class Op : std::uint8_t {
     Break, Delete, DeleteAll,
     ExpectDisplay, ExpectMem, ExpectWord, ExpectReg, ExpectFlag, ExpectPort, ExpectSymbol, ExpectTime,
     ExpectHalted, ExpectRunning,
+    Motor, ExpectAxis, ExpectCount, ExpectLost, RunUntilAxis, Record, RecordStop, Plot,
     SetMem, SetReg,
     Save, Restore,
     PrintDisplay, Print,
@@ -64,6 +66,14 @@ struct Command {
     Compare compare = Compare::Eq;
     std::string name;                   // expect symbol NAME
     unsigned count = 1;                 // step N
+    // The machine tool (docs/scripting.md, "The machine tool").
+    std::uint8_t axis = 0;              // 0 X, 1 Y, 2 Z
+    bool in_mm = false;                 // expect axis: mm (else steps)
+    double real = 0;                    // expect axis ... mm V; motor: 0 ideal, 1 physical
+    double within = 0;                  // expect axis ... mm V within D
+    std::int64_t integer = 0;           // steps, counts, lost steps
+    std::uint64_t period = 0;           // record ... every T
+    std::optional<std::array<double, 4>> ideal_line;  // plot toolpath ... from X,Y to X,Y (mm)
 };
 
 // Default times (docs/scripting.md).
@@ -71,5 +81,6 @@ inline constexpr std::uint64_t kDefaultHold = 92'160;      // 30 ms at 3.072 MHz
 inline constexpr std::uint64_t kDefaultGap = 92'160;       // 30 ms
 inline constexpr std::uint64_t kDefaultUntil = 30'720'000;  // 10 s
 inline constexpr std::uint64_t kDefaultWait = 15'360'000;   // 5 s
+inline constexpr std::uint64_t kDefaultRecordPeriod = 768;  // 0.25 ms: a 400 steps/s axis, ten samples a step
 
 }  // namespace alp85::script

@@ -50,6 +50,8 @@ public:
             {"EXPECT", &LineParser::expect},   {"SET", &LineParser::set},
             {"SAVE", &LineParser::save},       {"RESTORE", &LineParser::restore},
             {"PRINT", &LineParser::print},     {"FIRMWARE", &LineParser::firmware},
+            {"MOTOR", &LineParser::motor},     {"RECORD", &LineParser::record},
+            {"PLOT", &LineParser::plot},
         };
         const auto it = verbs.find(verb);
         if (it == verbs.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
@@ -283,9 +285,141 @@ private:
         c.keys.push_back(k);
         return true;
     }
+    // ---- the machine tool ---------------------------------------------------------------------
+    bool tool_axis(Command& c) {
+        if (!more() || peek().quoted) return missing("an axis (X, Y or Z)");
+        const std::string a = upper(peek().text);
+        if (a != "X" && a != "Y" && a != "Z") return fail(peek(), fmt::format("unknown axis '{}' (X, Y or Z)", peek().text)), false;
+        c.axis = static_cast<std::uint8_t>(a[0] == 'X' ? 0 : a[0] == 'Y' ? 1 : 2);
+        ++pos_;
+        return true;
+    }
+    void optional_compare(Command& c) {
+        static const std::map<std::string, Compare> ops = {
+            {"<", Compare::Lt}, {"<=", Compare::Le}, {"=", Compare::Eq}, {"==", Compare::Eq},
+            {">=", Compare::Ge}, {">", Compare::Gt}};
+        c.compare = Compare::Eq;
+        if (!more() || peek().quoted) return;
+        if (const auto o = ops.find(peek().text); o != ops.end()) {
+            c.compare = o->second;
+            ++pos_;
+        }
+    }
+    bool integer(std::int64_t& out, const char* what) {
+        if (!more() || peek().quoted) return missing(what);
+        std::string_view t = peek().text;
+        const bool neg = !t.empty() && (t[0] == '-' || t[0] == '+') ? (t[0] == '-') : false;
+        if (!t.empty() && (t[0] == '-' || t[0] == '+')) t.remove_prefix(1);
+        const auto n = parse_number(t);
+        if (!n) return fail(peek(), fmt::format("expected {}, found '{}'", what, peek().text)), false;
+        out = neg ? -*n : *n;
+        ++pos_;
+        return true;
+    }
+    bool real_number(double& out, const char* what) {
+        if (!more() || peek().quoted) return missing(what);
+        const std::string& t = peek().text;
+        char* end = nullptr;
+        out = std::strtod(t.c_str(), &end);
+        if (t.empty() || end != t.c_str() + t.size() || !std::isfinite(out))
+            return fail(peek(), fmt::format("expected {} (a decimal number), found '{}'", what, t)), false;
+        ++pos_;
+        return true;
+    }
+    // expect axis X steps [cmp] N | expect axis X mm [cmp] V [within D]
+    bool axis_position(Command& c) {
+        if (!tool_axis(c)) return false;
+        if (at_word("MM")) {
+            ++pos_;
+            c.in_mm = true;
+            optional_compare(c);
+            if (!real_number(c.real, "a position in mm")) return false;
+            c.within = 0.0005;  // half a micrometre: "=" on a position computed in doubles
+            if (at_word("WITHIN")) {
+                ++pos_;
+                if (!real_number(c.within, "a tolerance in mm")) return false;
+                if (c.within < 0) return error(c.where.col, "a tolerance is not negative"), false;
+            }
+            return true;
+        }
+        if (!word("STEPS")) return false;
+        optional_compare(c);
+        return integer(c.integer, "a number of steps");
+    }
+    bool motor(Command& c) {
+        c.op = Op::Motor;
+        if (at_word("IDEAL")) c.real = 0;
+        else if (at_word("PHYSICAL")) c.real = 1;
+        else return more() ? (fail(peek(), fmt::format("unknown motor model '{}' (ideal or physical)", peek().text)), false)
+                           : missing("a motor model (ideal or physical)");
+        ++pos_;
+        return true;
+    }
+    bool record(Command& c) {
+        if (at_word("STOP")) {
+            ++pos_;
+            c.op = Op::RecordStop;
+            return true;
+        }
+        c.op = Op::Record;
+        if (!string_operand(c.text, "a CSV file name (or 'stop')")) return false;
+        c.period = kDefaultRecordPeriod;
+        if (at_word("EVERY")) {
+            ++pos_;
+            if (!time(c.period, "a sampling period")) return false;
+            if (c.period == 0) return error(c.where.col, "a sampling period is not zero"), false;
+        }
+        return true;
+    }
+    bool point(double& x, double& y) {
+        if (!more() || peek().quoted) return missing("a point X,Y in mm");
+        const std::string& t = peek().text;
+        const auto comma = t.find(',');
+        char* end = nullptr;
+        if (comma != std::string::npos) {
+            const std::string xs = t.substr(0, comma), ys = t.substr(comma + 1);
+            x = std::strtod(xs.c_str(), &end);
+            const bool okx = !xs.empty() && end == xs.c_str() + xs.size();
+            y = std::strtod(ys.c_str(), &end);
+            const bool oky = !ys.empty() && end == ys.c_str() + ys.size();
+            if (okx && oky && std::isfinite(x) && std::isfinite(y)) {
+                ++pos_;
+                return true;
+            }
+        }
+        return fail(peek(), fmt::format("expected a point X,Y in mm, found '{}'", t)), false;
+    }
+    bool plot(Command& c) {
+        c.op = Op::Plot;
+        if (!more()) return missing("what to plot (toolpath or time)");
+        if (at_word("TOOLPATH")) c.name = "TOOLPATH";
+        else if (at_word("TIME")) c.name = "TIME";
+        else return fail(peek(), fmt::format("unknown plot '{}' (toolpath or time)", peek().text)), false;
+        ++pos_;
+        if (!string_operand(c.text, "an output file (.svg or .png)")) return false;
+        std::string ext = c.text.size() >= 4 ? upper(c.text.substr(c.text.size() - 4)) : "";
+        if (ext != ".SVG" && ext != ".PNG") return error(c.where.col, "a plot is written as .svg or .png"), false;
+        if (c.name == "TOOLPATH" && at_word("FROM")) {
+            ++pos_;
+            std::array<double, 4> l{};
+            if (!point(l[0], l[1]) || !word("TO") || !point(l[2], l[3])) return false;
+            c.ideal_line = l;
+        }
+        return true;
+    }
+
     bool run(Command& c) {
         if (at_word("UNTIL")) {
             ++pos_;
+            if (at_word("AXIS")) {
+                ++pos_;
+                c.op = Op::RunUntilAxis;
+                if (!tool_axis(c) || !word("STEPS")) return false;
+                optional_compare(c);
+                if (!integer(c.integer, "a number of steps")) return false;
+                c.time = kDefaultUntil;
+                return optional_time("TIMEOUT", c.time);
+            }
             c.op = Op::RunUntil;
             Value v;
             if (!value(v, "an address or symbol")) return false;
@@ -345,7 +479,7 @@ private:
         return true;
     }
     bool expect(Command& c) {
-        if (!more()) return missing("what to expect (display, mem, word, reg, flag, port, symbol, time, halted, running)");
+        if (!more()) return missing("what to expect (display, mem, word, reg, flag, port, symbol, time, halted, running, axis, count, lost)");
         const Token& what = peek();
         const std::string w = upper(what.text);
         ++pos_;
@@ -406,6 +540,16 @@ private:
             ++pos_;
             Value v;
             return value(v, "a value") && (c.values.push_back(v), true);
+        }
+        if (w == "AXIS") {
+            c.op = Op::ExpectAxis;
+            return axis_position(c);
+        }
+        if (w == "COUNT" || w == "LOST") {
+            c.op = w == "COUNT" ? Op::ExpectCount : Op::ExpectLost;
+            if (!tool_axis(c)) return false;
+            optional_compare(c);
+            return integer(c.integer, w == "COUNT" ? "a transducer count" : "a number of lost steps");
         }
         if (w == "TIME") {
             c.op = Op::ExpectTime;

@@ -80,6 +80,10 @@ ScriptResult execute(const std::filesystem::path& file, const std::vector<Comman
             break;
         }
     }
+    if (const Session::Outcome o = session.finish(); r.passed && o.status != Session::Status::Ok) {
+        r.passed = false;
+        r.failure = o.message;
+    }
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.tstates = session.machine().now();
     session.set_trace(nullptr);

@@ -1,11 +1,13 @@
 #include "emu/script/session.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include <fmt/format.h>
 
 #include "emu/board/snapshot_file.h"
+#include "emu/util/atomic_file.h"
 #include "emu/debug/trace_csv.h"
 #include "peripherals/seven_segment.h"
 
@@ -373,6 +375,113 @@ Session::Outcome Session::expect(const Command& c) {
     }
 }
 
+namespace {
+template <class T>
+bool compare(T actual, Compare op, T want) {
+    switch (op) {
+        case Compare::Lt: return actual < want;
+        case Compare::Le: return actual <= want;
+        case Compare::Eq: return actual == want;
+        case Compare::Ge: return actual >= want;
+        case Compare::Gt: return actual > want;
+    }
+    return false;
+}
+const char* compare_text(Compare op) {
+    switch (op) {
+        case Compare::Lt: return "< ";
+        case Compare::Le: return "<= ";
+        case Compare::Eq: return "";
+        case Compare::Ge: return ">= ";
+        case Compare::Gt: return "> ";
+    }
+    return "";
+}
+periph::MachineTool::Axis tool_axis(const Command& c) { return static_cast<periph::MachineTool::Axis>(c.axis); }
+char axis_name(const Command& c) { return "XYZ"[c.axis % 3]; }
+// The table's position as whole steps: the nearest step (a settled physical rotor rests within a
+// fraction of a step of it).
+std::int64_t whole_steps(const periph::MachineTool& tool, periph::MachineTool::Axis a) {
+    return std::llround(tool.table_steps(a));
+}
+}  // namespace
+
+Session::Outcome Session::write_recording() {
+    recorder_.stop();
+    try {
+        write_atomic(record_path_, recorder_.csv());
+    } catch (const std::exception& x) {
+        return fail(record_command_, x.what());
+    }
+    return {};
+}
+
+Session::Outcome Session::finish() {
+    if (recorder_.recording()) return write_recording();
+    return {};
+}
+
+Session::Outcome Session::tool_command(const Command& c) {
+    Machine& m = *machine_;
+    periph::MachineTool& tool = m.tool();
+    const auto axis = tool_axis(c);
+    tool.advance(m.now());
+    switch (c.op) {
+        case Op::Motor:
+            tool.set_model(c.real == 0 ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical);
+            return {};
+        case Op::ExpectAxis: {
+            if (c.in_mm) {
+                const double mm = tool.table_mm(axis);
+                const bool ok = c.compare == Compare::Eq ? std::abs(mm - c.real) <= c.within
+                                                         : compare(mm, c.compare, c.real);
+                if (!ok)
+                    return fail_expect(c, fmt::format("axis {} at {}{:.4f} mm{}", axis_name(c), compare_text(c.compare), c.real,
+                                                      c.compare == Compare::Eq ? fmt::format(" within {} mm", c.within) : ""),
+                                       fmt::format("{:.4f} mm", mm));
+                return {};
+            }
+            const std::int64_t steps = whole_steps(tool, axis);
+            if (!compare(steps, c.compare, c.integer))
+                return fail_expect(c, fmt::format("axis {} at {}{} steps", axis_name(c), compare_text(c.compare), c.integer),
+                                   fmt::format("{} steps ({:.3f})", steps, tool.table_steps(axis)));
+            return {};
+        }
+        case Op::ExpectCount:
+        case Op::ExpectLost: {
+            const bool count = c.op == Op::ExpectCount;
+            const std::int64_t v = count ? tool.transducer_count(axis) : tool.lost_steps(axis);
+            if (!compare(v, c.compare, c.integer))
+                return fail_expect(c, fmt::format("{} {} {}{}", count ? "count" : "lost steps", axis_name(c),
+                                                  compare_text(c.compare), c.integer),
+                                   std::to_string(v));
+            return {};
+        }
+        case Op::RunUntilAxis: {
+            const debug::Stop stop = debugger_.run_for(
+                c.time, [&] { return compare(whole_steps(tool, axis), c.compare, c.integer); }, origin(c));
+            if (stop.reason == debug::StopReason::Condition) return {};
+            if (stop.reason == debug::StopReason::Breakpoint)
+                return fail(c, fmt::format("stopped at breakpoint {} before axis {} reached {}{} steps", hex(stop.pc, 4),
+                                           axis_name(c), compare_text(c.compare), c.integer));
+            return fail(c, fmt::format("axis {} did not reach {}{} steps within {} (it is at {} steps)", axis_name(c),
+                                       compare_text(c.compare), c.integer, format_time(c.time), whole_steps(tool, axis)));
+        }
+        case Op::Record:
+            if (recorder_.recording()) {
+                if (Outcome o = write_recording(); o.status != Status::Ok) return o;
+            }
+            record_path_ = resolve(c.text);
+            record_command_ = c;
+            recorder_.start(m, c.period);
+            return {};
+        case Op::RecordStop:
+            if (!recorder_.recording()) return fail(c, "no recording to stop (record FILE.csv starts one)");
+            return write_recording();
+        default: return {};
+    }
+}
+
 Session::Outcome Session::execute(const Command& c) {
     Machine& m = *machine_;
     if (options_.verbose) output(c, fmt::format("[{}] {}:{}: {}", format_time(elapsed()), c.where.file, c.where.line, rtrim(c.line)));
@@ -480,6 +589,13 @@ Session::Outcome Session::execute(const Command& c) {
                 return fail(c, x.what());
             }
             return {};
+        case Op::Motor:
+        case Op::ExpectAxis:
+        case Op::ExpectCount:
+        case Op::ExpectLost:
+        case Op::RunUntilAxis:
+        case Op::Record:
+        case Op::RecordStop: return tool_command(c);
         case Op::PrintDisplay:
             if (c.text == "text") {
                 output(c, '"' + m.display_text() + '"');

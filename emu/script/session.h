@@ -16,6 +16,7 @@
 #include "emu/program/image_loader.h"
 #include "emu/board/machine.h"
 #include "emu/debug/debugger.h"
+#include "emu/debug/tool_record.h"
 #include "emu/script/command.h"
 #include "emu/script/parser.h"
 
@@ -49,6 +50,9 @@ public:
     // Runs one command. Failed expectations and commands that cannot be carried out (a load that
     // falls off the board, a snapshot that is refused, a run-until that times out) give Failed.
     Outcome execute(const Command& command);
+    // Ends the script: writes a recording still open (record FILE.csv without record stop).
+    Outcome finish();
+    const debug::ToolRecorder& recorder() const { return recorder_; }
 
     // Checks, before anything runs, what can be checked: files exist, sources assemble, binaries
     // have an address, symbols are defined by a load before their use, numbers fit. Appends every
@@ -77,12 +81,17 @@ private:
     Outcome load(const Command& c);
     Outcome press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap);
     Outcome expect(const Command& c);
+    Outcome tool_command(const Command& c);
+    Outcome write_recording();
     std::uint16_t read_reg(Reg r) const;
     void write_reg(Reg r, std::uint16_t v);
 
     SessionOptions options_;
     std::unique_ptr<Machine> machine_;
     debug::Debugger debugger_;
+    debug::ToolRecorder recorder_;
+    std::filesystem::path record_path_;
+    Command record_command_;
     std::map<std::string, LoadedImage> assembled_;  // from check(), by resolved path
     std::uint64_t time_origin_ = 0;
     std::ostream* trace_ = nullptr;
