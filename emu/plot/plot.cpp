@@ -260,7 +260,11 @@ void write(const Chart& c, const std::string& path) {
             wmax = std::max(wmax, e.x_advance);
         }
         const double lh = 16, bw = wmax + 42, bh = lh * named.size() + 8;
-        const double bx = left + pw - bw - 8, by = top + 8;
+        using L = Chart::Legend;
+        const bool at_left = c.legend == L::TopLeft || c.legend == L::BottomLeft;
+        const bool at_bottom = c.legend == L::BottomRight || c.legend == L::BottomLeft;
+        const double bx = at_left ? left + 8 : left + pw - bw - 8;
+        const double by = c.legend == L::Right ? top + (ph - bh) / 2 : at_bottom ? top + ph - bh - 8 : top + 8;
         cairo_set_source_rgba(cr, 1, 1, 1, 0.9);
         cairo_rectangle(cr, bx, by, bw, bh);
         cairo_fill_preserve(cr);
@@ -303,8 +307,9 @@ void write_toolpath(const std::string& path, const std::string& title, const std
 }
 
 void write_time_series(const std::string& path, const std::string& title, const std::vector<Series>& series,
-                       const std::string& y_label, const std::string& t_label) {
+                       const std::string& y_label, const std::string& t_label, Chart::Legend legend) {
     Chart c;
+    c.legend = legend;
     c.title = title;
     c.x_label = t_label;
     c.y_label = y_label;

@@ -38,6 +38,7 @@ struct Chart {
     int width = 720;   // pixels (PNG) or points (SVG)
     int height = 440;
     bool equal_scale = false;  // one unit is the same length on both axes (toolpaths)
+    enum class Legend { TopRight, TopLeft, BottomRight, BottomLeft, Right } legend = Legend::TopRight;
 };
 
 class PlotError : public std::runtime_error {
@@ -55,7 +56,8 @@ void write_toolpath(const std::string& path, const std::string& title, const std
 
 // Series against time (x in `t_label`'s units).
 void write_time_series(const std::string& path, const std::string& title, const std::vector<Series>& series,
-                       const std::string& y_label, const std::string& t_label = "t (s)");
+                       const std::string& y_label, const std::string& t_label = "t (s)",
+                       Chart::Legend legend = Chart::Legend::TopRight);
 
 // The tick positions chosen for [lo, hi] (1-2-5 steps, about `target` of them): for tests.
 std::vector<double> ticks(double lo, double hi, int target = 6);
