@@ -1,0 +1,320 @@
+// Line charts to SVG or PNG with cairo; see plot.h.
+#include "emu/plot/plot.h"
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+namespace alp85::plot {
+
+namespace {
+
+struct Rgb {
+    double r, g, b;
+};
+constexpr Rgb kPalette[] = {{0.12, 0.47, 0.71}, {0.84, 0.15, 0.16}, {0.17, 0.63, 0.17},
+                            {1.00, 0.50, 0.05}, {0.58, 0.40, 0.74}, {0.55, 0.34, 0.29}};
+
+double nice_step(double span, int target) {
+    const double raw = span / std::max(1, target);
+    const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * mag >= raw) return m * mag;
+    return 10.0 * mag;
+}
+
+std::string label(double v, double step) {
+    const int digits = std::max(0, static_cast<int>(-std::floor(std::log10(step) + 1e-9)));
+    v = std::round(v / step) * step;
+    if (std::fabs(v) < step * 1e-9) v = 0.0;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+struct Range {
+    double lo, hi;
+};
+
+Range padded(double lo, double hi) {
+    if (!(hi > lo)) {
+        const double d = lo == 0 ? 1.0 : std::fabs(lo) * 0.1;
+        return {lo - d, hi + d};
+    }
+    const double pad = (hi - lo) * 0.04;
+    return {lo - pad, hi + pad};
+}
+
+class Surface {
+public:
+    Surface(const std::string& path, int w, int h) : path_(path) {
+        const auto dot = path.rfind('.');
+        const std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+        if (ext == "svg") {
+            svg_ = true;
+            s_ = cairo_svg_surface_create(path.c_str(), w, h);
+        } else if (ext == "png") {
+            s_ = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
+        } else {
+            throw PlotError("plot: unknown file type (want .svg or .png): " + path);
+        }
+        if (cairo_surface_status(s_) != CAIRO_STATUS_SUCCESS) {
+            cairo_surface_destroy(s_);
+            throw PlotError("plot: cannot create " + path);
+        }
+        cr_ = cairo_create(s_);
+    }
+    ~Surface() {
+        if (cr_) cairo_destroy(cr_);
+        if (s_) cairo_surface_destroy(s_);
+    }
+    Surface(const Surface&) = delete;
+    Surface& operator=(const Surface&) = delete;
+    cairo_t* cr() { return cr_; }
+    void finish() {
+        cairo_destroy(cr_);
+        cr_ = nullptr;
+        cairo_status_t st = CAIRO_STATUS_SUCCESS;
+        if (!svg_) st = cairo_surface_write_to_png(s_, path_.c_str());
+        cairo_surface_finish(s_);
+        if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(s_);
+        if (st != CAIRO_STATUS_SUCCESS) throw PlotError("plot: writing " + path_ + ": " + cairo_status_to_string(st));
+    }
+
+private:
+public:
+    bool svg() const { return svg_; }
+
+private:
+    std::string path_;
+    bool svg_ = false;
+    cairo_surface_t* s_ = nullptr;
+    cairo_t* cr_ = nullptr;
+};
+
+void text(cairo_t* cr, const std::string& s, double x, double y, double ax, double ay, double size,
+          bool bold = false, double angle = 0.0) {
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, s.c_str(), &e);
+    cairo_save(cr);
+    cairo_translate(cr, x, y);
+    cairo_rotate(cr, angle);
+    cairo_move_to(cr, -e.x_bearing - e.width * ax, -e.y_bearing - e.height * ay);
+    cairo_show_text(cr, s.c_str());
+    cairo_restore(cr);
+}
+
+std::string xml_escape(const std::string& s) {
+    std::string out;
+    for (char ch : s) {
+        switch (ch) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += ch;
+        }
+    }
+    return out;
+}
+
+// cairo draws text as glyph outlines; an SVG <title> element carries the title as text (for
+// readers, search and tests).
+void add_svg_title(const std::string& path, const std::string& title) {
+    std::string doc;
+    {
+        std::ifstream in(path, std::ios::binary);
+        std::ostringstream ss;
+        ss << in.rdbuf();
+        doc = ss.str();
+    }
+    const auto open = doc.find("<svg");
+    const auto end = open == std::string::npos ? open : doc.find('>', open);
+    if (end == std::string::npos) throw PlotError("plot: cairo wrote no <svg> element to " + path);
+    doc.insert(end + 1, "\n<title>" + xml_escape(title) + "</title>");
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << doc;
+    if (!out) throw PlotError("plot: cannot rewrite " + path);
+}
+
+}  // namespace
+
+std::vector<double> ticks(double lo, double hi, int target) {
+    std::vector<double> out;
+    if (!(hi > lo)) return out;
+    const double step = nice_step(hi - lo, target);
+    for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + step * 1e-9; k += 1.0) out.push_back(k * step);
+    return out;
+}
+
+void write(const Chart& c, const std::string& path) {
+    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+    for (const auto& s : c.series)
+        for (const auto& p : s.points) {
+            if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+            x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+        }
+    if (!(x1 >= x0)) throw PlotError("plot: no data for " + path);
+
+    Surface surf(path, c.width, c.height);
+    cairo_t* cr = surf.cr();
+    const double left = 78, right = 18, top = 44, bottom = 56;
+    const double pw = c.width - left - right, ph = c.height - top - bottom;
+    Range xr = padded(x0, x1), yr = padded(y0, y1);
+    if (c.equal_scale) {
+        const double ux = (xr.hi - xr.lo) / pw, uy = (yr.hi - yr.lo) / ph, u = std::max(ux, uy);
+        const double cx = (xr.lo + xr.hi) / 2, cy = (yr.lo + yr.hi) / 2;
+        xr = {cx - u * pw / 2, cx + u * pw / 2};
+        yr = {cy - u * ph / 2, cy + u * ph / 2};
+    }
+    auto X = [&](double x) { return left + (x - xr.lo) / (xr.hi - xr.lo) * pw; };
+    auto Y = [&](double y) { return top + ph - (y - yr.lo) / (yr.hi - yr.lo) * ph; };
+
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+
+    // Grid, ticks and their labels.
+    cairo_set_line_width(cr, 1.0);
+    const double xs = nice_step(xr.hi - xr.lo, 7), ys = nice_step(yr.hi - yr.lo, 6);
+    for (double v : ticks(xr.lo, xr.hi, 7)) {
+        cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
+        cairo_move_to(cr, X(v), top);
+        cairo_line_to(cr, X(v), top + ph);
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        cairo_move_to(cr, X(v), top + ph);
+        cairo_line_to(cr, X(v), top + ph + 5);
+        cairo_stroke(cr);
+        text(cr, label(v, xs), X(v), top + ph + 8, 0.5, 0.0, 11);
+    }
+    for (double v : ticks(yr.lo, yr.hi, 6)) {
+        cairo_set_source_rgb(cr, 0.9, 0.9, 0.9);
+        cairo_move_to(cr, left, Y(v));
+        cairo_line_to(cr, left + pw, Y(v));
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        cairo_move_to(cr, left - 5, Y(v));
+        cairo_line_to(cr, left, Y(v));
+        cairo_stroke(cr);
+        text(cr, label(v, ys), left - 8, Y(v), 1.0, 0.5, 11);
+    }
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    cairo_rectangle(cr, left, top, pw, ph);
+    cairo_stroke(cr);
+    text(cr, c.title, c.width / 2.0, 12, 0.5, 0.0, 15, true);
+    text(cr, c.x_label, left + pw / 2, c.height - 8, 0.5, 1.0, 12);
+    text(cr, c.y_label, 14, top + ph / 2, 0.5, 0.0, 12, false, -std::numbers::pi / 2);
+
+    // Data, clipped to the plot area.
+    cairo_save(cr);
+    cairo_rectangle(cr, left, top, pw, ph);
+    cairo_clip(cr);
+    for (std::size_t i = 0; i < c.series.size(); ++i) {
+        const Series& s = c.series[i];
+        const Rgb col = kPalette[i % std::size(kPalette)];
+        cairo_set_source_rgb(cr, col.r, col.g, col.b);
+        cairo_set_line_width(cr, 1.6);
+        const double dash[] = {6.0, 4.0};
+        cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
+        bool pen = false;
+        for (const auto& p : s.points) {
+            if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+                pen = false;
+                continue;
+            }
+            if (pen) cairo_line_to(cr, X(p.x), Y(p.y));
+            else cairo_move_to(cr, X(p.x), Y(p.y));
+            pen = true;
+        }
+        cairo_stroke(cr);
+        cairo_set_dash(cr, nullptr, 0, 0);
+        if (s.markers)
+            for (const auto& p : s.points) {
+                if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+                cairo_arc(cr, X(p.x), Y(p.y), 2.6, 0, 2 * std::numbers::pi);
+                cairo_fill(cr);
+            }
+    }
+    cairo_restore(cr);
+
+    // Legend, top right inside the plot.
+    std::vector<const Series*> named;
+    for (const auto& s : c.series)
+        if (!s.label.empty()) named.push_back(&s);
+    if (!named.empty()) {
+        cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+        cairo_set_font_size(cr, 11);
+        double wmax = 0;
+        for (const Series* s : named) {
+            cairo_text_extents_t e;
+            cairo_text_extents(cr, s->label.c_str(), &e);
+            wmax = std::max(wmax, e.x_advance);
+        }
+        const double lh = 16, bw = wmax + 42, bh = lh * named.size() + 8;
+        using L = Chart::Legend;
+        const bool at_left = c.legend == L::TopLeft || c.legend == L::BottomLeft;
+        const bool at_bottom = c.legend == L::BottomRight || c.legend == L::BottomLeft;
+        const double bx = at_left ? left + 8 : left + pw - bw - 8;
+        const double by = c.legend == L::Right ? top + (ph - bh) / 2 : at_bottom ? top + ph - bh - 8 : top + 8;
+        cairo_set_source_rgba(cr, 1, 1, 1, 0.9);
+        cairo_rectangle(cr, bx, by, bw, bh);
+        cairo_fill_preserve(cr);
+        cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
+        cairo_set_line_width(cr, 0.8);
+        cairo_stroke(cr);
+        for (std::size_t i = 0; i < c.series.size(); ++i) {
+            const Series& s = c.series[i];
+            if (s.label.empty()) continue;
+            const std::size_t row = static_cast<std::size_t>(std::find(named.begin(), named.end(), &s) - named.begin());
+            const Rgb col = kPalette[i % std::size(kPalette)];
+            const double yy = by + 4 + lh * (row + 0.5);
+            cairo_set_source_rgb(cr, col.r, col.g, col.b);
+            cairo_set_line_width(cr, 2.0);
+            const double dash[] = {6.0, 4.0};
+            cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
+            cairo_move_to(cr, bx + 6, yy);
+            cairo_line_to(cr, bx + 30, yy);
+            cairo_stroke(cr);
+            cairo_set_dash(cr, nullptr, 0, 0);
+            cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+            text(cr, s.label, bx + 36, yy, 0.0, 0.5, 11);
+        }
+    }
+    const bool svg = surf.svg();
+    surf.finish();
+    if (svg) add_svg_title(path, c.title);
+}
+
+void write_toolpath(const std::string& path, const std::string& title, const std::vector<Series>& paths,
+                    std::optional<std::pair<Point, Point>> ideal) {
+    Chart c;
+    c.title = title;
+    c.x_label = "X (mm)";
+    c.y_label = "Y (mm)";
+    c.equal_scale = true;
+    c.series = paths;
+    if (ideal) c.series.push_back({"ideal", {ideal->first, ideal->second}, false, true});
+    write(c, path);
+}
+
+void write_time_series(const std::string& path, const std::string& title, const std::vector<Series>& series,
+                       const std::string& y_label, const std::string& t_label, Chart::Legend legend) {
+    Chart c;
+    c.legend = legend;
+    c.title = title;
+    c.x_label = t_label;
+    c.y_label = y_label;
+    c.series = series;
+    write(c, path);
+}
+
+}  // namespace alp85::plot
