@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <numbers>
@@ -156,7 +157,34 @@ std::vector<double> ticks(double lo, double hi, int target) {
     return out;
 }
 
+namespace {
+void draw(const Chart& c, const std::string& path);
+}  // namespace
+
+// The chart is drawn to a temporary file beside `path` and renamed over it when complete, so a
+// failed plot never leaves a half-written file (nor removes an older one).
 void write(const Chart& c, const std::string& path) {
+    const std::filesystem::path target(path);
+    std::filesystem::path tmp = target;
+    tmp.replace_filename("." + target.stem().string() + ".partial" + target.extension().string());
+    try {
+        draw(c, tmp.string());
+        std::filesystem::rename(tmp, target);
+    } catch (const PlotError& e) {
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        std::string msg = e.what();  // name the file the user asked for, not the temporary
+        if (const auto at = msg.find(tmp.string()); at != std::string::npos) msg.replace(at, tmp.string().size(), path);
+        throw PlotError(msg);
+    } catch (const std::filesystem::filesystem_error& e) {
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        throw PlotError("plot: cannot write " + path + ": " + e.code().message());
+    }
+}
+
+namespace {
+void draw(const Chart& c, const std::string& path) {
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
     for (const auto& s : c.series)
         for (const auto& p : s.points) {
@@ -293,6 +321,7 @@ void write(const Chart& c, const std::string& path) {
     surf.finish();
     if (svg) add_svg_title(path, c.title);
 }
+}  // namespace
 
 void write_toolpath(const std::string& path, const std::string& title, const std::vector<Series>& paths,
                     std::optional<std::pair<Point, Point>> ideal) {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "emu/board/snapshot_file.h"
+#include "emu/plot/plot.h"
 #include "emu/util/atomic_file.h"
 #include "emu/debug/trace_csv.h"
 #include "peripherals/seven_segment.h"
@@ -101,6 +102,7 @@ void Session::set_trace(std::ostream* out) {
 void Session::check(const std::vector<Command>& commands, std::vector<ParseError>& errors) {
     std::set<std::string> known;  // symbols defined by loads so far
     std::set<std::string> saved;  // snapshot files an earlier command writes
+    bool recorded = false;        // a record command came before
     auto err = [&](const Command& c, int col, std::string msg) {
         errors.push_back({{c.where.file, c.where.line, col}, std::move(msg), c.line});
     };
@@ -165,6 +167,10 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 }
                 break;
             }
+            case Op::Record: recorded = true; break;
+            case Op::Plot:
+                if (!recorded) err(c, c.where.col, "nothing recorded to plot: a 'record FILE.csv' must come first");
+                break;
             case Op::RunUntil:
             case Op::Break:
             case Op::Delete: check_value(c, *c.address, 0, 0xFFFF, "address"); break;
@@ -478,6 +484,37 @@ Session::Outcome Session::tool_command(const Command& c) {
         case Op::RecordStop:
             if (!recorder_.recording()) return fail(c, "no recording to stop (record FILE.csv starts one)");
             return write_recording();
+        case Op::Plot: {
+            const auto& samples = recorder_.samples();
+            if (samples.size() < 2) return fail(c, "nothing recorded to plot (record FILE.csv first, then run)");
+            if (recorder_.recording()) {
+                // Include the present moment (the last sample may be up to one period old).
+                m.tool().advance(m.now());
+            }
+            try {
+                if (c.name == "TOOLPATH") {
+                    plot::Series path{"table (X, Y)", {}};
+                    for (const auto& smp : samples) path.points.push_back({smp.axes[0].mm, smp.axes[1].mm});
+                    const plot::Point a = c.ideal_line ? plot::Point{(*c.ideal_line)[0], (*c.ideal_line)[1]} : path.points.front();
+                    const plot::Point b = c.ideal_line ? plot::Point{(*c.ideal_line)[2], (*c.ideal_line)[3]} : path.points.back();
+                    plot::write_toolpath(resolve(c.text).string(), "Toolpath", {path}, std::make_pair(a, b));
+                } else {
+                    std::vector<plot::Series> series;
+                    for (int a = 0; a < 3; ++a) {
+                        plot::Series axis{std::string(1, "XYZ"[a]), {}};
+                        for (const auto& smp : samples)
+                            axis.points.push_back({static_cast<double>(smp.t - samples.front().t) / board::kCpuHz,
+                                                   smp.axes[static_cast<std::size_t>(a)].mm});
+                        series.push_back(std::move(axis));
+                    }
+                    plot::write_time_series(resolve(c.text).string(), "Table position against time", series,
+                                            "position (mm)");
+                }
+            } catch (const plot::PlotError& x) {
+                return fail(c, x.what());
+            }
+            return {};
+        }
         default: return {};
     }
 }
@@ -595,7 +632,8 @@ Session::Outcome Session::execute(const Command& c) {
         case Op::ExpectLost:
         case Op::RunUntilAxis:
         case Op::Record:
-        case Op::RecordStop: return tool_command(c);
+        case Op::RecordStop:
+        case Op::Plot: return tool_command(c);
         case Op::PrintDisplay:
             if (c.text == "text") {
                 output(c, '"' + m.display_text() + '"');
