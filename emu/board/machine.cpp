@@ -105,7 +105,8 @@ void Machine::wire() {
             bus_.map_ram(r.base, r.size, s.data());
     }
     // The parts, in the order they are advanced, reset and saved.
-    parts_ = {&rio_, &kdc_, &keypad_, &tool_};
+    parts_ = {&rio_, &kdc_, &keypad_};
+    if (options_.machine_tool) parts_.push_back(&tool_);
     tool_.set_model(options_.motor);
     for (const auto& r : board::kIoMap) {
         switch (r.device) {
@@ -148,6 +149,7 @@ static_assert(port_of(board::kToolOutPort) == I8155::Port::A && port_of(board::k
 }  // namespace
 
 void Machine::drive_tool(std::uint64_t t) {
+    if (!options_.machine_tool) return;
     // Pins programmed as inputs are not driven: the sequencers' inputs are pulled high.
     const std::uint8_t mask = rio_.port_output_mask(I8155::Port::A);
     const std::uint8_t pins = static_cast<std::uint8_t>((rio_.port_output(I8155::Port::A) & mask) | ~mask);
@@ -163,6 +165,7 @@ void Machine::drive_tool(std::uint64_t t) {
 
 std::uint8_t Machine::sense_tool(std::uint64_t t) {
     std::uint8_t pins = board::kUndrivenPortAB;  // bits the tool does not drive are pulled high
+    if (!options_.machine_tool) return pins;
     for (const board::ToolBit& b : board::kToolWiring) {
         if (b.port != board::kToolInPort) continue;
         const periph::MachineTool::Sense s = tool_.sense(b.axis, t);

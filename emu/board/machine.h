@@ -36,6 +36,7 @@ public:
     struct Options {
         Variant cpu = Variant::I8085;
         periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
+        bool machine_tool = true;  // false: the board alone, port B undriven (benchmarks, tests)
     };
 
     enum class Stop : std::uint8_t {
