@@ -96,6 +96,7 @@ void MachineTool::set_model(MotorModel m) {
 
 void MachineTool::set_drive(Axis axis, bool pulse, bool direction, std::uint64_t t) {
     advance(t);
+    t = s_.now;  // a late call acts at the part's present time (time never runs backwards)
     const int a = idx(axis);
     AxisState& st = s_.axes[a];
     const int d = ax_[a].sequencer.set_inputs(st.sequencer, pulse, direction);

@@ -42,6 +42,17 @@ inline void sin_cos(double x, double& s, double& c) {
     }
 }
 
+// The speed after a kick of `h_j` (time over inertia) with torque t (without Coulomb friction) and
+// Coulomb friction tc: a rotor at rest stays stuck while |t| <= tc; friction alone never reverses
+// the motion (it stops it).
+inline double kick(double w, double t, double h_j, double tc) {
+    if (w == 0.0 && std::fabs(t) <= tc) return 0.0;
+    const double dir = w != 0.0 ? (w > 0 ? 1.0 : -1.0) : (t > 0 ? 1.0 : -1.0);
+    const double n = w + h_j * (t - tc * dir);
+    if (w != 0.0 && n * w < 0.0 && std::fabs(t) <= tc) return 0.0;
+    return n;
+}
+
 int pattern_index(std::uint8_t phases) {
     for (int k = 0; k < 4; ++k)
         if (Sequencer::kPattern[k] == phases) return k;
@@ -73,6 +84,8 @@ void StepperMotor::configure(const Params& p, const Load& load) {
     h_ = p.step_tstates / kClockHz;
     a_on_ = std::exp(-h_ * r_on_ / p.inductance_h);
     a_off_ = std::exp(-h_ * r_off_ / p.inductance_h);
+    m_on_ = (1.0 - a_on_) * p.inductance_h / (r_on_ * h_);
+    m_off_ = (1.0 - a_off_) * p.inductance_h / (r_off_ * h_);
     stiffness_ = p.rotor_teeth * (p.holding_nm * i_on_ / p.rated_a - 4.0 * p.detent_nm);
 }
 
@@ -87,47 +100,53 @@ void StepperMotor::init_at_rest(State& s, double theta, std::uint8_t phases) con
 }
 
 unsigned StepperMotor::step(State& s, std::uint32_t ht) const {
-    double h = h_, a_on = a_on_, a_off = a_off_;
+    double h = h_, a_on = a_on_, a_off = a_off_, m_on = m_on_, m_off = m_off_;
     if (ht != p_.step_tstates) {
         h = ht / kClockHz;
         a_on = std::exp(-h * r_on_ / p_.inductance_h);
         a_off = std::exp(-h * r_off_ / p_.inductance_h);
+        m_on = (1.0 - a_on) * p_.inductance_h / (r_on_ * h);
+        m_off = (1.0 - a_off) * p_.inductance_h / (r_off_ * h);
     }
-    const double x = p_.rotor_teeth * s.theta + std::numbers::pi / 4.0;
+    // Drift half a step: the rotor angle at the step's midpoint, where the torque is evaluated.
+    const double th_mid = s.theta + 0.5 * h * s.omega;
+    const double x = p_.rotor_teeth * th_mid + std::numbers::pi / 4.0;
     double sx, cx;
     sin_cos(x, sx, cx);
+    const double sin4x = 4.0 * sx * cx * (cx * cx - sx * sx);
+    const double tc = load_.coulomb;
+    const double h_j = h * inv_j_;
+    // The midpoint speed for the back-EMF, predicted with the step's starting currents.
+    const double t_pred = kt_ * (-(s.i[0] - s.i[1]) * sx + (s.i[2] - s.i[3]) * cx) - p_.detent_nm * sin4x -
+                          p_.viscous_nms * s.omega;
+    double w_mid = kick(s.omega, t_pred, 0.5 * h_j, tc);
+    if ((s.theta >= load_.theta_hi && w_mid > 0) || (s.theta <= load_.theta_lo && w_mid < 0)) w_mid = 0.0;  // on a stop
 
-    // Electrical: exact exponential per half-winding with the EMF frozen over the step.
-    const double ea = -kt_ * s.omega * sx, eb = kt_ * s.omega * cx;
+    // Electrical: exact exponential per half-winding with the EMF frozen at its midpoint value.
+    const double ea = -kt_ * w_mid * sx, eb = kt_ * w_mid * cx;
     const double e[4] = {ea, -ea, eb, -eb};
     const Drive& d = drive_[s.phases & 15];
-    const double a_on_off[2] = {a_off, a_on};
+    const double a_on_off[2] = {a_off, a_on}, m_on_off[2] = {m_off, m_on};
     double mean[4];
     for (int j = 0; j < 4; ++j) {
-        // i_inf = (Vs - Vce - e)/(r+R) on, (-Vd - e)/(r+R+Rf) off; a blocked diode (i = 0, i_inf
-        // < 0) gives n <= 0, clamped to 0 like any reverse current.
+        // i_inf = (Vs - Vce - e)/(r+R) on, (-Vd - e)/(r+R+Rf) off; the step's mean current is the
+        // exponential's exact mean, i_inf + (i - i_inf)(1 - a) tau/h. A blocked diode (i = 0, i_inf
+        // < 0) gives n <= 0, clamped to 0 like any reverse current (mean clamped too).
         const double inf = d.i0[j] - e[j] * d.g[j];
-        double n = inf + (s.i[j] - inf) * a_on_off[d.on[j]];
+        const double di = s.i[j] - inf;
+        double n = inf + di * a_on_off[d.on[j]];
+        double m = inf + di * m_on_off[d.on[j]];
         n = n < 0.0 ? 0.0 : n;
-        mean[j] = 0.5 * (s.i[j] + n);
+        m = m < 0.0 ? 0.0 : m;
+        mean[j] = m;
         s.i[j] = n;
     }
 
-    // Mechanical: semi-implicit Euler with Coulomb friction and stiction.
-    const double sin4x = 4.0 * sx * cx * (cx * cx - sx * sx);
+    // Mechanical: kick with the midpoint torque (Coulomb friction and stiction), drift the rest.
     const double t_em = kt_ * (-(mean[0] - mean[1]) * sx + (mean[2] - mean[3]) * cx) - p_.detent_nm * sin4x;
-    const double t_nc = t_em - p_.viscous_nms * s.omega;
-    const double tc = load_.coulomb;
-    const double h_j = h * inv_j_;
-    double w;
-    if (s.omega == 0.0 && std::fabs(t_nc) <= tc) {
-        w = 0.0;  // stuck
-    } else {
-        const double dir = s.omega != 0.0 ? (s.omega > 0 ? 1.0 : -1.0) : (t_nc > 0 ? 1.0 : -1.0);
-        w = s.omega + h_j * (t_nc - tc * dir);
-        if (s.omega != 0.0 && w * s.omega < 0.0 && std::fabs(t_nc) <= tc) w = 0.0;  // friction stops it
-    }
-    double th = s.theta + h * w;
+    const double t_nc = t_em - p_.viscous_nms * w_mid;
+    double w = kick(s.omega, t_nc, h_j, tc);
+    double th = th_mid + 0.5 * h * w;
     unsigned flags = kNone;
     if (th >= load_.theta_hi) {
         th = load_.theta_hi;

@@ -21,18 +21,20 @@
 //   the rotor rings at sqrt(k/J)/2pi, damped by the back-EMF (Kt^2/(r+R)) and friction.
 //
 // Integration (deterministic, in T-states of the 3.072 MHz clock): a fixed grid of H T-states
-// anchored at the last input change, split exactly at each phase change. Per step: the currents
-// are advanced by the EXACT solution of their linear ODE with the back-EMF frozen at the step's
-// start (i -> i_inf + (i - i_inf) exp(-h/tau), clamped at zero when a diode blocks), so the
-// electrical time constant L/R = 126 us (on) and L/(r+R+Rf) (off) never limits the step; the
-// mechanics then take a semi-implicit (symplectic) Euler step with the torque of the step's mean
-// current, which keeps the lightly damped ringing from gaining or losing energy numerically.
-// The step H is therefore set by the mechanics and the EMF's rate of change: H = 192 T-states
-// (62.5 us, half the electrical time constant); the rotor's fastest natural period (rotor alone,
-// ~4.6 ms) is ~70 steps, the loaded ringing (~12 ms) ~190, and at 500 steps/s the electrical angle
-// moves 0.05 rad per step. The calibration sweep gives the same start-stop limit at H = 48, 96,
-// 192 and 256 T-states (docs/machine.md); the ringing frequency agrees with the linearised hand
-// calculation within 1 %.
+// anchored at the last input change, split exactly at each phase change. Each step is a
+// drift-kick-drift (position Verlet) step: the rotor drifts half a step; there the currents advance
+// by the EXACT solution of their linear ODE with the back-EMF frozen at its midpoint value
+// (i -> i_inf + (i - i_inf) exp(-h/tau), clamped at zero when a diode or transistor blocks; the
+// torque uses the exponential's exact mean over the step); the rotor is kicked with that torque
+// (Coulomb friction with stiction) and drifts the other half. Because the electrical part is solved
+// exactly, the electrical time constant (L/R = 126 us on, 67 us freewheeling) bounds neither
+// stability nor the step: the step only has to keep the EMF (the electro-mechanical coupling)
+// nearly constant across it, so H is set to one electrical time constant, H = 384 T-states =
+// 125 us ~ L/R. The mechanics are slow beside it (loaded ringing ~12 ms = 95 steps; rotor alone
+// ~4.6 ms = 37 steps; at 500 steps/s the electrical angle moves 0.1 rad per step). Measured against
+// H = 12 T-states: without friction the error falls as H^2 (0.001 step at H = 384, 400 steps/s);
+// the Coulomb friction's stick/slip switching is located to the grid step (first order, at most
+// 0.003 step); the start-stop limit is identical from H = 48 to 768 (docs/machine.md).
 //
 // Settling: a rotor whose velocity is zero and stuck (Coulomb friction or an end stop holds it), or
 // whose residual motion is below 1e-6 rad in amplitude (energy test), with all currents within
@@ -70,7 +72,7 @@ public:
         double detent_nm = 0.02;          // ~5 % of the holding torque, typical for hybrids
         double viscous_nms = 1e-4;        // bearings and screw lubrication, N m s/rad
         // Integration.
-        std::uint32_t step_tstates = 192; // H (62.5 us at 3.072 MHz)
+        std::uint32_t step_tstates = 384; // H = 125 us at 3.072 MHz, about L/R
     };
 
     // Per-axis dynamic state (the grid time is kept by the owner).
@@ -136,7 +138,7 @@ private:
         std::uint8_t on[4];
     };
     Drive drive_[16]{};
-    double h_ = 0, a_on_ = 0, a_off_ = 0, stiffness_ = 0, inv_j_ = 0, g_on_ = 0, g_off_ = 0;
+    double h_ = 0, a_on_ = 0, a_off_ = 0, m_on_ = 0, m_off_ = 0, stiffness_ = 0, inv_j_ = 0, g_on_ = 0, g_off_ = 0;
 };
 
 }  // namespace alp85::periph

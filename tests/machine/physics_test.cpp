@@ -123,3 +123,46 @@ TEST(MotorPhysical, ReverseRunsBack) {
 
 }  // namespace
 }  // namespace alp85::test
+
+namespace alp85::test {
+namespace {
+
+// COUNT toggles and the DIRECTION level at each, sampled every 0.05 ms for 30 ms after one step.
+std::vector<bool> edges_after_one_step(MachineTool& m, int& final_count) {
+    std::vector<bool> dirs;
+    const std::uint64_t t0 = 1000;
+    bool last = m.sense(Axis::X, t0).count;
+    m.set_drive(Axis::X, true, true, t0);
+    for (int k = 1; k <= 600; ++k) {
+        const std::uint64_t t = t0 + static_cast<std::uint64_t>(k) * 154;
+        if (k == 20) m.set_drive(Axis::X, false, true, t0 + 3072);
+        const auto s = m.sense(Axis::X, t);
+        if (s.count != last) dirs.push_back(s.direction), last = s.count;
+    }
+    final_count = static_cast<int>(m.transducer_count(Axis::X));
+    return dirs;
+}
+
+TEST(TransducerOnPhysicalTable, RingingAcrossALineGivesRealEdgesBackAndForth) {
+    // Lines 0.1 step past each step position (offset 0.055 mm): one step crosses the line at
+    // +0.1 step, then the overshoot (linear estimate exp(-pi z/sqrt(1-z^2)) = 0.4 step for the
+    // damping ratio z = 0.28 of the hand calculation) crosses the next line at 1.1 steps and the
+    // ringing brings the table back across it: + + -.
+    auto p = MachineTool::default_params();
+    p.axes[0].transducer.offset_mm = 0.055;
+    MachineTool m(p);
+    int count = 0;
+    EXPECT_EQ(edges_after_one_step(m, count), (std::vector<bool>{true, true, false}));
+    EXPECT_EQ(count, 1);
+}
+
+TEST(TransducerOnPhysicalTable, DefaultOffsetGivesOneEdgePerStep) {
+    // Lines half-way between steps: the overshoot (about 0.4 step) never reaches the next line.
+    MachineTool m;
+    int count = 0;
+    EXPECT_EQ(edges_after_one_step(m, count), (std::vector<bool>{true}));
+    EXPECT_EQ(count, 1);
+}
+
+}  // namespace
+}  // namespace alp85::test
