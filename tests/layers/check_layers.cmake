@@ -12,7 +12,7 @@ set(allowed_emu/plot     "emu/plot/;emu/util/")
 set(allowed_emu/debug    "emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
 set(allowed_emu/script   "emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
 set(allowed_emu/cpm      "emu/cpm/;emu/program/;emu/core/;emu/util/;asm/")
-set(allowed_emu/bench    "emu/bench/;emu/board/;emu/core/;emu/util/;peripherals/")
+set(allowed_emu/bench    "emu/bench/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
 set(layers asm emu/util emu/core peripherals emu/board emu/program emu/plot emu/debug emu/script emu/cpm emu/bench)
 
 set(violations "")

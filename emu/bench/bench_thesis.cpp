@@ -1,0 +1,77 @@
+#include "emu/bench/bench_thesis.h"
+
+#include <cmath>
+#include <ctime>
+
+#include "emu/script/parser.h"
+#include "emu/script/session.h"
+
+namespace alp85 {
+namespace {
+
+double cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
+}
+
+// Appendix C up to the feedrate (docs/thesis.md: Z, X1, Y1, X2, Y2, then the feedrate).
+constexpr const char* kSetup = R"(firmware monitor
+firmware thesis-fixed
+reset
+wait display "-ALP 85-" timeout 1s
+type R 7 0 8 0 0 EXEC
+wait display "?.=----" timeout 200ms
+type 0 0 0 0
+wait display "H1=----" timeout 500ms
+type 0 1 0 0 EXEC
+wait display "y1=----" timeout 200ms
+type 0 1 0 0 EXEC
+wait display "H2=----" timeout 200ms
+type 1 5 1 4 EXEC
+wait display "y2=----" timeout 200ms
+type 1 5 1 4 EXEC
+wait display "H=----" timeout 200ms
+type 1 0 0 0
+wait display "H=1000" timeout 200ms
+)";
+constexpr const char* kMotion = R"(press EXEC
+wait display "  8itti" timeout 120s
+)";
+
+}  // namespace
+
+ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model) {
+    ThesisBenchRun r;
+    std::vector<script::ParseError> errors;
+    const auto setup = script::parse_script(kSetup, "bench-thesis", errors);
+    const auto motion = script::parse_script(kMotion, "bench-thesis", errors);
+    if (!errors.empty()) {
+        r.error = errors.front().format();
+        return r;
+    }
+    script::Session session(script::SessionOptions{});
+    session.machine().tool().set_model(model);
+    for (const auto& c : setup) {
+        if (const auto o = session.execute(c); o.status != script::Session::Status::Ok) {
+            r.error = o.message;
+            return r;
+        }
+    }
+    const std::uint64_t t0 = session.machine().now();
+    const double h0 = cpu_seconds();
+    for (const auto& c : motion) {
+        if (const auto o = session.execute(c); o.status != script::Session::Status::Ok) {
+            r.error = o.message;
+            return r;
+        }
+    }
+    r.host_seconds = cpu_seconds() - h0;
+    r.tstates = session.machine().now() - t0;
+    const auto& tool = session.machine().tool();
+    r.x_steps = std::llround(tool.table_steps(periph::MachineTool::Axis::X));
+    r.y_steps = std::llround(tool.table_steps(periph::MachineTool::Axis::Y));
+    return r;
+}
+
+}  // namespace alp85
