@@ -31,17 +31,6 @@ std::optional<std::uint32_t> parse_address(const std::string& s) {
     return v;
 }
 
-// Written whole or not at all, through devices and links (emu/util/atomic_file.h).
-bool write_file(const std::string& path, std::string_view bytes) {
-    try {
-        alp85::write_atomic(path, bytes);
-        return true;
-    } catch (const std::exception& e) {
-        std::cerr << "asm85: error: " << e.what() << "\n";
-        return false;
-    }
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -107,22 +96,29 @@ int main(int argc, char** argv) {
 
     if (hex_out.empty() && !no_hex) hex_out = std::filesystem::path(source).replace_extension(".hex").string();
     if (no_hex) hex_out.clear();
-    bool ok = true;
-    if (!hex_out.empty()) ok = write_file(hex_out, write_intel_hex(r.image)) && ok;
+    // Every output is made first, then all are written together or none is (make relies on it).
+    alp85::AtomicFileGroup outputs;
+    if (!hex_out.empty()) outputs.add(hex_out, write_intel_hex(r.image));
     if (!bin_out.empty()) {
         std::uint16_t lo = first ? static_cast<std::uint16_t>(*first) : r.image.empty() ? 0 : r.image.lowest();
         std::uint16_t hi = last ? static_cast<std::uint16_t>(*last) : r.image.empty() ? 0 : r.image.highest();
         if (r.image.empty() && !first && !last) {
-            ok = write_file(bin_out, "") && ok;
+            outputs.add(bin_out, "");
         } else if (hi < lo) {
-            std::cerr << "asm85: error: --bin-end is below --bin-start\n";
-            ok = false;
+            std::cerr << "asm85: error: --bin-end is below --bin-start; no output written\n";
+            return 1;
         } else {
             auto bytes = write_binary(r.image, lo, hi, static_cast<std::uint8_t>(*fillv));
-            ok = write_file(bin_out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())) && ok;
+            outputs.add(bin_out, std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
         }
     }
-    if (!lst_out.empty()) ok = write_file(lst_out, write_listing(r)) && ok;
-    if (!map_out.empty()) ok = write_file(map_out, write_json_map(r)) && ok;
-    return ok ? 0 : 1;
+    if (!lst_out.empty()) outputs.add(lst_out, write_listing(r));
+    if (!map_out.empty()) outputs.add(map_out, write_json_map(r));
+    try {
+        outputs.commit();
+    } catch (const std::exception& e) {
+        std::cerr << "asm85: error: " << e.what() << "; no output written\n";
+        return 1;
+    }
+    return 0;
 }

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -29,6 +30,27 @@ private:
     std::filesystem::path path_, tmp_;  // tmp_ empty when writing through
     std::ofstream out_;
     bool done_ = false;
+};
+
+// Several output files that appear together or not at all (asm85's .hex, .bin, .lst and .map:
+// make and other build tools take any of them as proof that the step succeeded). add() only
+// keeps the bytes; commit() writes every file to a temporary beside its target, and renames them
+// over their targets only when all were written. When anything fails, the temporaries are
+// removed, a target replaced already gets its old contents back, and the error names the path.
+// Devices and links are written through (after every temporary was written, before any rename):
+// what went into a device cannot be taken back.
+class AtomicFileGroup {
+public:
+    void add(std::filesystem::path path, std::string bytes);
+    void commit();  // throws std::runtime_error naming the path that failed
+    bool empty() const { return files_.empty(); }
+
+private:
+    struct File {
+        std::filesystem::path path;
+        std::string bytes;
+    };
+    std::vector<File> files_;
 };
 
 // Throws std::runtime_error naming the path and the reason; no temporary file is left behind.

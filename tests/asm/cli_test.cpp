@@ -118,3 +118,41 @@ TEST_F(Cli, HexIsTheDefaultOutputUnlessNoHex) {
 
 }  // namespace
 }  // namespace alp85::asm85::test
+
+namespace alp85::asm85::test {
+namespace {
+
+// Issue #11, 1: the outputs appear all together or none does, whichever one cannot be written.
+TEST_F(Cli, OneUnwritableOutputMeansNoOutputAtAll) {
+    write("p.asm", "\tORG 100H\n\tDB 1,2,3\n");
+    write("nodir", "a file, not a folder");
+    EXPECT_EQ(run("p.asm --lst nodir/x.lst"), 1);
+    EXPECT_FALSE(fs::exists(dir / "p.hex"));
+    EXPECT_NE(read("err.txt").find("nodir/x.lst"), std::string::npos) << read("err.txt");
+    EXPECT_EQ(run("p.asm -o nodir/x.hex --lst p.lst"), 1);
+    EXPECT_FALSE(fs::exists(dir / "p.lst"));
+    EXPECT_EQ(run("p.asm --bin p.bin --lst p.lst --map nodir/p.json"), 1);
+    EXPECT_FALSE(fs::exists(dir / "p.hex"));
+    EXPECT_FALSE(fs::exists(dir / "p.bin"));
+    EXPECT_FALSE(fs::exists(dir / "p.lst"));
+    // Files from an earlier run stay as they were, and no temporary is left beside them.
+    write("p.hex", "old hex");
+    write("p.lst", "old listing");
+    EXPECT_EQ(run("p.asm --lst p.lst --bin nodir/p.bin"), 1);
+    EXPECT_EQ(read("p.hex"), "old hex");
+    EXPECT_EQ(read("p.lst"), "old listing");
+    // A range error found while making the outputs: nothing is written either.
+    EXPECT_EQ(run("p.asm --lst p.lst --bin q.bin --bin-start 200H --bin-end 100H"), 1);
+    EXPECT_EQ(read("p.hex"), "old hex");
+    EXPECT_FALSE(fs::exists(dir / "q.bin"));
+    std::size_t files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) files += e.path().filename().string().find(".tmp") == std::string::npos ? 0 : 1;
+    EXPECT_EQ(files, 0u);
+    // And when every output can be written, all are.
+    EXPECT_EQ(run("p.asm --lst p.lst --bin p.bin"), 0);
+    EXPECT_EQ(read("p.hex"), ":03010000010203F6\n:00000001FF\n");
+    EXPECT_EQ(read("p.bin"), std::string("\x01\x02\x03", 3));
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test

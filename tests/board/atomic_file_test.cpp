@@ -74,3 +74,35 @@ TEST_F(AtomicFile, AMissingDirectoryIsAnErrorNamingThePath) {
 
 }  // namespace
 }  // namespace alp85::test
+
+namespace alp85::test {
+namespace {
+
+TEST_F(AtomicFile, AGroupIsWrittenWholeOrNotAtAll) {
+    write_atomic(dir / "a.txt", std::string_view("old a"));
+    write_atomic(dir / "blocker", std::string_view("a file where a folder is wanted"));
+    AtomicFileGroup bad;
+    bad.add(dir / "a.txt", "new a");
+    bad.add(dir / "b.txt", "new b");
+    bad.add(dir / "blocker" / "c.txt", "cannot be");
+    try {
+        bad.commit();
+        FAIL() << "no exception";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("c.txt"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(read(dir / "a.txt"), "old a");
+    EXPECT_FALSE(fs::exists(dir / "b.txt"));
+    EXPECT_EQ(entries(), 2u);  // a.txt and blocker: no temporaries
+
+    AtomicFileGroup good;
+    good.add(dir / "a.txt", "new a");
+    good.add(dir / "b.txt", "new b");
+    good.commit();
+    EXPECT_EQ(read(dir / "a.txt"), "new a");
+    EXPECT_EQ(read(dir / "b.txt"), "new b");
+    EXPECT_EQ(entries(), 3u);
+}
+
+}  // namespace
+}  // namespace alp85::test
