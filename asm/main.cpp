@@ -17,8 +17,12 @@ constexpr const char* kExamples = R"(Examples:
   asm85 prog.asm -o prog.hex --lst prog.lst --map prog.json
   asm85 bdos.asm --bin bdos.bin --bin-start 0E800H --bin-end 0F5FFH --fill 0
   asm85 test.asm --cpu 8085u -D DEBUG -D BAUD=9600 -I include/
-Diagnostics are written as file:line:col: error: message. Exit status is 1 when there is an
-error, and then no output file is written.)";
+Diagnostics are written as file:line:col: error: message.
+Exit status: 0 success; 1 an error in the source (or a source that cannot be read) or an output
+that cannot be written, and then no output file is written; 2 a usage error (an unknown option,
+a bad --cpu, --bin-start, --bin-end or --fill), and nothing is written either.)";
+
+constexpr int kUsageError = 2;
 
 // 0x1F, 1FH, 31: what a user may type for an address.
 std::optional<std::uint32_t> parse_address(const std::string& s) {
@@ -57,7 +61,11 @@ int main(int argc, char** argv) {
     app.add_flag("-q,--quiet", quiet, "Print errors only, no warnings");
     app.add_flag("--no-unused-macro-warnings", no_unused, "Don't warn about macros that are never used");
     app.footer(kExamples);
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : kUsageError;  // --help is no error; not CLI11's codes (105, 106)
+    }
 
     Options opt;
     opt.cpu = *parse_cpu(cpu);
@@ -83,15 +91,15 @@ int main(int argc, char** argv) {
     std::optional<std::uint32_t> first, last, fillv = parse_address(fill);
     if (!bin_start.empty() && !(first = parse_address(bin_start))) {
         std::cerr << "asm85: error: bad --bin-start '" << bin_start << "'\n";
-        return 1;
+        return kUsageError;
     }
     if (!bin_end.empty() && !(last = parse_address(bin_end))) {
         std::cerr << "asm85: error: bad --bin-end '" << bin_end << "'\n";
-        return 1;
+        return kUsageError;
     }
     if (!fillv || *fillv > 0xFF || (first && *first > 0xFFFF) || (last && *last > 0xFFFF)) {
         std::cerr << "asm85: error: --fill must be a byte and addresses at most 0FFFFH\n";
-        return 1;
+        return kUsageError;
     }
 
     if (hex_out.empty() && !no_hex) hex_out = std::filesystem::path(source).replace_extension(".hex").string();
@@ -106,7 +114,7 @@ int main(int argc, char** argv) {
             outputs.add(bin_out, "");
         } else if (hi < lo) {
             std::cerr << "asm85: error: --bin-end is below --bin-start; no output written\n";
-            return 1;
+            return kUsageError;
         } else {
             auto bytes = write_binary(r.image, lo, hi, static_cast<std::uint8_t>(*fillv));
             outputs.add(bin_out, std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));

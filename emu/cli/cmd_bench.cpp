@@ -64,6 +64,7 @@ void add_bench_command(CLI::App& app, int& status) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* bench = app.add_subcommand("bench", "Benchmarks");
     bench->require_subcommand(1);
+    bench->footer("Exit status: 0 success, 2 a usage error.");
     CLI::App* cpu = bench->add_subcommand("cpu", "Emulated T-states per second on a fixed CPU-bound workload");
     cpu->add_option("--cpu", args->cpu, "processor variant")->check(CLI::IsMember({"8080", "8085"}))->capture_default_str();
     cpu->add_option("--tstates", args->tstates, "T-states to run")->check(CLI::Range(1ULL, 1ULL << 50))->capture_default_str();

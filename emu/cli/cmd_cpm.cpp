@@ -128,6 +128,10 @@ void add_cpm_command(CLI::App& app, int& status) {
     cmd->add_option("--trace-last", args->trace_last, "with --trace: only the last N instructions of the run")
         ->needs(trace)
         ->check(CLI::Range(std::size_t{1}, std::size_t{10'000'000}));  // the ring is kept in memory
+    cmd->footer(
+        "Exit status: 0 the program ended by warm boot (JMP 0 or BDOS 0), 1 the program or the trace\n"
+        "file cannot be read or written, 2 a usage error or a HLT outside the BDOS, 3 an undefined BDOS\n"
+        "function, 4 the T-state limit was reached, 5 stopped by a debug hook.");
     cmd->callback([args, &status] { status = run_cpm(*args); });
 }
 

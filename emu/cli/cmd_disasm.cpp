@@ -127,7 +127,9 @@ void add_disasm_command(CLI::App& app, int& status) {
         "Examples:\n"
         "  alp85 disasm --monitor --from AUS --to 05C8H\n"
         "  alp85 disasm prog.hex --map prog.json\n"
-        "  alp85 disasm rom.bin --org 0 --source -o rom.asm");
+        "  alp85 disasm rom.bin --org 0 --source -o rom.asm\n"
+        "Exit status: 0 success, 1 an image or map that cannot be read, no bytes in the range, or an\n"
+        "output that cannot be written, 2 a usage error (a bad address, range or option).");
     cmd->callback([args, &status] { status = run_disasm(*args); });
 }
 

@@ -65,7 +65,9 @@ void add_run_command(CLI::App& app, int& status) {
     cmd->footer(
         "Examples:\n"
         "  alp85 run                                          # the monitor's sign-on\n"
-        "  alp85 run firmware/demo/hello85.asm --keys \"R 7 0800 EXEC\"");
+        "  alp85 run firmware/demo/hello85.asm --keys \"R 7 0800 EXEC\"\n"
+        "Exit status: 0 success, 1 a program could not be placed or run, 2 a usage error or a bad\n"
+        "argument (a program that is missing or does not assemble, a bad time or key).");
     cmd->callback([args, &status] {
         script::SessionOptions so;
         so.out = &std::cout;

@@ -22,14 +22,16 @@ void add_script_command(CLI::App& app, int& status) {
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("script", "Run headless test scripts against the ALP 85 (docs/scripting.md)");
-    cmd->add_option("files", args->files, "Script files (.alp)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("files", args->files, "Script files (.alp)")->required();  // a missing one: runner::prepare
     cmd->add_option("--junit", args->junit, "Write a JUnit XML report");
     cmd->add_option("--trace", args->trace, "Write every executed instruction as CSV");
     cmd->add_flag("-v,--verbose", args->verbose, "Echo each command with the simulated time");
     cmd->footer(
         "Examples:\n"
         "  alp85 script scripts/monitor/*.alp\n"
-        "  alp85 script test.alp --junit report.xml -v");
+        "  alp85 script test.alp --junit report.xml -v\n"
+        "Exit status: 0 every script passed, 1 an expectation failed, 2 a usage or script error (then\n"
+        "nothing runs) or an output that could not be written.");
     cmd->callback([args, &status] {
         script::RunnerOptions o;
         if (firmware::have_monitor()) o.monitor_rom = firmware::monitor;

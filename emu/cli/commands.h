@@ -5,6 +5,9 @@
 
 namespace alp85::cli {
 
+// The exit status of every usage error (an unknown option, a missing or malformed argument).
+inline constexpr int kUsageError = 2;
+
 // Each add_* registers a subcommand whose callback stores the process exit status in `status`.
 void add_cpm_command(CLI::App& app, int& status);
 void add_bench_command(CLI::App& app, int& status);

@@ -7,6 +7,8 @@
 int main(int argc, char** argv) {
     CLI::App app{"ALP85: emulator of the ALP 85 Intel 8085 board"};
     app.require_subcommand(1);
+    app.footer("Exit status: 0 success, 2 a usage error (unknown option, missing argument); each command's\n"
+               "--help lists its own.");
     int status = 0;
     alp85::cli::add_cpm_command(app, status);
     alp85::cli::add_bench_command(app, status);
@@ -17,7 +19,8 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // --help is not an error; every usage error is 2, not CLI11's own codes (105, 106, ...).
+        return app.exit(e) == 0 ? 0 : alp85::cli::kUsageError;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "alp85: %s\n", e.what());
         return 1;

@@ -628,6 +628,7 @@ private:
 }  // namespace
 
 std::string ParseError::format() const {
+    if (where.line == 0) return fmt::format("{}: error: {}\n", where.file, message);  // the whole file
     std::string caret(static_cast<std::size_t>(std::max(where.col, 1) - 1), ' ');
     for (std::size_t i = 0; i < caret.size() && i < line.size(); ++i)
         if (line[i] == '\t') caret[i] = '\t';

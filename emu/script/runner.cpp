@@ -43,7 +43,7 @@ bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, 
              const RunnerOptions& options) {
     std::ifstream in(file, std::ios::binary);
     if (!in) {
-        errors.push_back({{file.string(), 0, 0}, "cannot open script", ""});
+        errors.push_back({{file.string(), 0, 0}, std::filesystem::exists(file) ? "cannot read the script" : "no such script", ""});
         return false;
     }
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

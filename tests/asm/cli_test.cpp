@@ -142,7 +142,7 @@ TEST_F(Cli, OneUnwritableOutputMeansNoOutputAtAll) {
     EXPECT_EQ(read("p.hex"), "old hex");
     EXPECT_EQ(read("p.lst"), "old listing");
     // A range error found while making the outputs: nothing is written either.
-    EXPECT_EQ(run("p.asm --lst p.lst --bin q.bin --bin-start 200H --bin-end 100H"), 1);
+    EXPECT_EQ(run("p.asm --lst p.lst --bin q.bin --bin-start 200H --bin-end 100H"), 2);  // a usage error
     EXPECT_EQ(read("p.hex"), "old hex");
     EXPECT_FALSE(fs::exists(dir / "q.bin"));
     std::size_t files = 0;
@@ -152,6 +152,28 @@ TEST_F(Cli, OneUnwritableOutputMeansNoOutputAtAll) {
     EXPECT_EQ(run("p.asm --lst p.lst --bin p.bin"), 0);
     EXPECT_EQ(read("p.hex"), ":03010000010203F6\n:00000001FF\n");
     EXPECT_EQ(read("p.bin"), std::string("\x01\x02\x03", 3));
+}
+
+}  // namespace
+}  // namespace alp85::asm85::test
+
+namespace alp85::asm85::test {
+namespace {
+
+// Issue #11, 4: usage errors exit 2, not CLI11's own codes (105, 106, 109, ...); --help says so.
+TEST_F(Cli, UsageErrorsExit2AndHelpListsTheExitStatuses) {
+    write("p.asm", "\tNOP\n");
+    EXPECT_EQ(run(""), 2);                       // no SOURCE
+    EXPECT_EQ(run("p.asm --no-such-option"), 2);
+    EXPECT_EQ(run("p.asm --cpu 6502"), 2);
+    EXPECT_EQ(run("p.asm --name-length 99"), 2);
+    EXPECT_EQ(run("p.asm --bin p.bin --bin-start XYZ"), 2);
+    EXPECT_FALSE(fs::exists(dir / "p.hex"));
+    EXPECT_FALSE(fs::exists(dir / "p.bin"));
+    EXPECT_EQ(run("--help"), 0);
+    const std::string help = read("out.txt");
+    EXPECT_NE(help.find("Exit status: 0 success; 1 an error in the source"), std::string::npos) << help;
+    EXPECT_NE(help.find("2 a usage error"), std::string::npos) << help;
 }
 
 }  // namespace
