@@ -57,8 +57,8 @@ LoadedImage read_image(const std::filesystem::path& path, const LoadOptions& opt
         img.assembly = std::move(r);
     } else if (ext == ".hex" || ext == ".ihx" || ext == ".ihex") {
         std::map<std::uint16_t, std::uint8_t> bytes;
-        const std::string err = load_intel_hex(read_all(path), [&](std::uint16_t a, std::uint8_t v) { bytes[a] = v; });
-        if (!err.empty()) throw LoadError(fmt::format("{}:{}", path.string(), err));
+        const auto err = read_intel_hex(read_all(path), [&](std::uint16_t a, std::uint8_t v) { bytes[a] = v; });
+        if (err) throw LoadError(fmt::format("{}:{}:{}: error: {}", path.string(), err->line, err->col, err->message));
         img.segments = runs(bytes);
     } else if (ext == ".bin" || ext == ".rom" || ext == ".com") {
         // A CP/M .COM file runs at 0100H, its TPA, unless told otherwise.

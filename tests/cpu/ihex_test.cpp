@@ -82,3 +82,43 @@ TEST(CpmMachine, BdosEntryIsTheTopOfTheTpa) {
 
 }  // namespace
 }  // namespace alp85::test
+
+namespace alp85::test {
+namespace {
+
+// Issue #11, 8: line and column of what is wrong, and an empty file called empty (not "line 0").
+TEST(IntelHex, ErrorsHaveALineAndAColumn) {
+    const auto nothing = [](std::uint16_t, std::uint8_t) {};
+    auto e = read_intel_hex("", nothing);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->line, 1);
+    EXPECT_EQ(e->col, 1);
+    EXPECT_EQ(e->message, "empty file: no Intel HEX records");
+    e = read_intel_hex("\n\r\n", nothing);  // blank lines only
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->message, "empty file: no Intel HEX records");
+    // Line 2's checksum (the last two of its 17 characters) is off by one: column 16.
+    e = read_intel_hex(":0100000000FF\n:030100003E057644\n:00000001FF\n", nothing);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->line, 2);
+    EXPECT_EQ(e->col, 16);
+    EXPECT_EQ(e->message, "checksum mismatch");
+    // 'G' is the 3rd character of the record.
+    e = read_intel_hex(":0G0100003E057643\n:00000001FF\n", nothing);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->line, 1);
+    EXPECT_EQ(e->col, 3);
+    // Record type 06 (columns 8-9) is unknown; checksum 00+00+00+06 -> FAH.
+    e = read_intel_hex(":00000006FA\n:00000001FF\n", nothing);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->col, 8);
+    EXPECT_EQ(e->message, "unknown record type");
+    // No end-of-file record after line 1: reported where it was due, line 2.
+    e = read_intel_hex(":030100003E057643\n", nothing);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->line, 2);
+    EXPECT_FALSE(read_intel_hex(":030100003E057643\r\n:00000001FF\r\n", nothing));
+}
+
+}  // namespace
+}  // namespace alp85::test
