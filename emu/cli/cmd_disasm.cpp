@@ -35,6 +35,10 @@ struct DisasmArgs {
 
 // 0800H, 0x800, 2048 (the script language's numbers), or a symbol's name.
 std::optional<std::uint16_t> parse_address(const std::string& text, const SymbolTable& symbols, std::string& error) {
+    if (std::string why = script::ambiguous_address(text); !why.empty()) {
+        error = std::move(why);
+        return std::nullopt;
+    }
     if (const auto n = script::parse_number(text)) {
         if (*n >= 0 && *n <= 0xFFFF) return static_cast<std::uint16_t>(*n);
         error = fmt::format("'{}' is not an address (0000H-0FFFFH; e.g. 0800H, 0x800, 2048 or a symbol)", text);

@@ -140,39 +140,20 @@ private:
         return true;
     }
 
-    bool value(Value& v, const char* what) {
+    // address: where an address is expected, a bare number with a leading zero is refused
+    // (ambiguous_address).
+    bool value(Value& v, const char* what, bool address = false) {
         if (!more() || peek().quoted) return missing(what);
         const Token& t = peek();
-        v.col = t.col;
-        v.text = t.text;
-        // SYMBOL[(+|-)NUMBER] or NUMBER
-        const std::string& s = t.text;
-        std::size_t split = s.find_first_of("+-", 1);
-        std::string head = s.substr(0, split);
-        std::int64_t offset = 0;
-        if (split != std::string::npos) {
-            const auto n = parse_number(std::string_view(s).substr(split + 1));
-            if (!n) {
-                error(t.col + static_cast<int>(split) + 1, fmt::format("bad number '{}'", s.substr(split + 1)));
-                return false;
-            }
-            offset = s[split] == '-' ? -*n : *n;
-        }
-        if (!head.empty() && std::isdigit(static_cast<unsigned char>(head[0]))) {
-            const auto n = parse_number(head);
-            if (!n) {
-                error(t.col, fmt::format("bad number '{}'", head));
-                return false;
-            }
-            v.number = *n + offset;
-        } else if (head.size() > 0 && (std::isalpha(static_cast<unsigned char>(head[0])) || head[0] == '_' ||
-                                       head[0] == '?' || head[0] == '@' || head[0] == '.')) {
-            v.symbol = upper(head);
-            v.number = offset;
-        } else {
-            error(t.col, fmt::format("expected {}, found '{}'", what, s));
+        std::string why;
+        int at = 1;
+        const auto r = parse_value(t.text, what, address, why, at);
+        if (!r) {
+            error(t.col + at - 1, why);
             return false;
         }
+        v = *r;
+        v.col = t.col;
         ++pos_;
         return true;
     }
@@ -226,7 +207,7 @@ private:
         if (at_word("AT")) {
             ++pos_;
             Value v;
-            if (!value(v, "an address")) return false;
+            if (!value(v, "an address", true)) return false;
             c.address = v;
         }
         return true;
@@ -422,7 +403,7 @@ private:
             }
             c.op = Op::RunUntil;
             Value v;
-            if (!value(v, "an address or symbol")) return false;
+            if (!value(v, "an address or symbol", true)) return false;
             c.address = v;
             c.time = kDefaultUntil;
             return optional_time("TIMEOUT", c.time);
@@ -453,7 +434,7 @@ private:
     bool brk(Command& c) {
         c.op = Op::Break;
         Value v;
-        if (!value(v, "an address or symbol")) return false;
+        if (!value(v, "an address or symbol", true)) return false;
         c.address = v;
         return true;
     }
@@ -465,7 +446,7 @@ private:
         }
         c.op = Op::Delete;
         Value v;
-        if (!value(v, "an address, a symbol or 'all'")) return false;
+        if (!value(v, "an address, a symbol or 'all'", true)) return false;
         c.address = v;
         return true;
     }
@@ -490,7 +471,7 @@ private:
         if (w == "MEM" || w == "WORD") {
             c.op = w == "MEM" ? Op::ExpectMem : Op::ExpectWord;
             Value a;
-            if (!value(a, "an address")) return false;
+            if (!value(a, "an address", true)) return false;
             c.address = a;
             if (c.op == Op::ExpectWord) {
                 Value v;
@@ -578,7 +559,7 @@ private:
             ++pos_;
             c.op = Op::SetMem;
             Value a;
-            if (!value(a, "an address")) return false;
+            if (!value(a, "an address", true)) return false;
             c.address = a;
             return values(c, "one or more byte values");
         }
@@ -655,6 +636,62 @@ std::vector<Command> parse_script(std::string_view text, const std::string& file
         start = end + 1;
     }
     return out;
+}
+
+std::optional<Value> parse_value(std::string_view text, std::string_view what, bool address, std::string& error,
+                                 int& error_col) {
+    Value v;
+    v.col = 1;
+    v.text = std::string(text);
+    error_col = 1;
+    // SYMBOL[(+|-)NUMBER] or NUMBER
+    const std::string s(text);
+    const std::size_t split = s.empty() ? std::string::npos : s.find_first_of("+-", 1);
+    const std::string head = s.substr(0, split);
+    std::int64_t offset = 0;
+    if (split != std::string::npos) {
+        const auto n = parse_number(std::string_view(s).substr(split + 1));
+        if (!n) {
+            error_col = static_cast<int>(split) + 2;
+            error = fmt::format("bad number '{}'", s.substr(split + 1));
+            return std::nullopt;
+        }
+        offset = s[split] == '-' ? -*n : *n;
+    }
+    if (!head.empty() && std::isdigit(static_cast<unsigned char>(head[0]))) {
+        if (address) {
+            if (std::string why = ambiguous_address(head); !why.empty()) {
+                error = std::move(why);
+                return std::nullopt;
+            }
+        }
+        const auto n = parse_number(head);
+        if (!n) {
+            error = fmt::format("bad number '{}'", head);
+            return std::nullopt;
+        }
+        v.number = *n + offset;
+    } else if (!head.empty() && (std::isalpha(static_cast<unsigned char>(head[0])) || head[0] == '_' ||
+                                 head[0] == '?' || head[0] == '@' || head[0] == '.')) {
+        v.symbol = upper(head);
+        v.number = offset;
+    } else {
+        error = fmt::format("expected {}, found '{}'", what, s);
+        return std::nullopt;
+    }
+    return v;
+}
+
+std::string ambiguous_address(std::string_view text) {
+    if (text.size() < 2 || text[0] != '0' ||
+        !std::all_of(text.begin(), text.end(), [](char ch) { return ch >= '0' && ch <= '9'; }))
+        return {};
+    std::string_view digits = text;
+    while (digits.size() > 1 && digits[0] == '0') digits.remove_prefix(1);
+    const auto n = parse_number(digits);
+    return fmt::format("address '{}' is ambiguous: a bare number is decimal ({} = {:04X}H); write {}H for hex "
+                       "or {} for decimal",
+                       text, *n, *n & 0xFFFF, text, digits);
 }
 
 std::optional<std::int64_t> parse_number(std::string_view text) {

@@ -27,6 +27,15 @@ std::vector<Command> parse_script(std::string_view text, const std::string& file
 // Pieces the debugger's prompt and the runner reuse.
 std::optional<std::int64_t> parse_number(std::string_view text);     // 12, 0CH, 0xC, 1100B, 14O/14Q
 std::optional<std::uint64_t> parse_time(std::string_view text);      // 3070t, 250us, 10ms, 1.5s
+// Where an address is expected, a bare decimal number with a leading zero ("0800") is refused:
+// on an 8085 board it is surely meant as hex, and read as decimal it would silently misplace an
+// image (0800 = 0320H, inside the monitor). Returns the error message with the hint to write
+// 0800H, or an empty string when `text` is not such a number.
+std::string ambiguous_address(std::string_view text);
+// NUMBER or SYMBOL[(+|-)NUMBER], `what` naming it in messages; with `address`, the leading-zero
+// rule above. On error: nullopt, the message, and its 1-based column within `text`.
+std::optional<Value> parse_value(std::string_view text, std::string_view what, bool address, std::string& error,
+                                 int& error_col);
 std::optional<KeyRef> parse_key(std::string_view text);
 std::optional<Reg> parse_reg(std::string_view text);
 std::string_view reg_name(Reg r);

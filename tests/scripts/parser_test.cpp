@@ -157,3 +157,31 @@ TEST(ScriptParser, AWholeScriptReportsEveryError) {
 
 }  // namespace
 }  // namespace alp85::script
+
+namespace alp85::script {
+namespace {
+
+// Issue #11, 5: where an address is expected, "0800" is refused (it would be decimal 800 =
+// 0320H, over the monitor) with the hint to write 0800H; data values and explicit forms are not.
+TEST(ScriptAddresses, ALeadingZeroBareNumberIsRefusedWhereAnAddressIsExpected) {
+    for (const char* line : {"load x.bin at 0800", "break 0800", "run until 0800", "delete 0800", "expect mem 0800 1",
+                             "expect word 0800 1", "set mem 0800 1"}) {
+        const ParseError e = error_of(line);
+        EXPECT_NE(e.message.find("address '0800' is ambiguous"), std::string::npos) << line << ": " << e.message;
+        EXPECT_NE(e.message.find("800 = 0320H"), std::string::npos) << e.message;
+        EXPECT_NE(e.message.find("write 0800H for hex or 800 for decimal"), std::string::npos) << e.message;
+        EXPECT_EQ(e.where.col, static_cast<int>(std::string_view(line).find("0800")) + 1) << line;
+    }
+    EXPECT_EQ(one("load x.bin at 0800H").address->number, 0x800);
+    EXPECT_EQ(one("load x.bin at 0x800").address->number, 0x800);
+    EXPECT_EQ(one("load x.bin at 2048").address->number, 2048);
+    EXPECT_EQ(one("load x.bin at 0800D").address->number, 800);  // decimal, said so
+    EXPECT_EQ(one("load x.bin at 0").address->number, 0);
+    EXPECT_EQ(one("expect mem 1000H 01 02").values[0].number, 1);  // data, not an address
+    EXPECT_EQ(ambiguous_address("0800H"), "");
+    EXPECT_EQ(ambiguous_address("800"), "");
+    EXPECT_NE(ambiguous_address("00"), "");
+}
+
+}  // namespace
+}  // namespace alp85::script
