@@ -1,6 +1,8 @@
 // alp85 run [PROGRAM...] [--keys "R 7 0800 EXEC"] [--boot TIME] [--for TIME] [--no-monitor]:
 // the board, headless. It boots the monitor, shows the display after RESET, types the keys, runs,
-// and shows the display again. Built on the command language's Session, like every front end.
+// and shows the display again. Built on the command language's Session, like every front end:
+// the arguments become Commands directly (no script text is made, so a path may hold any
+// character), and a report points at the argument on the command line.
 #include <iostream>
 #include <memory>
 
@@ -14,10 +16,27 @@
 namespace alp85::cli {
 namespace {
 
+using script::Command;
+using script::Op;
+using script::ParseError;
+
+// A command that stands for `argument` on the command line.
+Command command(Op op, std::string_view argument = {}) {
+    Command c;
+    c.op = op;
+    c.where = {"alp85 run", 1, argument.empty() ? 1 : column_of(argument)};
+    c.line = command_line();
+    return c;
+}
+
+ParseError argument_error(std::string_view argument, int offset, std::string message) {
+    return {{"alp85 run", 1, column_of(argument) + offset}, std::move(message), command_line()};
+}
+
 // "R 7 0800 EXEC" -> R 7 0 8 0 0 EXEC: a word that is not a key name but is all hex digits is
 // typed digit by digit.
-std::vector<std::string> expand_keys(const std::string& text, std::string& error) {
-    std::vector<std::string> keys;
+std::vector<script::KeyRef> expand_keys(const std::string& text, std::vector<ParseError>& errors) {
+    std::vector<script::KeyRef> keys;
     std::size_t i = 0;
     while (i < text.size()) {
         while (i < text.size() && text[i] == ' ') ++i;
@@ -25,25 +44,43 @@ std::vector<std::string> expand_keys(const std::string& text, std::string& error
         while (j < text.size() && text[j] != ' ') ++j;
         if (j == i) break;
         const std::string w = text.substr(i, j - i);
-        i = j;
-        if (script::parse_key(w)) {
-            keys.push_back(w);
-            continue;
-        }
-        for (char ch : w) {
-            if (!std::isxdigit(static_cast<unsigned char>(ch))) {
-                error = fmt::format("unknown key '{}' in --keys", w);
-                return {};
+        if (const auto k = script::parse_key(w)) {
+            keys.push_back(*k);
+        } else {
+            for (char ch : w) {
+                const auto digit = std::isxdigit(static_cast<unsigned char>(ch)) ? script::parse_key(std::string(1, ch))
+                                                                                : std::nullopt;
+                if (!digit) {
+                    errors.push_back(argument_error(text, static_cast<int>(i), fmt::format("unknown key '{}' in --keys", w)));
+                    return {};
+                }
+                keys.push_back(*digit);
             }
-            keys.emplace_back(1, ch);
         }
+        i = j;
     }
     return keys;
 }
 
-void add_display(std::vector<std::string>& lines, bool text_only) {
-    if (!text_only) lines.push_back("print display");
-    lines.push_back("print display text");
+std::optional<std::uint64_t> time_argument(const std::string& text, const char* option, std::vector<ParseError>& errors) {
+    const auto t = script::parse_time(text);
+    if (!t)
+        errors.push_back(argument_error(text, 0, fmt::format("bad time '{}' in {} (a number with a unit: t, us, ms or s)",
+                                                             text, option)));
+    return t;
+}
+
+void add_display(std::vector<Command>& commands, bool text_only) {
+    if (!text_only) commands.push_back(command(Op::PrintDisplay));
+    Command c = command(Op::PrintDisplay);
+    c.text = "text";
+    commands.push_back(std::move(c));
+}
+
+void add_print(std::vector<Command>& commands, std::string text) {
+    Command c = command(Op::Print);
+    c.text = std::move(text);
+    commands.push_back(std::move(c));
 }
 
 }  // namespace
@@ -56,13 +93,15 @@ void add_run_command(CLI::App& app, int& status) {
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("run", "Run the ALP 85 headless: boot the monitor, type keys, show the display");
-    cmd->add_option("programs", args->programs, "Programs to load first (.asm, .hex; FILE.bin@ADDR)");
+    cmd->add_option("programs", args->programs, "Programs to load first (.asm, .hex; FILE.bin@ADDR, e.g. x.bin@0800H)");
     auto* keys = cmd->add_option("--keys", args->keys, "Keys to type after booting, e.g. \"R 7 0800 EXEC\"");
     cmd->add_option("--boot", args->boot, "Time to run after RESET before typing (default 500ms)");
     cmd->add_option("--for", args->run_for, "Time to run after the keys (default 1s)")->needs(keys);
     cmd->add_flag("--no-monitor", args->no_monitor, "Do not load the built-in monitor ROM");
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
     cmd->footer(
+        "Addresses are read as in scripts: 0800H or 0x800 is hex, 2048 decimal; a bare number with a\n"
+        "leading zero (0800) is refused as ambiguous.\n"
         "Examples:\n"
         "  alp85 run                                          # the monitor's sign-on\n"
         "  alp85 run firmware/demo/hello85.asm --keys \"R 7 0800 EXEC\"\n"
@@ -70,50 +109,57 @@ void add_run_command(CLI::App& app, int& status) {
         "argument (a program that is missing or does not assemble, a bad time or key).");
     cmd->callback([args, &status] {
         script::SessionOptions so;
+        so.base_dir = "";  // paths as the user typed them
         so.out = &std::cout;
         if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
         script::Session session(so);
-        std::vector<script::ParseError> errors;
-        std::vector<std::string> lines;
+        std::vector<ParseError> errors;
+        std::vector<Command> commands;
         if (!args->no_monitor) {
             if (!firmware::have_monitor()) {
                 std::cerr << "alp85 run: this alp85 was built without the monitor ROM (use --no-monitor)\n";
                 status = 2;
                 return;
             }
-            lines.push_back("monitor");
+            commands.push_back(command(Op::Monitor));
         }
         for (const std::string& p : args->programs) {
+            Command c = command(Op::Load, p);
             const auto at = p.rfind('@');
-            lines.push_back(at == std::string::npos ? fmt::format("load \"{}\"", p)
-                                                    : fmt::format("load \"{}\" at {}", p.substr(0, at), p.substr(at + 1)));
+            c.text = p.substr(0, at);
+            if (at != std::string::npos) {
+                std::string why;
+                int col = 1;
+                auto v = script::parse_value(std::string_view(p).substr(at + 1), "an address", true, why, col);
+                if (!v) {
+                    errors.push_back(argument_error(p, static_cast<int>(at) + col, why));
+                    continue;
+                }
+                v->col = column_of(p) + static_cast<int>(at) + 1;
+                c.address = std::move(*v);
+            }
+            commands.push_back(std::move(c));
         }
-        lines.push_back("reset");
-        lines.push_back("run " + args->boot);
-        lines.push_back("print \"after RESET:\"");
-        add_display(lines, args->text);
-        std::string key_error;
-        const auto keys = expand_keys(args->keys, key_error);
-        if (!key_error.empty()) {
-            std::cerr << "alp85 run: " << key_error << '\n';
-            status = 2;
-            return;
+        commands.push_back(command(Op::Reset));
+        Command boot = command(Op::Run, args->boot);
+        if (const auto t = time_argument(args->boot, "--boot", errors)) boot.time = *t;
+        commands.push_back(std::move(boot));
+        add_print(commands, "after RESET:");
+        add_display(commands, args->text);
+        if (!args->keys.empty()) {
+            Command type = command(Op::Type, args->keys);
+            type.keys = expand_keys(args->keys, errors);
+            type.time = script::kDefaultHold;
+            type.gap = script::kDefaultGap;
+            commands.push_back(std::move(type));
+            Command run = command(Op::Run, args->run_for);
+            if (const auto t = time_argument(args->run_for, "--for", errors)) run.time = *t;
+            commands.push_back(std::move(run));
+            add_print(commands, fmt::format("after {}:", args->keys));
+            add_display(commands, args->text);
         }
-        if (!keys.empty()) {
-            std::string type = "type";
-            for (const auto& k : keys) type += " " + k;
-            lines.push_back(type);
-            lines.push_back("run " + args->run_for);
-            lines.push_back(fmt::format("print \"after {}:\"", args->keys));
-            add_display(lines, args->text);
-        }
-        std::vector<script::Command> commands;
-        int n = 0;
-        for (const std::string& l : lines) {
-            ++n;
-            if (auto c = script::parse_line(l, "alp85 run", n, errors)) commands.push_back(std::move(*c));
-        }
-        session.check(commands, errors);
+        if (errors.empty()) session.check(commands, errors);
+        for (const std::string& w : session.warnings()) std::cerr << w;
         if (!errors.empty()) {
             for (const auto& e : errors) std::cerr << e.format();
             status = 2;

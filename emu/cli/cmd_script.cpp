@@ -36,6 +36,7 @@ void add_script_command(CLI::App& app, int& status) {
         script::RunnerOptions o;
         if (firmware::have_monitor()) o.monitor_rom = firmware::monitor;
         o.out = &std::cout;
+        o.err = &std::cerr;
         o.verbose = args->verbose;
         // Every script is checked before any runs: a script error stops everything (status 2).
         std::vector<std::vector<script::Command>> programs(args->files.size());

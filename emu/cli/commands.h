@@ -1,12 +1,24 @@
 // The alp85 subcommands; each lives in its own file (cmd_*.cpp) and registers itself on the app.
 #pragma once
 
+#include <string>
+#include <string_view>
+
 #include <CLI/CLI.hpp>
 
 namespace alp85::cli {
 
 // The exit status of every usage error (an unknown option, a missing or malformed argument).
 inline constexpr int kUsageError = 2;
+
+// The command line as the user typed it ("alp85 run prog.asm --boot 1s"), so that a report can
+// point at an argument as a compiler points at a column: `alp85 run:1:COL: error: ...`, the line
+// and a caret. main() sets it before parsing.
+void set_command_line(int argc, const char* const* argv);
+const std::string& command_line();
+// 1-based column of `argument` in command_line() (also as the value of --option=argument); 1 if
+// it is not there.
+int column_of(std::string_view argument);
 
 // Each add_* registers a subcommand whose callback stores the process exit status in `status`.
 void add_cpm_command(CLI::App& app, int& status);

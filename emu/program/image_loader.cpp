@@ -74,8 +74,35 @@ LoadedImage read_image(const std::filesystem::path& path, const LoadOptions& opt
     return img;
 }
 
+void check_board_regions(LoadedImage& img, const std::filesystem::path& path) {
+    const auto region_of = [](std::uint32_t a) -> const board::MemoryRegion* {
+        for (const auto& r : board::kMemoryMap)
+            if (a >= r.base && a < static_cast<std::uint32_t>(r.base) + r.size) return &r;
+        return nullptr;
+    };
+    const std::string ext = lower_extension(path);
+    const bool raw = ext == ".bin" || ext == ".rom" || ext == ".com";
+    for (const ImageSegment& s : img.segments) {
+        if (s.bytes.empty()) continue;
+        const board::MemoryRegion* first = region_of(s.address);
+        if (!first) continue;  // off the board: Machine::load refuses it
+        const std::uint32_t end = static_cast<std::uint32_t>(first->base) + first->size;  // one past the region
+        const std::uint32_t last = s.address + static_cast<std::uint32_t>(s.bytes.size()) - 1;
+        if (last < end) continue;
+        const board::MemoryRegion* next = region_of(end);
+        const std::string into = next ? fmt::format("the '{}' region at {:04X}H", next->name, end)
+                                      : fmt::format("unmapped memory at {:04X}H", end);
+        const std::string what = fmt::format("{} bytes at {:04X}H-{:04X}H run past the end of the '{}' region "
+                                             "({:04X}H-{:04X}H) into {}",
+                                             s.bytes.size(), s.address, last, first->name, first->base, end - 1, into);
+        if (raw) throw LoadError(fmt::format("{}: {}; refused: a binary image must fit its memory region", path.string(), what));
+        img.warnings.push_back(fmt::format("{}: warning: {}\n", path.string(), what));
+    }
+}
+
 LoadedImage load_image(Machine& machine, const std::filesystem::path& path, const LoadOptions& options) {
     LoadedImage img = read_image(path, options);
+    check_board_regions(img, path);
     try {
         machine.load(img.segments);  // checks every byte before placing any
     } catch (const std::out_of_range& e) {

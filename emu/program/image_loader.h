@@ -36,7 +36,14 @@ struct LoadOptions {
 
 // Reads and converts the file (by its extension; anything else is refused). Throws LoadError.
 LoadedImage read_image(const std::filesystem::path& path, const LoadOptions& options = {});
-// read_image, then Machine::load; nothing is placed when any byte falls off the board.
+// For a load onto the board: a part of the image that runs from one memory region of the ALP 85
+// into another (board::kMemoryMap: a 3000-byte .bin at 0800H runs past the 2 KB user EPROM into
+// RAM) is refused for a raw binary (.bin, .rom, .com: its size is all that places it, so the
+// crossing is surely a mistake) - LoadError - and warned about for .hex and .asm, whose addresses
+// are the author's own (a warning appended to img.warnings).
+void check_board_regions(LoadedImage& img, const std::filesystem::path& path);
+
+// read_image, check_board_regions, then Machine::load; nothing is placed when any byte falls off the board.
 LoadedImage load_image(Machine& machine, const std::filesystem::path& path, const LoadOptions& options = {});
 
 }  // namespace alp85

@@ -58,6 +58,8 @@ bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, 
     commands = parse_script(text, file.string(), errors);
     Session checker(session_options(file, options));
     checker.check(commands, errors);  // the lines that parsed: files, symbols, ranges
+    if (options.err)
+        for (const std::string& w : checker.warnings()) *options.err << w;
     std::stable_sort(errors.begin() + static_cast<std::ptrdiff_t>(before), errors.end(),
                      [](const ParseError& a, const ParseError& b) { return a.where.line < b.where.line; });
     return errors.size() == before;

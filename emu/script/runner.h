@@ -25,6 +25,7 @@ struct RunnerOptions {
     std::function<firmware::Firmware()> monitor_rom;
     std::ostream* out = nullptr;    // print output, -v echo, failure reports
     std::ostream* trace = nullptr;  // --trace CSV
+    std::ostream* err = nullptr;    // warnings of loaded sources (asm85's, file:line:col)
     bool verbose = false;
 };
 

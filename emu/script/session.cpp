@@ -134,8 +134,14 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 if (c.address) check_value(c, *c.address, 0, 0xFFFF, "address");
                 try {
                     LoadOptions lo;
-                    if (c.address) lo.address = 0;  // only to read it here; placed at run time
+                    if (c.address)  // a number is checked where it goes; a symbol's address is known at run time
+                        lo.address = c.address->symbol.empty() && c.address->number >= 0 && c.address->number <= 0xFFFF
+                                         ? static_cast<std::uint16_t>(c.address->number)
+                                         : std::uint16_t{0};
                     LoadedImage img = read_image(path, lo);
+                    if (!c.address || c.address->symbol.empty()) check_board_regions(img, path);
+                    for (const std::string& w : img.warnings)
+                        if (std::find(warnings_.begin(), warnings_.end(), w) == warnings_.end()) warnings_.push_back(w);
                     for (const auto& s : img.symbols) known.insert(s.name);
                     if (!c.address) assembled_[path.string()] = std::move(img);
                 } catch (const LoadError& e) {
@@ -144,10 +150,10 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 break;
             }
             case Op::Restore:
-                if (!saved.count(output_path(c.text).string()) && !std::filesystem::is_regular_file(output_path(c.text)))
-                    err(c, col_of(c, c.text), fmt::format("no such snapshot '{}'", output_path(c.text).string()));
+                if (!saved.count(resolve(c.text).string()) && !std::filesystem::is_regular_file(resolve(c.text)))
+                    err(c, col_of(c, c.text), fmt::format("no such snapshot '{}'", resolve(c.text).string()));
                 break;
-            case Op::Save: saved.insert(output_path(c.text).string()); break;
+            case Op::Save: saved.insert(resolve(c.text).string()); break;
             case Op::Monitor:
                 if (!options_.monitor_rom) err(c, c.where.col, "this alp85 was built without the monitor ROM");
                 else
@@ -208,7 +214,8 @@ Session::Outcome Session::load(const Command& c) {
             lo.address = static_cast<std::uint16_t>(*a);
         }
         const auto cached = assembled_.find(path.string());
-        const LoadedImage img = cached != assembled_.end() && !lo.address ? cached->second : read_image(path, lo);
+        LoadedImage img = cached != assembled_.end() && !lo.address ? cached->second : read_image(path, lo);
+        check_board_regions(img, path);
         machine_->load(img.segments);
         if (img.assembly)
             debugger_.program().add_assembly(*img.assembly);
@@ -614,14 +621,14 @@ Session::Outcome Session::execute(const Command& c) {
         }
         case Op::Save:
             try {
-                m.save_snapshot(output_path(c.text));
+                m.save_snapshot(resolve(c.text));
             } catch (const snapshot::SnapshotError& x) {
                 return fail(c, x.what());
             }
             return {};
         case Op::Restore:
             try {
-                m.load_snapshot(output_path(c.text));
+                m.load_snapshot(resolve(c.text));
             } catch (const snapshot::SnapshotError& x) {
                 return fail(c, x.what());
             }

@@ -59,6 +59,9 @@ public:
     // problem to `errors` and keeps the assembled images for the run.
     void check(const std::vector<Command>& commands, std::vector<ParseError>& errors);
 
+    // Warnings of the loads check() read (asm85's, with file:line:col; an image crossing memory
+    // regions), once each, for the front end to show.
+    const std::vector<std::string>& warnings() const { return warnings_; }
     const SymbolTable& symbols() const { return debugger_.program(); }
     std::uint64_t elapsed() const { return machine_->now() - time_origin_; }
     // "at 12.345 ms (37920 T-states), PC=0123H, display "H1=----"" - for failure reports.
@@ -69,8 +72,8 @@ public:
     static std::string format_time(std::uint64_t tstates);
 
 private:
-    std::filesystem::path resolve(const std::string& path) const;  // inputs: from the script's folder
-    static std::filesystem::path output_path(const std::string& path) { return path; }  // snapshots: from the working directory
+    // Every file a command names (load, save, restore) is relative to the script's folder.
+    std::filesystem::path resolve(const std::string& path) const;
     std::optional<std::int64_t> resolve(const Value& v, std::string& error) const;
     Outcome fail(const Command& c, std::string what) const;
     debug::Origin origin(const Command& c) const { return {c.where.file, c.where.line}; }
@@ -93,6 +96,7 @@ private:
     std::filesystem::path record_path_;
     Command record_command_;
     std::map<std::string, LoadedImage> assembled_;  // from check(), by resolved path
+    std::vector<std::string> warnings_;
     std::uint64_t time_origin_ = 0;
     std::ostream* trace_ = nullptr;
 };

@@ -113,3 +113,112 @@ TEST(ScriptRunner, JunitNamesEachScriptAndItsFailure) {
 
 }  // namespace
 }  // namespace alp85::script
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace alp85::script {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A folder of its own for scripts and the files they name.
+class ScriptFolder : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() / ("alp85_scripts_" + std::to_string(::getpid()) + "_" +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+    void write(const std::string& name, const std::string& text) { std::ofstream(dir / name, std::ios::binary) << text; }
+    // prepare + execute, as `alp85 script` does; the script's folder is not the working directory.
+    bool run(const std::string& name, std::string& report) {
+        std::vector<Command> cmds;
+        std::vector<ParseError> errors;
+        std::ostringstream out, err;
+        RunnerOptions o;
+        o.out = &out;
+        o.err = &err;
+        const bool ok = prepare(dir / name, cmds, errors, o);
+        warnings = err.str();
+        report.clear();
+        for (const auto& e : errors) report += e.format();
+        if (!ok) return false;
+        const ScriptResult r = execute(dir / name, cmds, o);
+        report += r.failure;
+        return r.passed;
+    }
+    fs::path dir;
+    std::string warnings;
+};
+
+// Issue #11, 2: the warnings of a source a script loads are shown, with file:line:col.
+TEST_F(ScriptFolder, AssemblerWarningsOfLoadedSourcesAreShown) {
+    write("overlap.asm", "\tORG 0800H\n\tNOP\n\tORG 0800H\n\tHLT\n");
+    write("t.alp", "load overlap.asm\nexpect mem 0800H 76H\n");
+    std::string report;
+    EXPECT_TRUE(run("t.alp", report)) << report;
+    EXPECT_NE(warnings.find("overlap.asm:4:2: warning: overlapping ORG regions"), std::string::npos) << warnings;
+}
+
+// Issue #11, 6: a binary image that runs out of its memory region into the next is refused; a
+// source that does so is loaded with a warning.
+TEST_F(ScriptFolder, AnImageThatCrossesMemoryRegionsIsRefusedOrWarnedAbout) {
+    write("big.bin", std::string(3000, '\x76'));
+    write("big.alp", "load big.bin at 0800H\n");
+    std::string report;
+    EXPECT_FALSE(run("big.alp", report));
+    // 0800H + 3000 - 1 = 13B7H; the user EPROM ends at 0FFFH, RAM starts at 1000H.
+    EXPECT_NE(report.find("big.alp:1:6: error: "), std::string::npos) << report;
+    EXPECT_NE(report.find("3000 bytes at 0800H-13B7H run past the end of the 'user' region (0800H-0FFFH) into the "
+                          "'ram' region at 1000H; refused"),
+              std::string::npos)
+        << report;
+    write("fits.bin", std::string(2048, '\x76'));
+    write("fits.alp", "load fits.bin at 0800H\nexpect mem 0FFFH 76H\nexpect mem 1000H 0\n");
+    EXPECT_TRUE(run("fits.alp", report)) << report;
+    // A source whose bytes run from 0FFEH to 1001H: loaded, with a warning.
+    write("edge.asm", "\tORG 0FFEH\n\tDB 1,2,3,4\n");
+    write("edge.alp", "load edge.asm\nexpect mem 0FFEH 1 2 3 4\n");
+    EXPECT_TRUE(run("edge.alp", report)) << report;
+    EXPECT_NE(warnings.find("edge.asm: warning: 4 bytes at 0FFEH-1001H run past the end of the 'user' region "
+                            "(0800H-0FFFH) into the 'ram' region at 1000H"),
+              std::string::npos)
+        << warnings;
+}
+
+// Issue #11, 7: save and restore name files relative to the script's folder, like load.
+TEST_F(ScriptFolder, SnapshotsAreRelativeToTheScriptsFolder) {
+    ASSERT_NE(fs::current_path(), dir);
+    write("save.alp", "set mem 1000H 42H\nsave state.snap\n");
+    write("restore.alp", "restore state.snap\nexpect mem 1000H 42H\n");
+    std::string report;
+    EXPECT_TRUE(run("save.alp", report)) << report;
+    EXPECT_TRUE(fs::is_regular_file(dir / "state.snap"));
+    EXPECT_FALSE(fs::exists(fs::current_path() / "state.snap"));
+    EXPECT_TRUE(run("restore.alp", report)) << report;
+}
+
+// Issue #11, 10 (docs/scripting.md, docs/board.md): `expect port` checks the output latch even on
+// a port programmed as input, while IN reads the undriven inputs: FFH on A and B, and on C its six
+// pins (3FH) with PC6-PC7 reading 1, so FFH too.
+TEST_F(ScriptFolder, ExpectPortChecksTheLatchOfAnInputPort) {
+    write("ports.asm",
+          "\tORG 0800H\n"
+          "\tMVI A,00H\n\tOUT 0F8H\n"   // ports A, B, C input (ALT1)
+          "\tMVI A,5AH\n\tOUT 0F9H\n"   // into port A's latch, not driven
+          "\tMVI A,25H\n\tOUT 0FBH\n"   // port C's latch
+          "\tIN 0F9H\n\tSTA 1000H\n\tIN 0FAH\n\tSTA 1001H\n\tIN 0FBH\n\tSTA 1002H\n\tHLT\n");
+    write("ports.alp",
+          "load ports.asm\nset reg PC 0800H\nrun 1ms\nexpect halted\n"
+          "expect port A 5AH\nexpect port C 25H\nexpect mem 1000H 0FFH 0FFH 0FFH\n");
+    std::string report;
+    EXPECT_TRUE(run("ports.alp", report)) << report;
+}
+
+}  // namespace
+}  // namespace alp85::script

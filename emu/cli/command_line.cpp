@@ -1,0 +1,43 @@
+#include <algorithm>
+
+#include "emu/cli/commands.h"
+
+namespace alp85::cli {
+namespace {
+
+struct Arg {
+    std::string text;
+    int col;  // 1-based column of text's first character in the line
+};
+std::string g_line;
+std::vector<Arg> g_args;
+
+}  // namespace
+
+void set_command_line(int argc, const char* const* argv) {
+    g_line = "alp85";
+    g_args.clear();
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        g_line += ' ';
+        const bool quote = a.empty() || a.find_first_of(" \t'\"") != std::string::npos;
+        if (quote) g_line += '"';
+        g_args.push_back({a, static_cast<int>(g_line.size()) + 1});
+        g_line += a;
+        if (quote) g_line += '"';
+    }
+}
+
+const std::string& command_line() { return g_line; }
+
+int column_of(std::string_view argument) {
+    for (const Arg& a : g_args)
+        if (a.text == argument) return a.col;
+    for (const Arg& a : g_args)  // --boot=5parsecs
+        if (const auto eq = a.text.find('='); a.text.rfind("--", 0) == 0 && eq != std::string::npos &&
+                                              std::string_view(a.text).substr(eq + 1) == argument)
+            return a.col + static_cast<int>(eq) + 1;
+    return 1;
+}
+
+}  // namespace alp85::cli
