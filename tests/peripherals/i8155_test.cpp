@@ -442,3 +442,28 @@ TEST_F(I8155Test, LoadRejectsATimerPeriodInTheFuture) {
 }
 
 }  // namespace
+
+namespace alp85::periph {
+namespace {
+
+// Issue #11, 9 (docs/peripherals.md, "Read-back in the pulse modes"): the same count N = 10, two
+// TIMER IN pulses in, read back in both kinds of mode. Both say 8 pulses remain: the pulse modes
+// as the number itself, the square-wave modes encoded (3 pulses left of the 5-pulse first half,
+// bit 0 set: (3 << 1) | 1 = 7; the data sheet's recipe: 7 >> 1 = 3, carry set, + 10 / 2 = 8).
+TEST_F(I8155Test, PulseModeReadBackIsTheRemainingCountNotTheSquareWaveEncoding) {
+    const auto recipe = [](std::uint16_t v, unsigned n) { return (v & 0x3FFFu) / 2u + ((v & 1u) ? n / 2u : 0u); };
+    load_count(10, kContPulse, 0);
+    chip.write(I8155::kCommandStatus, kStart, 0);
+    const std::uint16_t pulse = read_count(2);
+    EXPECT_EQ(pulse, 0xC000 | 8);
+    chip.write(I8155::kCommandStatus, kStop, 5);
+    load_count(10, kContSquare, 100);
+    chip.write(I8155::kCommandStatus, kStart, 100);
+    const std::uint16_t square = read_count(102);
+    EXPECT_EQ(square, 0x4000 | 7);
+    EXPECT_EQ(recipe(square, 10), 8u);
+    EXPECT_EQ(pulse & 0x3FFF, 8);  // not 7: the pulse modes count by ones here
+}
+
+}  // namespace
+}  // namespace alp85::periph
