@@ -1,8 +1,6 @@
 // alp85 bench cpu [--cpu 8080|8085] [--tstates N]: the fixed CPU workload (emu/bench_cpu.asm),
 // emulated T-states per host second.
 // alp85 bench board [--tstates N]: the board with idle peripherals against the bare core.
-#include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -20,12 +18,10 @@ struct BenchArgs {
 };
 
 int run_bench_cpu(const BenchArgs& args) {
-    CpuBench bench(args.cpu == "8080" ? Variant::I8080 : Variant::I8085);
-    const auto start = std::chrono::steady_clock::now();
-    const std::clock_t cpu_start = std::clock();
+    CpuBench bench(variant_of(args.cpu));
+    const Stopwatch watch;
     const std::uint64_t t = bench.run(args.tstates);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    const double seconds = watch.wall_seconds(), cpu_seconds = watch.cpu_seconds();
     std::printf("workload:     delay loop, multiply, BCD add, CRC-16 (emu/bench_cpu.asm)\n");
     std::printf("cpu:          i%s\n", args.cpu.c_str());
     std::printf("instructions: %llu\n", static_cast<unsigned long long>(bench.cpu().instructions()));
@@ -39,9 +35,9 @@ int run_bench_cpu(const BenchArgs& args) {
 // Host CPU seconds taken by fn (the process's, so other load on the machine does not count).
 template <class Fn>
 double cpu_seconds(Fn&& fn) {
-    const std::clock_t start = std::clock();
+    const Stopwatch watch;
     fn();
-    return static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+    return watch.cpu_seconds();
 }
 
 int run_bench_board(std::uint64_t tstates) {
@@ -66,7 +62,7 @@ void add_bench_command(CLI::App& app, int& status) {
     bench->require_subcommand(1);
     bench->footer("Exit status: 0 success, 2 a usage error.");
     CLI::App* cpu = bench->add_subcommand("cpu", "Emulated T-states per second on a fixed CPU-bound workload");
-    cpu->add_option("--cpu", args->cpu, "processor variant")->check(CLI::IsMember({"8080", "8085"}))->capture_default_str();
+    add_cpu_option(cpu, args->cpu, "processor variant");
     cpu->add_option("--tstates", args->tstates, "T-states to run")->check(CLI::Range(1ULL, 1ULL << 50))->capture_default_str();
     cpu->callback([args, &status] { status = run_bench_cpu(*args); });
 

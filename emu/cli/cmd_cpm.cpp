@@ -1,8 +1,6 @@
-// alp85 cpm PROGRAM.COM [--cpu 8080|8085] [--max-cycles N] [--stats] [--trace OUT.csv [--trace-last N]]
+// alp85 cpm PROGRAM.COM [--cpu 8080|8085] [--max-tstates N] [--stats] [--trace OUT.csv [--trace-last N]]
 // Runs a CP/M .COM program (e.g. the period 8080/8085 CPU diagnostics) on the CP/M machine.
 #include <algorithm>
-#include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -22,7 +20,7 @@ namespace {
 struct CpmArgs {
     std::string program;
     std::string cpu = "8085";
-    std::uint64_t max_cycles = 0;
+    std::uint64_t max_tstates = 0;
     bool stats = false;
     std::string trace;
     std::size_t trace_last = 0;  // 0: every instruction
@@ -62,8 +60,7 @@ int run_cpm(const CpmArgs& args) {
         std::fprintf(stderr, "alp85 cpm: cannot read %s\n", args.program.c_str());
         return 1;
     }
-    const Variant variant = args.cpu == "8080" ? Variant::I8080 : Variant::I8085;
-    CpmMachine machine(variant);
+    CpmMachine machine(variant_of(args.cpu));
     if (const std::string err = machine.load_program(image); !err.empty()) {
         std::fprintf(stderr, "alp85 cpm: %s: %s\n", args.program.c_str(), err.c_str());
         return 1;
@@ -83,14 +80,12 @@ int run_cpm(const CpmArgs& args) {
             trace->add(trace_csv_line(cpu, [&machine](std::uint16_t a) { return machine.bus().peek(a); }));
         });
     }
-    const auto start = std::chrono::steady_clock::now();
-    const std::clock_t cpu_start = std::clock();
-    const CpmMachine::Result r = machine.run(args.max_cycles, [](char ch) {
+    const Stopwatch watch;
+    const CpmMachine::Result r = machine.run(args.max_tstates, [](char ch) {
         std::fputc(ch, stdout);
         if (ch == '\n') std::fflush(stdout);
     });
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    const double seconds = watch.wall_seconds(), cpu_seconds = watch.cpu_seconds();
     std::fflush(stdout);
     if (trace) {  // written however the run ended: that is when a trace is wanted most
         trace->finish();
@@ -120,8 +115,9 @@ void add_cpm_command(CLI::App& app, int& status) {
     auto args = std::make_shared<CpmArgs>();
     CLI::App* cmd = app.add_subcommand("cpm", "Run a CP/M .COM program (loaded at 0100H) with a small BDOS");
     cmd->add_option("program", args->program, "the .COM file")->required();
-    cmd->add_option("--cpu", args->cpu, "processor variant")->check(CLI::IsMember({"8080", "8085"}))->capture_default_str();
-    cmd->add_option("--max-cycles", args->max_cycles, "stop with an error after N T-states (0 = no limit)");
+    add_cpu_option(cmd, args->cpu, "processor variant");
+    cmd->add_option("--max-tstates", args->max_tstates, "stop with an error after N T-states (0 = no limit)");
+    cmd->add_option("--max-cycles", args->max_tstates, "the old name of --max-tstates")->group("");  // hidden alias
     cmd->add_flag("--stats", args->stats, "print instructions, T-states, wall time and T-states per second");
     auto* trace = cmd->add_option("--trace", args->trace, "write every executed instruction as CSV (T-state, PC, "
                                                           "opcode, disassembly, registers before it)");

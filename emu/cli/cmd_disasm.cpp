@@ -87,7 +87,7 @@ int run_disasm(const DisasmArgs& args) {
             if (const std::string err = symbols.load_map_file(m); !err.empty()) return fail(err, 1);
 
     ImageDisasmOptions o;
-    o.variant = args.cpu == "8080" ? Variant::I8080 : Variant::I8085;
+    o.variant = variant_of(args.cpu);
     o.symbols = args.no_symbols ? nullptr : &symbols;
     std::string error;
     if (!args.from.empty() && !(o.from = parse_address(args.from, symbols, error))) return fail("--from: " + error, 2);
@@ -123,7 +123,7 @@ void add_disasm_command(CLI::App& app, int& status) {
     cmd->add_option("--to", args->to, "Last address to decode");
     cmd->add_option("--map", args->maps, "asm85 JSON map(s) with symbols (asm85 --map)");
     cmd->add_flag("--no-symbols", args->no_symbols, "Print every address as a number");
-    cmd->add_option("--cpu", args->cpu, "Decode as this processor")->check(CLI::IsMember({"8080", "8085"}))->capture_default_str();
+    add_cpu_option(cmd, args->cpu, "Decode as this processor");
     cmd->add_flag("--source", args->source, "Write asm85 source that assembles back to the same bytes");
     cmd->add_option("-o,--output", args->output, "Write to this file instead of standard output");
     cmd->footer(

@@ -1,10 +1,14 @@
 // The alp85 subcommands; each lives in its own file (cmd_*.cpp) and registers itself on the app.
 #pragma once
 
+#include <chrono>
+#include <ctime>
 #include <string>
 #include <string_view>
 
 #include <CLI/CLI.hpp>
+
+#include "emu/core/i8085.h"
 
 namespace alp85::cli {
 
@@ -19,6 +23,22 @@ const std::string& command_line();
 // 1-based column of `argument` in command_line() (also as the value of --option=argument); 1 if
 // it is not there.
 int column_of(std::string_view argument);
+
+// --cpu 8080|8085 on a command (the processor to emulate or decode as), into `cpu`, which keeps
+// its default; variant_of() gives the Variant it names.
+CLI::Option* add_cpu_option(CLI::App* cmd, std::string& cpu, const std::string& help);
+Variant variant_of(const std::string& cpu);
+
+// Host time of a run: wall clock and this process's CPU time, from construction.
+class Stopwatch {
+public:
+    double wall_seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_).count(); }
+    double cpu_seconds() const { return static_cast<double>(std::clock() - cpu_) / CLOCKS_PER_SEC; }
+
+private:
+    std::chrono::steady_clock::time_point wall_ = std::chrono::steady_clock::now();
+    std::clock_t cpu_ = std::clock();
+};
 
 // Each add_* registers a subcommand whose callback stores the process exit status in `status`.
 void add_cpm_command(CLI::App& app, int& status);

@@ -9,15 +9,10 @@
 #include <fmt/format.h>
 
 #include "emu/program/ihex.h"
+#include "emu/util/text.h"
 
 namespace alp85 {
 namespace {
-
-std::string lower_extension(const std::filesystem::path& p) {
-    std::string e = p.extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return e;
-}
 
 std::string read_all(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);

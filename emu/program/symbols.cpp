@@ -6,15 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-namespace alp85 {
+#include "emu/util/text.h"
 
-namespace {
-std::string upper(std::string_view s) {
-    std::string u(s);
-    std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return u;
-}
-}  // namespace
+namespace alp85 {
 
 std::string SymbolTable::load_map_text(std::string_view json) {
     nlohmann::json j = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
@@ -134,7 +128,7 @@ std::optional<SourceLine> SymbolTable::next_line_with_code(std::string_view file
 }
 
 void SymbolTable::add(std::string_view name, std::uint16_t value, std::string_view kind) {
-    by_name_[upper(name)] = value;
+    by_name_[to_upper(name)] = value;
     if (kind == "label")
         labels_.emplace(value, std::string(name));
     else if (kind == "equ" || kind == "set")
@@ -169,7 +163,7 @@ std::optional<std::string> SymbolTable::label_at(std::uint16_t addr) const {
 }
 
 std::optional<std::uint16_t> SymbolTable::value_of(std::string_view name) const {
-    if (auto it = by_name_.find(upper(name)); it != by_name_.end()) return it->second;
+    if (auto it = by_name_.find(to_upper(name)); it != by_name_.end()) return it->second;
     return std::nullopt;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "emu/board/key_press.h"
 #include "peripherals/keypad.h"
 
 namespace alp85::script {
@@ -77,8 +78,8 @@ struct Command {
 };
 
 // Default times (docs/scripting.md).
-inline constexpr std::uint64_t kDefaultHold = 92'160;      // 30 ms at 3.072 MHz
-inline constexpr std::uint64_t kDefaultGap = 92'160;       // 30 ms
+inline constexpr std::uint64_t kDefaultHold = kKeyHold;    // 30 ms: 92160 T-states at 3.072 MHz
+inline constexpr std::uint64_t kDefaultGap = kKeyGap;      // 30 ms
 inline constexpr std::uint64_t kDefaultUntil = 30'720'000;  // 10 s
 inline constexpr std::uint64_t kDefaultWait = 15'360'000;   // 5 s
 inline constexpr std::uint64_t kDefaultRecordPeriod = 768;  // 0.25 ms: a 400 steps/s axis, ten samples a step

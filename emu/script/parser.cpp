@@ -11,6 +11,7 @@
 
 #include "asm/isa.h"
 #include "emu/board/board_map.h"
+#include "emu/util/text.h"
 
 namespace alp85::script {
 namespace {
@@ -21,11 +22,6 @@ struct Token {
     bool quoted = false;
 };
 
-std::string upper(std::string_view s) {
-    std::string u(s);
-    std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return u;
-}
 
 class LineParser {
 public:
@@ -38,7 +34,7 @@ public:
         Command c;
         c.where = {file_, line_no_, tokens_[0].col};
         c.line = std::string(line_);
-        const std::string verb = upper(tokens_[0].text);
+        const std::string verb = to_upper(tokens_[0].text);
         pos_ = 1;
         static const std::map<std::string, std::function<bool(LineParser&, Command&)>> verbs = {
             {"LOAD", &LineParser::load},       {"MONITOR", &LineParser::monitor},
@@ -105,7 +101,7 @@ private:
     bool more() const { return pos_ < tokens_.size(); }
     const Token& peek() const { return tokens_[pos_]; }
     int end_col() const { return static_cast<int>(line_.size()) + 1; }
-    bool at_word(std::string_view w) const { return more() && !peek().quoted && upper(peek().text) == w; }
+    bool at_word(std::string_view w) const { return more() && !peek().quoted && to_upper(peek().text) == w; }
 
     void error(int col, std::string message) {
         errors_.push_back({{file_, line_no_, col}, std::move(message), std::string(line_)});
@@ -121,7 +117,7 @@ private:
 
     // ---- operands ------------------------------------------------------------------------------
     bool word(std::string_view w) {
-        if (!at_word(w)) return missing(fmt::format("'{}'", upper(w)));
+        if (!at_word(w)) return missing(fmt::format("'{}'", to_upper(w)));
         ++pos_;
         return true;
     }
@@ -462,7 +458,7 @@ private:
     bool expect(Command& c) {
         if (!more()) return missing("what to expect (display, mem, word, reg, flag, port, symbol, time, halted, running, axis, count, lost)");
         const Token& what = peek();
-        const std::string w = upper(what.text);
+        const std::string w = to_upper(what.text);
         ++pos_;
         if (w == "DISPLAY") {
             c.op = Op::ExpectDisplay;
@@ -492,7 +488,7 @@ private:
             static const std::map<std::string, std::uint8_t> flags = {
                 {"S", isa::F_S}, {"Z", isa::F_Z}, {"K", isa::F_K}, {"X5", isa::F_K}, {"AC", isa::F_AC},
                 {"P", isa::F_P}, {"V", isa::F_V}, {"CY", isa::F_CY}, {"C", isa::F_CY}};
-            const auto f = flags.find(upper(peek().text));
+            const auto f = flags.find(to_upper(peek().text));
             if (f == flags.end()) return fail(peek(), fmt::format("unknown flag '{}'", peek().text)), false;
             c.flag = f->second;
             c.flag_name = f->first;
@@ -507,7 +503,7 @@ private:
         if (w == "PORT") {
             c.op = Op::ExpectPort;
             if (!more()) return missing("a port (A, B or C)");
-            const std::string p = upper(peek().text);
+            const std::string p = to_upper(peek().text);
             if (p != "A" && p != "B" && p != "C") return fail(peek(), fmt::format("unknown port '{}'", peek().text)), false;
             c.port = p[0];
             ++pos_;
@@ -517,7 +513,7 @@ private:
         if (w == "SYMBOL") {
             c.op = Op::ExpectSymbol;
             if (!more() || peek().quoted) return missing("a symbol name");
-            c.name = upper(peek().text);
+            c.name = to_upper(peek().text);
             ++pos_;
             Value v;
             return value(v, "a value") && (c.values.push_back(v), true);
@@ -673,7 +669,7 @@ std::optional<Value> parse_value(std::string_view text, std::string_view what, b
         v.number = *n + offset;
     } else if (!head.empty() && (std::isalpha(static_cast<unsigned char>(head[0])) || head[0] == '_' ||
                                  head[0] == '?' || head[0] == '@' || head[0] == '.')) {
-        v.symbol = upper(head);
+        v.symbol = to_upper(head);
         v.number = offset;
     } else {
         error = fmt::format("expected {}, found '{}'", what, s);
@@ -696,7 +692,7 @@ std::string ambiguous_address(std::string_view text) {
 
 std::optional<std::int64_t> parse_number(std::string_view text) {
     if (text.empty()) return std::nullopt;
-    std::string s = upper(text);
+    std::string s = to_upper(text);
     int base = 10;
     if (s.size() > 2 && s[0] == '0' && s[1] == 'X') {
         base = 16;
@@ -727,7 +723,7 @@ std::optional<std::int64_t> parse_number(std::string_view text) {
 }
 
 std::optional<std::uint64_t> parse_time(std::string_view text) {
-    std::string s = upper(text);
+    std::string s = to_upper(text);
     std::size_t i = 0;
     while (i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
     if (i == 0) return std::nullopt;
@@ -736,25 +732,26 @@ std::optional<std::uint64_t> parse_time(std::string_view text) {
     char* end = nullptr;
     const double v = std::strtod(num.c_str(), &end);
     if (end != num.c_str() + num.size() || !std::isfinite(v)) return std::nullopt;
-    double t;
+    double ms;
     if (unit == "T") {
         if (num.find('.') != std::string::npos) return std::nullopt;
-        t = v;
+        if (v > 1e15) return std::nullopt;
+        return static_cast<std::uint64_t>(v);
     } else if (unit == "US") {
-        t = v * board::kCpuHz / 1e6;
+        ms = v / 1e3;
     } else if (unit == "MS") {
-        t = v * board::kCpuHz / 1e3;
+        ms = v;
     } else if (unit == "S") {
-        t = v * board::kCpuHz;
+        ms = v * 1e3;
     } else {
         return std::nullopt;
     }
-    if (t > 1e15) return std::nullopt;  // 10 years of simulated time: surely a typo
-    return static_cast<std::uint64_t>(std::llround(t));
+    if (ms * board::kTStatesPerMs > 1e15) return std::nullopt;  // 10 years of simulated time: surely a typo
+    return board::tstates_from_ms(ms);
 }
 
 std::optional<KeyRef> parse_key(std::string_view text) {
-    const std::string u = upper(text);
+    const std::string u = to_upper(text);
     if (u == "RESET") return KeyRef{KeyRef::Kind::Reset, periph::Key::K0, u};
     if (u == "VECT" || u == "VECTINTR" || u == "VECT_INTR") return KeyRef{KeyRef::Kind::Vect, periph::Key::K0, "VECT"};
     if (const auto k = periph::Keypad::find(u)) return KeyRef{KeyRef::Kind::Matrix, *k, u};
@@ -766,7 +763,7 @@ std::optional<Reg> parse_reg(std::string_view text) {
         {"A", Reg::A},   {"B", Reg::B},   {"C", Reg::C},   {"D", Reg::D},   {"E", Reg::E},
         {"H", Reg::H},   {"L", Reg::L},   {"F", Reg::F},   {"BC", Reg::BC}, {"DE", Reg::DE},
         {"HL", Reg::HL}, {"SP", Reg::SP}, {"PC", Reg::PC}, {"PSW", Reg::PSW}};
-    const auto it = regs.find(upper(text));
+    const auto it = regs.find(to_upper(text));
     if (it == regs.end()) return std::nullopt;
     return it->second;
 }

@@ -107,7 +107,7 @@ std::string junit_xml(const std::vector<ScriptResult>& results) {
         x += fmt::format("    <testcase classname=\"alp85.script\" name=\"{}\" time=\"{:.6f}\"", xml_escape(r.file), r.seconds);
         if (r.passed) {
             x += fmt::format(">\n      <system-out>{} commands, {:.3f} ms simulated</system-out>\n    </testcase>\n",
-                             r.commands, static_cast<double>(r.tstates) * 1000.0 / board::kCpuHz);
+                             r.commands, board::ms_from_tstates(r.tstates));
         } else {
             const std::string first = r.failure.substr(0, r.failure.find('\n'));
             x += fmt::format(">\n      <failure message=\"{}\">{}</failure>\n    </testcase>\n", xml_escape(first),

@@ -10,6 +10,7 @@
 #include "emu/plot/plot.h"
 #include "emu/util/atomic_file.h"
 #include "emu/debug/trace_csv.h"
+#include "emu/util/text.h"
 #include "peripherals/seven_segment.h"
 
 namespace alp85::script {
@@ -23,12 +24,6 @@ std::string rtrim(std::string s) {
 std::string hex(std::int64_t v, int digits) { return fmt::format("{:0{}X}H", v, digits); }
 
 bool is_pair(Reg r) { return r >= Reg::BC; }
-
-std::string lower_ext(const std::filesystem::path& p) {
-    std::string e = p.extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    return e;
-}
 
 }  // namespace
 
@@ -52,7 +47,7 @@ Session::Session(SessionOptions options)
 }
 
 std::string Session::format_time(std::uint64_t t) {
-    return fmt::format("{:.3f} ms ({} T-states)", static_cast<double>(t) * 1000.0 / board::kCpuHz, t);
+    return fmt::format("{:.3f} ms ({} T-states)", board::ms_from_tstates(t), t);
 }
 
 std::string Session::where_now() const {
@@ -126,7 +121,7 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                     err(c, col, fmt::format("no such file '{}'", path.string()));
                     break;
                 }
-                const std::string ext = lower_ext(path);
+                const std::string ext = lower_extension(path);
                 if ((ext == ".bin" || ext == ".rom") && !c.address) {
                     err(c, col, "a binary image needs 'at ADDRESS'");
                     break;
@@ -231,23 +226,11 @@ Session::Outcome Session::load(const Command& c) {
 
 Session::Outcome Session::press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap) {
     Machine& m = *machine_;
-    const std::uint64_t t = m.now();
-    switch (key.kind) {
-        case KeyRef::Kind::Matrix:
-            m.key_at(key.key, true, t);
-            m.key_at(key.key, false, t + hold);
-            break;
-        case KeyRef::Kind::Reset:
-            m.reset_key_at(true, t);
-            m.reset_key_at(false, t + hold);
-            time_origin_ = t;
-            break;
-        case KeyRef::Kind::Vect:
-            m.vect_intr_at(true, t);
-            m.vect_intr_at(false, t + hold);
-            break;
-    }
-    debugger_.run_until(t + hold + gap, {}, origin(c));
+    const Button button = key.kind == KeyRef::Kind::Matrix ? Button::Matrix
+                          : key.kind == KeyRef::Kind::Reset ? Button::Reset
+                                                            : Button::Vect;
+    if (button == Button::Reset) time_origin_ = m.now();
+    debugger_.run_until(schedule_press(m, button, key.key, hold, gap), {}, origin(c));
     return {};
 }
 

@@ -175,3 +175,29 @@ TEST(BoardDeterminism, SameInputsSameCycles) {
 
 }  // namespace
 }  // namespace alp85::test
+
+#include "emu/board/key_press.h"
+
+namespace alp85::test {
+namespace {
+
+// Issue #10 item 6 / #11 item 12: one T-state <-> ms conversion (board_map.h, beside kCpuHz) and
+// one key press (emu/board/key_press.h) for the script session and the monitor tests.
+TEST(BoardTime, OneConversionAndOneKeyPress) {
+    static_assert(board::tstates_from_ms(30) == 92'160);  // 30 ms x 3072 T-states per ms
+    static_assert(board::tstates_from_ms(1) == 3'072);
+    EXPECT_DOUBLE_EQ(board::ms_from_tstates(1'536'000), 500.0);
+    EXPECT_EQ(Machine::tstates_from_ms(0.5), 1'536u);
+    EXPECT_EQ(kKeyHold, 92'160u);
+    Machine m;
+    m.load(0x0800, std::vector<std::uint8_t>{0xC3, 0x00, 0x08});  // JMP 0800H: 10 T-states a loop
+    m.cpu().regs().pc = 0x0800;
+    const std::uint64_t t0 = m.now();
+    press_button(m, Button::Matrix, periph::Key::K5, board::tstates_from_ms(40), board::tstates_from_ms(20));
+    // 60 ms = 184320 T-states, ended on a whole instruction (a JMP: at most 10 T-states later).
+    EXPECT_GE(m.now() - t0, 184'320u);
+    EXPECT_LT(m.now() - t0, 184'320u + 10);
+}
+
+}  // namespace
+}  // namespace alp85::test

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "emu/program/image_loader.h"
+#include "emu/board/key_press.h"
 #include "emu/board/machine.h"
 #include "monitor_embed.h"
 
@@ -50,20 +51,12 @@ public:
     void run_ms(double v) { m.run_for(ms(v)); }
 
     void press(Key k, double hold_ms = 30, double gap_ms = 30) {
-        const std::uint64_t t = m.now();
-        m.key_at(k, true, t);
-        m.key_at(k, false, t + ms(hold_ms));
-        m.run_until(t + ms(hold_ms + gap_ms));
+        press_button(m, Button::Matrix, k, ms(hold_ms), ms(gap_ms));
     }
     void type(std::initializer_list<Key> keys) {
         for (Key k : keys) press(k);
     }
-    void vect() {
-        const std::uint64_t t = m.now();
-        m.vect_intr_at(true, t);
-        m.vect_intr_at(false, t + ms(30));
-        m.run_until(t + ms(60));
-    }
+    void vect() { press_button(m, Button::Vect, Key::K0); }
 
     // Runs until the display reads `text` (true) or the timeout passes (false).
     bool wait_display(const std::string& text, double timeout_ms = 1000) {

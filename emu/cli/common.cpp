@@ -30,6 +30,12 @@ void set_command_line(int argc, const char* const* argv) {
 
 const std::string& command_line() { return g_line; }
 
+CLI::Option* add_cpu_option(CLI::App* cmd, std::string& cpu, const std::string& help) {
+    return cmd->add_option("--cpu", cpu, help)->check(CLI::IsMember({"8080", "8085"}))->capture_default_str();
+}
+
+Variant variant_of(const std::string& cpu) { return cpu == "8080" ? Variant::I8080 : Variant::I8085; }
+
 int column_of(std::string_view argument) {
     for (const Arg& a : g_args)
         if (a.text == argument) return a.col;

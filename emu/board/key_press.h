@@ -1,0 +1,46 @@
+// Pressing a key as a user does: down now, up after the hold, then the gap before the next one.
+// The one definition the script session and the monitor tests share.
+#pragma once
+
+#include <cstdint>
+
+#include "emu/board/board_map.h"
+#include "emu/board/machine.h"
+
+namespace alp85 {
+
+inline constexpr std::uint64_t kKeyHold = board::tstates_from_ms(30);  // 92160 T-states
+inline constexpr std::uint64_t kKeyGap = board::tstates_from_ms(30);
+
+// The keypad's matrix keys, and the two keys outside it (RESET IN, VECT INTR = RST 7.5).
+enum class Button : std::uint8_t { Matrix, Reset, Vect };
+
+// Schedules a press of `button` (for Matrix: `key`) at the machine's present time and its release
+// `hold` later; returns when the gap after it ends (now + hold + gap): run the machine until then.
+inline std::uint64_t schedule_press(Machine& m, Button button, periph::Key key, std::uint64_t hold = kKeyHold,
+                                    std::uint64_t gap = kKeyGap) {
+    const std::uint64_t t = m.now();
+    switch (button) {
+        case Button::Matrix:
+            m.key_at(key, true, t);
+            m.key_at(key, false, t + hold);
+            break;
+        case Button::Reset:
+            m.reset_key_at(true, t);
+            m.reset_key_at(false, t + hold);
+            break;
+        case Button::Vect:
+            m.vect_intr_at(true, t);
+            m.vect_intr_at(false, t + hold);
+            break;
+    }
+    return t + hold + gap;
+}
+
+// schedule_press, then run until the gap has passed (or a breakpoint: the Stop says which).
+inline Machine::Stop press_button(Machine& m, Button button, periph::Key key, std::uint64_t hold = kKeyHold,
+                                  std::uint64_t gap = kKeyGap) {
+    return m.run_until(schedule_press(m, button, key, hold, gap));
+}
+
+}  // namespace alp85
