@@ -116,11 +116,6 @@ inline constexpr std::array<ToolBit, 12> kToolWiring{{
 inline constexpr std::uint8_t kUndrivenPortAB = 0xFF;
 inline constexpr std::uint8_t kUndrivenPortC = 0x3F;
 
-// Simulated time: the one conversion between T-states and milliseconds (scripts, reports, tests).
-inline constexpr double kTStatesPerMs = kCpuHz / 1000.0;  // 3072 exactly
-constexpr std::uint64_t tstates_from_ms(double ms) { return static_cast<std::uint64_t>(ms * kTStatesPerMs + 0.5); }
-constexpr double ms_from_tstates(std::uint64_t t) { return static_cast<double>(t) / kTStatesPerMs; }
-
 constexpr const MemoryRegion& region(Memory id) { return kMemoryMap[static_cast<std::size_t>(id)]; }
 constexpr const IoRegion& io_region(Device d) {
     for (const auto& r : kIoMap)
@@ -133,7 +128,9 @@ constexpr CpuPin pin_of(Source s) {
     return CpuPin::ResetIn;
 }
 
-// T-states of a duration on the board's clock, rounded to the nearest.
+// T-states of a duration on the board's clock, rounded to the nearest, and back: the one
+// conversion between simulated time and milliseconds (scripts, reports, tests).
 constexpr std::uint64_t tstates_from_ms(double ms) { return static_cast<std::uint64_t>(ms * kCpuHz / 1000.0 + 0.5); }
+constexpr double ms_from_tstates(std::uint64_t t) { return static_cast<double>(t) * 1000.0 / kCpuHz; }
 
 }  // namespace alp85::board

@@ -746,7 +746,7 @@ std::optional<std::uint64_t> parse_time(std::string_view text) {
     } else {
         return std::nullopt;
     }
-    if (ms * board::kTStatesPerMs > 1e15) return std::nullopt;  // 10 years of simulated time: surely a typo
+    if (ms * board::kCpuHz / 1000.0 > 1e15) return std::nullopt;  // 10 years of simulated time: surely a typo
     return board::tstates_from_ms(ms);
 }
 
