@@ -16,7 +16,7 @@ endif()
 # and the folder snapshots are read from and written to.
 foreach(pair
     "docs/board.md|Undriven 8155 inputs"
-    "docs/board.md|port A and port B programmed as inputs read \\*\\*FFH\\*\\*; port C's six pins \\(PC0-PC5\\) read \\*\\*3FH\\*\\*"
+    "docs/board.md|port A programmed as input reads \\*\\*FFH\\*\\*; port C's six pins \\(PC0-PC5\\) read \\*\\*3FH\\*\\*"
     "docs/scripting.md|On a port programmed as input it checks that latch all the same"
     "docs/scripting.md|a bare number with a leading zero"
     "docs/scripting.md|is \\*\\*refused\\*\\*, a script error; a `.hex` or `.asm` image that does so is loaded with a \\*\\*warning\\*\\*"
