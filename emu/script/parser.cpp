@@ -265,7 +265,7 @@ private:
     // ---- the machine tool ---------------------------------------------------------------------
     bool tool_axis(Command& c) {
         if (!more() || peek().quoted) return missing("an axis (X, Y or Z)");
-        const std::string a = upper(peek().text);
+        const std::string a = to_upper(peek().text);
         if (a != "X" && a != "Y" && a != "Z") return fail(peek(), fmt::format("unknown axis '{}' (X, Y or Z)", peek().text)), false;
         c.axis = static_cast<std::uint8_t>(a[0] == 'X' ? 0 : a[0] == 'Y' ? 1 : 2);
         ++pos_;
@@ -374,7 +374,7 @@ private:
         else return fail(peek(), fmt::format("unknown plot '{}' (toolpath or time)", peek().text)), false;
         ++pos_;
         if (!string_operand(c.text, "an output file (.svg or .png)")) return false;
-        std::string ext = c.text.size() >= 4 ? upper(c.text.substr(c.text.size() - 4)) : "";
+        std::string ext = c.text.size() >= 4 ? to_upper(c.text.substr(c.text.size() - 4)) : "";
         if (ext != ".SVG" && ext != ".PNG") return error(c.where.col, "a plot is written as .svg or .png"), false;
         if (c.name == "TOOLPATH" && at_word("FROM")) {
             ++pos_;
