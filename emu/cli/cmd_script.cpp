@@ -1,6 +1,7 @@
 // alp85 script FILE... [--junit OUT.xml] [--trace OUT.csv] [-v]: headless firmware tests
 // (docs/scripting.md). Exit status: 0 all passed, 1 an expectation failed, 2 a script error.
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -19,6 +20,7 @@ void add_script_command(CLI::App& app, int& status) {
         std::vector<std::string> files;
         std::string junit, trace;
         bool verbose = false;
+        std::string out_dir;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("script", "Run headless test scripts against the ALP 85 (docs/scripting.md)");
@@ -26,6 +28,9 @@ void add_script_command(CLI::App& app, int& status) {
     cmd->add_option("--junit", args->junit, "Write a JUnit XML report");
     cmd->add_option("--trace", args->trace, "Write every executed instruction as CSV");
     cmd->add_flag("-v,--verbose", args->verbose, "Echo each command with the simulated time");
+    cmd->add_option("--out-dir", args->out_dir,
+                    "Folder for the files scripts write and read back (save, restore, record, plot); "
+                    "created if missing. Default: each script's own folder");
     cmd->footer(
         "Examples:\n"
         "  alp85 script scripts/monitor/*.alp\n"
@@ -38,6 +43,16 @@ void add_script_command(CLI::App& app, int& status) {
         o.out = &std::cout;
         o.err = &std::cerr;
         o.verbose = args->verbose;
+        if (!args->out_dir.empty()) {
+            std::error_code ec;
+            std::filesystem::create_directories(args->out_dir, ec);
+            if (ec) {
+                std::cerr << fmt::format("alp85 script: --out-dir {}: {}\n", args->out_dir, ec.message());
+                status = 2;
+                return;
+            }
+            o.out_dir = args->out_dir;
+        }
         // Every script is checked before any runs: a script error stops everything (status 2).
         std::vector<std::vector<script::Command>> programs(args->files.size());
         std::vector<script::ParseError> errors;

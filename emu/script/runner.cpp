@@ -57,6 +57,7 @@ bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, 
     const std::size_t before = errors.size();
     commands = parse_script(text, file.string(), errors);
     Session checker(session_options(file, options));
+    checker.set_out_dir(options.out_dir);
     checker.check(commands, errors);  // the lines that parsed: files, symbols, ranges
     if (options.err)
         for (const std::string& w : checker.warnings()) *options.err << w;
@@ -70,6 +71,7 @@ ScriptResult execute(const std::filesystem::path& file, const std::vector<Comman
     ScriptResult r;
     r.file = file.string();
     Session session(session_options(file, options));
+    session.set_out_dir(options.out_dir);
     if (options.trace) session.set_trace(options.trace);
     const auto start = std::chrono::steady_clock::now();
     r.passed = true;

@@ -27,6 +27,7 @@ struct RunnerOptions {
     std::ostream* trace = nullptr;  // --trace CSV
     std::ostream* err = nullptr;    // warnings of loaded sources (asm85's, file:line:col)
     bool verbose = false;
+    std::filesystem::path out_dir;  // --out-dir: where save, restore, record and plot files go
 };
 
 // Parses and checks a file. Returns false and fills `errors` when the script cannot run.

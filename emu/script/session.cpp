@@ -60,6 +60,12 @@ std::filesystem::path Session::resolve(const std::string& path) const {
     return p.is_absolute() ? p : options_.base_dir / p;
 }
 
+std::filesystem::path Session::resolve_output(const std::string& path) const {
+    std::filesystem::path p(path);
+    if (p.is_absolute() || out_dir_.empty()) return resolve(path);
+    return out_dir_ / p;
+}
+
 std::optional<std::int64_t> Session::resolve(const Value& v, std::string& error) const {
     if (v.symbol.empty()) return v.number;
     const auto value = debugger_.program().value_of(v.symbol);
@@ -145,10 +151,10 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 break;
             }
             case Op::Restore:
-                if (!saved.count(resolve(c.text).string()) && !std::filesystem::is_regular_file(resolve(c.text)))
-                    err(c, col_of(c, c.text), fmt::format("no such snapshot '{}'", resolve(c.text).string()));
+                if (!saved.count(resolve_output(c.text).string()) && !std::filesystem::is_regular_file(resolve_output(c.text)))
+                    err(c, col_of(c, c.text), fmt::format("no such snapshot '{}'", resolve_output(c.text).string()));
                 break;
-            case Op::Save: saved.insert(resolve(c.text).string()); break;
+            case Op::Save: saved.insert(resolve_output(c.text).string()); break;
             case Op::Monitor:
                 if (!options_.monitor_rom) err(c, c.where.col, "this alp85 was built without the monitor ROM");
                 else
@@ -467,7 +473,7 @@ Session::Outcome Session::tool_command(const Command& c) {
             if (recorder_.recording()) {
                 if (Outcome o = write_recording(); o.status != Status::Ok) return o;
             }
-            record_path_ = resolve(c.text);
+            record_path_ = resolve_output(c.text);
             record_command_ = c;
             recorder_.start(m, c.period);
             return {};
@@ -487,7 +493,7 @@ Session::Outcome Session::tool_command(const Command& c) {
                     for (const auto& smp : samples) path.points.push_back({smp.axes[0].mm, smp.axes[1].mm});
                     const plot::Point a = c.ideal_line ? plot::Point{(*c.ideal_line)[0], (*c.ideal_line)[1]} : path.points.front();
                     const plot::Point b = c.ideal_line ? plot::Point{(*c.ideal_line)[2], (*c.ideal_line)[3]} : path.points.back();
-                    plot::write_toolpath(resolve(c.text).string(), "Toolpath", {path}, std::make_pair(a, b));
+                    plot::write_toolpath(resolve_output(c.text).string(), "Toolpath", {path}, std::make_pair(a, b));
                 } else {
                     std::vector<plot::Series> series;
                     for (int a = 0; a < 3; ++a) {
@@ -497,7 +503,7 @@ Session::Outcome Session::tool_command(const Command& c) {
                                                    smp.axes[static_cast<std::size_t>(a)].mm});
                         series.push_back(std::move(axis));
                     }
-                    plot::write_time_series(resolve(c.text).string(), "Table position against time", series,
+                    plot::write_time_series(resolve_output(c.text).string(), "Table position against time", series,
                                             "position (mm)");
                 }
             } catch (const plot::PlotError& x) {
@@ -604,14 +610,14 @@ Session::Outcome Session::execute(const Command& c) {
         }
         case Op::Save:
             try {
-                m.save_snapshot(resolve(c.text));
+                m.save_snapshot(resolve_output(c.text));
             } catch (const snapshot::SnapshotError& x) {
                 return fail(c, x.what());
             }
             return {};
         case Op::Restore:
             try {
-                m.load_snapshot(resolve(c.text));
+                m.load_snapshot(resolve_output(c.text));
             } catch (const snapshot::SnapshotError& x) {
                 return fail(c, x.what());
             }

@@ -50,6 +50,10 @@ public:
     // Runs one command. Failed expectations and commands that cannot be carried out (a load that
     // falls off the board, a snapshot that is refused, a run-until that times out) give Failed.
     Outcome execute(const Command& command);
+    // When set, the files a script writes or keeps between runs (save, restore, record, plot)
+    // are relative to this folder instead of the script's (alp85 script --out-dir: tests keep the
+    // source tree clean).
+    void set_out_dir(std::filesystem::path dir) { out_dir_ = std::move(dir); }
     // Ends the script: writes a recording still open (record FILE.csv without record stop).
     Outcome finish();
     const debug::ToolRecorder& recorder() const { return recorder_; }
@@ -74,6 +78,7 @@ public:
 private:
     // Every file a command names (load, save, restore) is relative to the script's folder.
     std::filesystem::path resolve(const std::string& path) const;
+    std::filesystem::path resolve_output(const std::string& path) const;
     std::optional<std::int64_t> resolve(const Value& v, std::string& error) const;
     Outcome fail(const Command& c, std::string what) const;
     debug::Origin origin(const Command& c) const { return {c.where.file, c.where.line}; }
@@ -92,6 +97,7 @@ private:
     SessionOptions options_;
     std::unique_ptr<Machine> machine_;
     debug::Debugger debugger_;
+    std::filesystem::path out_dir_;
     debug::ToolRecorder recorder_;
     std::filesystem::path record_path_;
     Command record_command_;
