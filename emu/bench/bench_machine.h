@@ -12,14 +12,15 @@ namespace alp85 {
 struct MachineBenchRun {
     std::uint64_t tstates = 0;   // machine time run
     double host_seconds = 0;     // CPU time of the host
-    std::int64_t steps[3] = {};  // table positions at the end (whole steps): 0 after the ten strokes
+    std::int64_t steps[3] = {};  // table positions 200 ms after the HLT (whole steps): 0 after the ten strokes
     std::int64_t lost[3] = {};   // lost steps at the end
 };
 
 enum class MachineBenchTool : std::uint8_t { None, Ideal, Physical };
 
-// Boots a fresh board with the workload and runs it to its HLT.
-MachineBenchRun run_machine_bench(MachineBenchTool tool);
+// Boots a fresh board with the workload and runs it to its HLT; the fastest of `repeats` runs
+// (host timing is noisy; the machine's own figures are identical every time).
+MachineBenchRun run_machine_bench(MachineBenchTool tool, int repeats = 5);
 
 inline constexpr std::uint64_t kMachineBenchSteps = 10'000;
 inline constexpr std::uint64_t kMachineBenchStepTStates = 7'680;  // 2.5 ms at 3.072 MHz

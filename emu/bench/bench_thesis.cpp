@@ -35,13 +35,12 @@ wait display "H=----" timeout 200ms
 type 1 0 0 0
 wait display "H=1000" timeout 200ms
 )";
-constexpr const char* kMotion = R"(press EXEC
-wait display "  8itti" timeout 120s
+constexpr const char* kMotion = R"(press EXEC hold 30ms gap 0t
 )";
 
 }  // namespace
 
-ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model) {
+ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model, std::uint64_t window) {
     ThesisBenchRun r;
     std::vector<script::ParseError> errors;
     const auto setup = script::parse_script(kSetup, "bench-thesis", errors);
@@ -66,6 +65,8 @@ ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model) {
             return r;
         }
     }
+    Machine& m = session.machine();
+    r.finished = m.run_until(t0 + window, [&] { return m.display_text() == "  8itti "; }) == Machine::Stop::Condition;
     r.host_seconds = cpu_seconds() - h0;
     r.tstates = session.machine().now() - t0;
     const auto& tool = session.machine().tool();

@@ -12,12 +12,14 @@
 namespace alp85 {
 
 struct ThesisBenchRun {
-    std::uint64_t tstates = 0;  // machine time of the motion
+    bool finished = false;      // "Bitti" within the window
+    std::uint64_t tstates = 0;  // machine time of the motion (to Bitti, or the whole window)
     double host_seconds = 0;    // host CPU time of the motion
     std::int64_t x_steps = 0, y_steps = 0;  // where the tables ended (1414, 1414 expected)
     std::string error;          // empty when the walk-through went as expected
 };
 
-ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model);
+// Runs the motion until Bitti or for at most `window` T-states.
+ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model, std::uint64_t window);
 
 }  // namespace alp85

@@ -148,19 +148,36 @@ static_assert(port_of(board::kToolOutPort) == I8155::Port::A && port_of(board::k
               "the machine tool sits on the 8155's ports A (out) and B (in)");
 }  // namespace
 
+namespace {
+// Per axis, the port A bits of its PULSE and DIRECTION, from board::kToolWiring.
+struct AxisBits {
+    std::uint8_t pulse = 0, direction = 0;
+};
+constexpr std::array<AxisBits, 3> kAxisBits = [] {
+    std::array<AxisBits, 3> bits{};
+    for (const board::ToolBit& b : board::kToolWiring) {
+        if (b.port != board::kToolOutPort) continue;
+        auto& a = bits[static_cast<std::size_t>(b.axis)];
+        (b.signal == board::ToolSignal::Pulse ? a.pulse : a.direction) |= static_cast<std::uint8_t>(1u << b.bit);
+    }
+    return bits;
+}();
+}  // namespace
+
 void Machine::drive_tool(std::uint64_t t) {
     if (!options_.machine_tool) return;
     // Pins programmed as inputs are not driven: the sequencers' inputs are pulled high.
     const std::uint8_t mask = rio_.port_output_mask(I8155::Port::A);
     const std::uint8_t pins = static_cast<std::uint8_t>((rio_.port_output(I8155::Port::A) & mask) | ~mask);
-    std::array<bool, 3> pulse{}, direction{};
-    for (const board::ToolBit& b : board::kToolWiring) {
-        if (b.port != board::kToolOutPort) continue;
-        const bool level = (pins >> b.bit) & 1;
-        if (b.signal == board::ToolSignal::Pulse) pulse[static_cast<std::size_t>(b.axis)] = level;
-        if (b.signal == board::ToolSignal::Direction) direction[static_cast<std::size_t>(b.axis)] = level;
+    // Only axes whose inputs change are told (most 8155 writes leave them alone); what each
+    // sequencer last saw is its own state, so snapshots need nothing here.
+    const auto& axes = tool_.state().axes;
+    for (std::size_t a = 0; a < 3; ++a) {
+        const AxisBits& b = kAxisBits[a];
+        const bool pulse = pins & b.pulse, direction = pins & b.direction;
+        if (pulse != axes[a].sequencer.pulse || direction != axes[a].sequencer.direction)
+            tool_.set_drive(static_cast<board::ToolAxis>(a), pulse, direction, t);
     }
-    for (std::size_t a = 0; a < 3; ++a) tool_.set_drive(static_cast<board::ToolAxis>(a), pulse[a], direction[a], t);
 }
 
 std::uint8_t Machine::sense_tool(std::uint64_t t) {

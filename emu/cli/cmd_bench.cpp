@@ -1,12 +1,18 @@
 // alp85 bench cpu [--cpu 8080|8085] [--tstates N]: the fixed CPU workload (emu/bench_cpu.asm),
 // emulated T-states per host second.
 // alp85 bench board [--tstates N]: the board with idle peripherals against the bare core.
+// alp85 bench machine: three axes stepping at 400 steps/s on the board, physical, ideal, no tool.
+// alp85 bench thesis: the thesis firmware's 100 mm diagonal at 1000 mm/min, physical and ideal.
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "emu/bench/bench_board.h"
 #include "emu/bench/bench_cpu.h"
+#include "emu/bench/bench_machine.h"
+#include "emu/bench/bench_thesis.h"
 #include "emu/cli/commands.h"
 
 namespace alp85::cli {
@@ -22,7 +28,7 @@ int run_bench_cpu(const BenchArgs& args) {
     const Stopwatch watch;
     const std::uint64_t t = bench.run(args.tstates);
     const double seconds = watch.wall_seconds(), cpu_seconds = watch.cpu_seconds();
-    std::printf("workload:     delay loop, multiply, BCD add, CRC-16 (emu/bench_cpu.asm)\n");
+    std::printf("workload:     delay loop, multiply, BCD add, CRC-16 (emu/bench/bench_cpu.asm)\n");
     std::printf("cpu:          i%s\n", args.cpu.c_str());
     std::printf("instructions: %llu\n", static_cast<unsigned long long>(bench.cpu().instructions()));
     std::printf("T-states:     %llu\n", static_cast<unsigned long long>(t));
@@ -46,12 +52,67 @@ int run_bench_board(std::uint64_t tstates) {
     const double bare_s = cpu_seconds([&] { bare = bench.run_bare(tstates); });
     const double board_s = cpu_seconds([&] { board = bench.run_board(tstates); });
     const double bare_rate = bare / bare_s, board_rate = board / board_s;
-    std::printf("workload:     16-bit arithmetic through RAM, CRC-16, the thesis's DL delay (emu/bench_board.asm)\n");
+    std::printf("workload:     16-bit arithmetic through RAM, CRC-16, the thesis's DL delay (emu/bench/bench_board.asm)\n");
     std::printf("bare core:    %llu T-states in %.3f s CPU time: %.4g T-states/s\n",
                 static_cast<unsigned long long>(bare), bare_s, bare_rate);
-    std::printf("board:        %llu T-states in %.3f s CPU time: %.4g T-states/s (8155 and 8279 idle)\n",
+    std::printf("board:        %llu T-states in %.3f s CPU time: %.4g T-states/s (8155, 8279 and machine tool idle)\n",
                 static_cast<unsigned long long>(board), board_s, board_rate);
-    std::printf("board / bare: %.1f %% (target: at least 90 %%)\n", 100.0 * board_rate / bare_rate);
+    std::printf("board / bare: %.1f %% (target: at least 98 %%)\n", 100.0 * board_rate / bare_rate);
+    return 0;
+}
+
+int run_bench_machine() {
+    std::printf("workload:     X, Y and Z together, 10 000 steps each at 400 steps/s = 25 s of machine time\n");
+    std::printf("              (emu/bench/bench_machine.asm on the board)\n");
+    double none_s = 0, ideal_s = 0;
+    for (const auto& [tool, name] : {std::pair{MachineBenchTool::None, "no tool"}, std::pair{MachineBenchTool::Ideal, "ideal"},
+                                     std::pair{MachineBenchTool::Physical, "physical"}}) {
+        const MachineBenchRun r = run_machine_bench(tool);
+        const double machine_s = static_cast<double>(r.tstates) / 3.072e6;
+        std::printf("%-9s     %.3f s machine time in %.3f s CPU time: %.0fx real time", name, machine_s, r.host_seconds,
+                    machine_s / r.host_seconds);
+        if (tool != MachineBenchTool::None)
+            std::printf(" (ends at %lld/%lld/%lld steps, %lld/%lld/%lld lost)", static_cast<long long>(r.steps[0]),
+                        static_cast<long long>(r.steps[1]), static_cast<long long>(r.steps[2]),
+                        static_cast<long long>(r.lost[0]), static_cast<long long>(r.lost[1]),
+                        static_cast<long long>(r.lost[2]));
+        std::printf("\n");
+        if (tool == MachineBenchTool::None) none_s = r.host_seconds / machine_s;
+        if (tool == MachineBenchTool::Ideal) ideal_s = r.host_seconds / machine_s;
+        if (tool == MachineBenchTool::Physical)
+            std::printf("targets:      physical >= 100x real time (aim 500x); ideal costs %+.1f %% against no tool "
+                        "(target <= 5 %%)\n",
+                        100.0 * (ideal_s / none_s - 1.0));
+    }
+    return 0;
+}
+
+int run_bench_thesis() {
+    std::printf("workload:     thesis-fixed, a 100 mm diagonal at 1000 mm/min: (0100, 0100) to (1514, 1514) steps,\n"
+                "              typed in as Appendix C says; the motion (EXEC to Bitti) timed\n");
+    // The ideal motors finish; the physical ones are given the same machine time (they may not
+    // finish: see docs/results.md on the closed loop and the rotor's ringing).
+    std::uint64_t window = 120ull * 3'072'000;
+    for (const auto& [model, name, target] :
+         {std::tuple{periph::MachineTool::MotorModel::Ideal, "ideal", 1000}, std::tuple{periph::MachineTool::MotorModel::Physical, "physical", 200}}) {
+        const ThesisBenchRun r = run_thesis_bench(model, window);
+        if (!r.error.empty()) {
+            std::fprintf(stderr, "alp85 bench thesis: the walk-through failed: %s\n", r.error.c_str());
+            return 1;
+        }
+        if (model == periph::MachineTool::MotorModel::Ideal) {
+            if (!r.finished) {
+                std::fprintf(stderr, "alp85 bench thesis: the ideal run did not reach Bitti\n");
+                return 1;
+            }
+            window = r.tstates;
+        }
+        const double machine_s = static_cast<double>(r.tstates) / 3.072e6;
+        std::printf("%-9s     %.3f s machine time in %.3f s CPU time: %.0fx real time (target >= %dx); %s at %lld/%lld steps\n",
+                    name, machine_s, r.host_seconds, machine_s / r.host_seconds, target,
+                    r.finished ? "Bitti," : "no Bitti in that time, tables", static_cast<long long>(r.x_steps),
+                    static_cast<long long>(r.y_steps));
+    }
     return 0;
 }
 }  // namespace
@@ -60,7 +121,7 @@ void add_bench_command(CLI::App& app, int& status) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* bench = app.add_subcommand("bench", "Benchmarks");
     bench->require_subcommand(1);
-    bench->footer("Exit status: 0 success, 2 a usage error.");
+    bench->footer("Exit status: 0 success, 1 a benchmark's run went wrong, 2 a usage error.");
     CLI::App* cpu = bench->add_subcommand("cpu", "Emulated T-states per second on a fixed CPU-bound workload");
     add_cpu_option(cpu, args->cpu, "processor variant");
     cpu->add_option("--tstates", args->tstates, "T-states to run")->check(CLI::Range(1ULL, 1ULL << 50))->capture_default_str();
@@ -69,6 +130,11 @@ void add_bench_command(CLI::App& app, int& status) {
     CLI::App* board = bench->add_subcommand("board", "The board with idle peripherals against the bare core, same workload");
     board->add_option("--tstates", args->tstates, "T-states to run on each")->check(CLI::Range(1ULL, 1ULL << 50))->capture_default_str();
     board->callback([args, &status] { status = run_bench_board(args->tstates); });
+
+    CLI::App* machine = bench->add_subcommand("machine", "Three axes at 400 steps/s on the board: physical, ideal and no tool");
+    machine->callback([&status] { status = run_bench_machine(); });
+    CLI::App* thesis = bench->add_subcommand("thesis", "The thesis firmware's 100 mm diagonal at 1000 mm/min");
+    thesis->callback([&status] { status = run_bench_thesis(); });
 }
 
 }  // namespace alp85::cli
