@@ -23,15 +23,19 @@ def rule(x1,y1,x2,y2):
         if y!=yi: y+=sy; path.append(('Y',x,y))
         else: x+=sx; path.append(('X',x,y))
     return path
-random.seed(int(sys.argv[1]) if len(sys.argv)>1 else 1)
-bad=0
-for i in range(int(sys.argv[2]) if len(sys.argv)>2 else 8):
-    x1,y1,x2,y2=[random.randint(0,int(sys.argv[3]) if len(sys.argv)>3 else 60) for _ in range(4)]
-    out=subprocess.run(['/tmp/h/h','build/firmware/thesis/thesis-fixed.hex','0000']+['%04d'%v for v in (x1,y1,x2,y2)]+['1500','60000'],
-        capture_output=True,text=True,env={'PATHLOG':'1'}).stdout.split('\n')
-    got=[(l.split()[0],int(l.split()[1]),int(l.split()[2])) for l in out if l[:1] in 'XY' and len(l.split())==3]
-    exp=rule(x1,y1,x2,y2)
-    ok = got==exp
-    bad+= not ok
-    print((x1,y1,x2,y2), 'OK' if ok else 'DIFF', len(got), len(exp), out[-2][:60] if not ok else '')
-print('bad',bad)
+def main():
+  random.seed(int(sys.argv[1]) if len(sys.argv)>1 else 1)
+  bad=0
+  for i in range(int(sys.argv[2]) if len(sys.argv)>2 else 8):
+      x1,y1,x2,y2=[random.randint(0,int(sys.argv[3]) if len(sys.argv)>3 else 60) for _ in range(4)]
+      out=subprocess.run(['/tmp/h/h','build/firmware/thesis/thesis-fixed.hex','0000']+['%04d'%v for v in (x1,y1,x2,y2)]+['1500','60000'],
+          capture_output=True,text=True,env={'PATHLOG':'1'}).stdout.split('\n')
+      got=[(l.split()[0],int(l.split()[1]),int(l.split()[2])) for l in out if l[:1] in 'XY' and len(l.split())==3]
+      exp=rule(x1,y1,x2,y2)
+      ok = got==exp
+      bad+= not ok
+      print((x1,y1,x2,y2), 'OK' if ok else 'DIFF', len(got), len(exp), out[-2][:60] if not ok else '')
+  print('bad',bad)
+
+if __name__ == '__main__':
+    main()
