@@ -8,7 +8,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libfmt-dev libcli11-dev nlohmann-json3-dev
   clang libclang-rt-14-dev
-  zlib1g-dev
+  zlib1g-dev python3
   libcairo2-dev
 )
 
