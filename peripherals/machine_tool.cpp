@@ -42,6 +42,18 @@ void MachineTool::init_axis(int a) {
     ax_[a].transducer.init(st.transducer, 0.0);
 }
 
+double MachineTool::feedback_mm(int a, const StepperMotor::State& m) const {
+    if (s_.feedback == Feedback::Commanded) return static_cast<double>(s_.axes[a].sequencer.count) * ax_[a].step_mm;
+    return position_mm(a, m);
+}
+
+void MachineTool::set_feedback(Feedback f) {
+    if (f == s_.feedback) return;
+    s_.feedback = f;
+    // The transducers walk (counting) to what they now read, as a scale would if moved there.
+    for (int a = 0; a < kAxes; ++a) ax_[a].transducer.update(s_.axes[a].transducer, feedback_mm(a, motor_view(a)));
+}
+
 double MachineTool::position_mm(int a, const StepperMotor::State& m) const {
     if (s_.model == MotorModel::Ideal) return static_cast<double>(s_.axes[a].ideal_steps) * ax_[a].step_mm;
     return m.theta * ax_[a].mm_per_rad;
@@ -49,7 +61,7 @@ double MachineTool::position_mm(int a, const StepperMotor::State& m) const {
 
 void MachineTool::after_step(int a, unsigned flags, std::uint64_t t) {
     AxisState& st = s_.axes[a];
-    ax_[a].transducer.update(st.transducer, st.motor.theta * ax_[a].mm_per_rad);
+    if (s_.feedback == Feedback::Scale) ax_[a].transducer.update(st.transducer, st.motor.theta * ax_[a].mm_per_rad);
     const std::int8_t at = (flags & StepperMotor::kStopHigh) ? 1 : (flags & StepperMotor::kStopLow) ? -1 : 0;
     if (at != st.table.at_stop && ax_[a].table.update_stop(st.table, at, t) && on_end_stop_)
         on_end_stop_(static_cast<Axis>(a), at > 0, t);
@@ -90,7 +102,7 @@ void MachineTool::set_model(MotorModel m) {
         ax_[a].motor.init_at_rest(st.motor, static_cast<double>(st.ideal_steps) * ax_[a].motor.step_angle(),
                                   Sequencer::phases(st.sequencer));
         st.grid_t = s_.now;
-        ax_[a].transducer.update(st.transducer, position_mm(a, st.motor));
+        ax_[a].transducer.update(st.transducer, feedback_mm(a, st.motor));
     }
 }
 
@@ -101,6 +113,8 @@ void MachineTool::set_drive(Axis axis, bool pulse, bool direction, std::uint64_t
     AxisState& st = s_.axes[a];
     const int d = ax_[a].sequencer.set_inputs(st.sequencer, pulse, direction);
     if (d == 0) return;
+    if (s_.feedback == Feedback::Commanded)
+        ax_[a].transducer.update(st.transducer, static_cast<double>(st.sequencer.count) * ax_[a].step_mm);
     const std::uint8_t ph = Sequencer::phases(st.sequencer);
     if (s_.model == MotorModel::Ideal) {
         const std::int64_t next = st.ideal_steps + d;
@@ -116,7 +130,7 @@ void MachineTool::set_drive(Axis axis, bool pulse, bool direction, std::uint64_t
         }
         st.motor.phases = ph;
         st.motor.theta = static_cast<double>(st.ideal_steps) * ax_[a].motor.step_angle();
-        ax_[a].transducer.update(st.transducer, position_mm(a, st.motor));
+        ax_[a].transducer.update(st.transducer, feedback_mm(a, st.motor));
         if (at != st.table.at_stop && table.update_stop(st.table, at, t) && on_end_stop_)
             on_end_stop_(axis, at > 0, t);
         return;
@@ -142,7 +156,8 @@ MachineTool::Sense MachineTool::sense(Axis axis, std::uint64_t t) {
     advance(t);
     const int a = idx(axis);
     Transducer::State tr = s_.axes[a].transducer;
-    if (s_.model == MotorModel::Physical) ax_[a].transducer.update(tr, position_mm(a, motor_view(a)));
+    if (s_.model == MotorModel::Physical && s_.feedback == Feedback::Scale)
+        ax_[a].transducer.update(tr, position_mm(a, motor_view(a)));
     const auto o = ax_[a].transducer.outputs(tr);
     return {o.count, o.direction};
 }
@@ -173,7 +188,8 @@ double MachineTool::table_steps(Axis axis) const {
 std::int64_t MachineTool::transducer_count(Axis axis) const {
     const int a = idx(axis);
     Transducer::State tr = s_.axes[a].transducer;
-    if (s_.model == MotorModel::Physical) ax_[a].transducer.update(tr, position_mm(a, motor_view(a)));
+    if (s_.model == MotorModel::Physical && s_.feedback == Feedback::Scale)
+        ax_[a].transducer.update(tr, position_mm(a, motor_view(a)));
     return tr.count;
 }
 
@@ -217,8 +233,9 @@ void MachineTool::load_state(StateReader& r) {
         r.check(st.motor.phases == Sequencer::phases(st.sequencer), "phases disagree with the sequencer");
         r.check(st.motor.settled || st.grid_t <= s.now, "motor state ahead of the clock");
         r.check(st.table.at_stop >= -1 && st.table.at_stop <= 1, "invalid end-stop state");
-        const double x = s.model == MotorModel::Ideal ? static_cast<double>(st.ideal_steps) * ax_[a].step_mm
-                                                      : st.motor.theta * ax_[a].mm_per_rad;
+        const double x = s.feedback == Feedback::Commanded ? static_cast<double>(st.sequencer.count) * ax_[a].step_mm
+                         : s.model == MotorModel::Ideal    ? static_cast<double>(st.ideal_steps) * ax_[a].step_mm
+                                                           : st.motor.theta * ax_[a].mm_per_rad;
         r.check(ax_[a].transducer.q_of(x) == st.transducer.q, "transducer disagrees with the table");
     }
     s_ = s;

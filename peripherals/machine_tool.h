@@ -38,6 +38,10 @@ class MachineTool final : public Part {
 public:
     enum class Axis : std::uint8_t { X, Y, Z };
     enum class MotorModel : std::uint8_t { Ideal, Physical };
+    // What the transducers read: the scale on the table (closed loop, the thesis's machine), or
+    // the commanded steps (the bits derived from the sequencer's pulses: an open loop, for
+    // comparing with the thesis's open-loop results; the table itself still moves as the motor does).
+    enum class Feedback : std::uint8_t { Scale, Commanded };
     static constexpr int kAxes = 3;
 
     struct Sense {
@@ -84,12 +88,14 @@ public:
     };
     struct State {
         MotorModel model = MotorModel::Physical;
+        Feedback feedback = Feedback::Scale;
         std::array<AxisState, kAxes> axes{};
         std::uint64_t now = 0;
 
         template <class S, class Io>
         static void fields(S& s, Io& io) {
             io(s.model, MotorModel::Physical);
+            io(s.feedback, Feedback::Commanded);
             for (auto& a : s.axes) AxisState::fields(a, io);
             io(s.now);
         }
@@ -100,7 +106,7 @@ public:
     // Part
     std::string_view name() const override { return "machine tool"; }
     std::string_view tag() const override { return "TOOL"; }
-    std::uint8_t state_version() const override { return 1; }
+    std::uint8_t state_version() const override { return 2; }
     void reset(std::uint64_t now) override { advance(now); }
     void advance(std::uint64_t now) override;
     std::uint64_t next_event() const override { return kNever; }
@@ -111,6 +117,9 @@ public:
     // The run's motor model (switching puts every rotor at rest on its nearest step).
     void set_model(MotorModel m);
     MotorModel model() const { return s_.model; }
+    // What the transducers read from now on (switching walks them to the new source's position).
+    void set_feedback(Feedback f);
+    Feedback feedback() const { return s_.feedback; }
     // Input levels at T-state t (advances to t first).
     void set_drive(Axis axis, bool pulse, bool direction, std::uint64_t t);
     // Transducer outputs at t (advances to t first).
@@ -153,6 +162,7 @@ private:
     void after_step(int a, unsigned flags, std::uint64_t t);
     StepperMotor::State motor_view(int a) const;
     double position_mm(int a, const StepperMotor::State& m) const;
+    double feedback_mm(int a, const StepperMotor::State& m) const;
     void init_axis(int a);
 
     Params p_;

@@ -87,8 +87,8 @@ void add_print(std::vector<Command>& commands, std::string text) {
 
 void add_run_command(CLI::App& app, int& status) {
     struct Args {
-        std::vector<std::string> programs;
-        std::string keys, boot = "500ms", run_for = "1s";
+        std::vector<std::string> programs, firmware;
+        std::string keys, boot = "500ms", run_for = "1s", motor = "physical";
         bool no_monitor = false, text = false;
     };
     auto args = std::make_shared<Args>();
@@ -98,6 +98,9 @@ void add_run_command(CLI::App& app, int& status) {
     cmd->add_option("--boot", args->boot, "Time to run after RESET before typing (default 500ms)");
     cmd->add_option("--for", args->run_for, "Time to run after the keys (default 1s)")->needs(keys);
     cmd->add_flag("--no-monitor", args->no_monitor, "Do not load the built-in monitor ROM");
+    cmd->add_option("--firmware", args->firmware,
+                    "Firmware built into alp85 to load (thesis, thesis-fixed), with its symbols; may be repeated");
+    add_motor_option(cmd, args->motor);
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
     cmd->footer(
         "Addresses are read as in scripts: 0800H or 0x800 is hex, 2048 decimal; a bare number with a\n"
@@ -105,6 +108,7 @@ void add_run_command(CLI::App& app, int& status) {
         "Examples:\n"
         "  alp85 run                                          # the monitor's sign-on\n"
         "  alp85 run firmware/demo/hello85.asm --keys \"R 7 0800 EXEC\"\n"
+        "  alp85 run --firmware thesis-fixed --keys \"R 7 0800 EXEC 0012\"   # the thesis's Z prompt, Z = 12\n"
         "Exit status: 0 success, 1 a program could not be placed or run, 2 a usage error or a bad\n"
         "argument (a program that is missing or does not assemble, a bad time or key).");
     cmd->callback([args, &status] {
@@ -113,6 +117,7 @@ void add_run_command(CLI::App& app, int& status) {
         so.out = &std::cout;
         if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
         script::Session session(so);
+        session.machine().tool().set_model(motor_model_of(args->motor));
         std::vector<ParseError> errors;
         std::vector<Command> commands;
         if (!args->no_monitor) {
@@ -122,6 +127,11 @@ void add_run_command(CLI::App& app, int& status) {
                 return;
             }
             commands.push_back(command(Op::Monitor));
+        }
+        for (const std::string& f : args->firmware) {
+            Command c = command(Op::Firmware, f);
+            c.text = f;
+            commands.push_back(std::move(c));
         }
         for (const std::string& p : args->programs) {
             Command c = command(Op::Load, p);
@@ -175,6 +185,12 @@ void add_run_command(CLI::App& app, int& status) {
         }
         std::cout << fmt::format("{} simulated, PC={:04X}H\n", script::Session::format_time(session.machine().now()),
                                  session.machine().cpu().regs().pc);
+        // Where the machine tool's tables are, after the display.
+        if (const auto o = session.execute(command(Op::PrintAxes)); o.status != script::Session::Status::Ok) {
+            std::cerr << o.message << '\n';
+            status = 1;
+            return;
+        }
         status = 0;
     });
 }

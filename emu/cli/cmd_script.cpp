@@ -21,6 +21,7 @@ void add_script_command(CLI::App& app, int& status) {
         std::string junit, trace;
         bool verbose = false;
         std::string out_dir;
+        std::string motor = "physical";
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("script", "Run headless test scripts against the ALP 85 (docs/scripting.md)");
@@ -28,6 +29,7 @@ void add_script_command(CLI::App& app, int& status) {
     cmd->add_option("--junit", args->junit, "Write a JUnit XML report");
     cmd->add_option("--trace", args->trace, "Write every executed instruction as CSV");
     cmd->add_flag("-v,--verbose", args->verbose, "Echo each command with the simulated time");
+    add_motor_option(cmd, args->motor);
     cmd->add_option("--out-dir", args->out_dir,
                     "Folder for the files scripts write and read back (save, restore, record, plot); "
                     "created if missing. Default: each script's own folder");
@@ -43,6 +45,7 @@ void add_script_command(CLI::App& app, int& status) {
         o.out = &std::cout;
         o.err = &std::cerr;
         o.verbose = args->verbose;
+        o.motor = motor_model_of(args->motor);
         if (!args->out_dir.empty()) {
             std::error_code ec;
             std::filesystem::create_directories(args->out_dir, ec);

@@ -8,6 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "peripherals/machine_tool.h"
+
 #include "emu/core/i8085.h"
 
 namespace alp85::cli {
@@ -28,6 +30,10 @@ int column_of(std::string_view argument);
 // its default; variant_of() gives the Variant it names.
 CLI::Option* add_cpu_option(CLI::App* cmd, std::string& cpu, const std::string& help);
 Variant variant_of(const std::string& cpu);
+// --motor ideal|physical (the machine tool's motor model), default physical; motor_model_of()
+// gives the model it names.
+CLI::Option* add_motor_option(CLI::App* cmd, std::string& motor);
+periph::MachineTool::MotorModel motor_model_of(const std::string& motor);
 
 // Host time of a run: wall clock and this process's CPU time, from construction.
 class Stopwatch {

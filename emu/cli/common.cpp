@@ -36,6 +36,19 @@ CLI::Option* add_cpu_option(CLI::App* cmd, std::string& cpu, const std::string& 
 
 Variant variant_of(const std::string& cpu) { return cpu == "8080" ? Variant::I8080 : Variant::I8085; }
 
+CLI::Option* add_motor_option(CLI::App* cmd, std::string& motor) {
+    return cmd
+        ->add_option("--motor", motor,
+                     "The machine tool's motors: ideal (1.8 degrees at each pulse) or physical (the hybrid stepper "
+                     "with its currents and inertia, docs/machine.md)")
+        ->check(CLI::IsMember({"ideal", "physical"}))
+        ->capture_default_str();
+}
+
+periph::MachineTool::MotorModel motor_model_of(const std::string& motor) {
+    return motor == "ideal" ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical;
+}
+
 int column_of(std::string_view argument) {
     for (const Arg& a : g_args)
         if (a.text == argument) return a.col;

@@ -47,7 +47,7 @@ public:
             {"SAVE", &LineParser::save},       {"RESTORE", &LineParser::restore},
             {"PRINT", &LineParser::print},     {"FIRMWARE", &LineParser::firmware},
             {"MOTOR", &LineParser::motor},     {"RECORD", &LineParser::record},
-            {"PLOT", &LineParser::plot},
+            {"PLOT", &LineParser::plot},       {"FEEDBACK", &LineParser::feedback},
         };
         const auto it = verbs.find(verb);
         if (it == verbs.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
@@ -332,6 +332,15 @@ private:
         ++pos_;
         return true;
     }
+    bool feedback(Command& c) {
+        c.op = Op::Feedback;
+        if (at_word("SCALE")) c.real = 0;
+        else if (at_word("COMMANDED")) c.real = 1;
+        else return more() ? (fail(peek(), fmt::format("unknown feedback '{}' (scale or commanded)", peek().text)), false)
+                           : missing("what the transducers read (scale or commanded)");
+        ++pos_;
+        return true;
+    }
     bool record(Command& c) {
         if (at_word("STOP")) {
             ++pos_;
@@ -576,6 +585,16 @@ private:
         return string_operand(c.text, "a snapshot file name");
     }
     bool print(Command& c) {
+        if (at_word("AXES")) {
+            ++pos_;
+            c.op = Op::PrintAxes;
+            return true;
+        }
+        if (at_word("TIME")) {
+            ++pos_;
+            c.op = Op::PrintTime;
+            return true;
+        }
         if (at_word("DISPLAY")) {
             ++pos_;
             c.op = Op::PrintDisplay;

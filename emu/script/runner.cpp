@@ -72,6 +72,7 @@ ScriptResult execute(const std::filesystem::path& file, const std::vector<Comman
     r.file = file.string();
     Session session(session_options(file, options));
     session.set_out_dir(options.out_dir);
+    session.machine().tool().set_model(options.motor);
     if (options.trace) session.set_trace(options.trace);
     const auto start = std::chrono::steady_clock::now();
     r.passed = true;

@@ -28,6 +28,7 @@ struct RunnerOptions {
     std::ostream* err = nullptr;    // warnings of loaded sources (asm85's, file:line:col)
     bool verbose = false;
     std::filesystem::path out_dir;  // --out-dir: where save, restore, record and plot files go
+    periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;  // --motor, until `motor`
 };
 
 // Parses and checks a file. Returns false and fills `errors` when the script cannot run.

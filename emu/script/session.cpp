@@ -31,6 +31,13 @@ Session::Session(SessionOptions options)
     : options_(std::move(options)),
       machine_(std::make_unique<Machine>(Machine::Options{options_.cpu})),
       debugger_(*machine_) {
+    // A table reaching an end stop is reported as it happens (the screw stalls the motor there).
+    machine_->tool().on_end_stop([this](periph::MachineTool::Axis axis, bool high, std::uint64_t t) {
+        debugger_.emit({debug::Event::Kind::Output, {},
+                        fmt::format("machine tool: the {} table reached its {} end stop at {}", "XYZ"[static_cast<int>(axis)],
+                                    high ? "high" : "low", format_time(t - time_origin_)),
+                        {}});
+    });
     // The text front ends (alp85 script, alp85 run) read the events as they always printed them.
     if (std::ostream* out = options_.out) {
         debugger_.listen([out](const debug::Event& e) {
@@ -408,6 +415,22 @@ std::int64_t whole_steps(const periph::MachineTool& tool, periph::MachineTool::A
 }
 }  // namespace
 
+std::string Session::axes_text() const {
+    const periph::MachineTool& tool = machine_->tool();
+    std::string out = fmt::format("machine tool ({} motors, transducers on the {}):",
+                                  tool.model() == periph::MachineTool::MotorModel::Ideal ? "ideal" : "physical",
+                                  tool.feedback() == periph::MachineTool::Feedback::Scale ? "scale" : "commanded steps");
+    for (int a = 0; a < 3; ++a) {
+        const auto axis = static_cast<periph::MachineTool::Axis>(a);
+        const auto stop = tool.end_stop(axis);
+        out += fmt::format("\n  {}  {:6} steps  {:9.3f} mm  count {:6}  commanded {:6}  lost {}{}", "XYZ"[a],
+                           whole_steps(tool, axis), tool.table_mm(axis), tool.transducer_count(axis),
+                           tool.commanded_steps(axis), tool.lost_steps(axis),
+                           stop.at ? (stop.at > 0 ? "  at its high end stop" : "  at its low end stop") : "");
+    }
+    return out;
+}
+
 Session::Outcome Session::write_recording() {
     recorder_.stop();
     try {
@@ -432,6 +455,11 @@ Session::Outcome Session::tool_command(const Command& c) {
         case Op::Motor:
             tool.set_model(c.real == 0 ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical);
             return {};
+        case Op::Feedback:
+            tool.set_feedback(c.real == 0 ? periph::MachineTool::Feedback::Scale : periph::MachineTool::Feedback::Commanded);
+            return {};
+        case Op::PrintAxes: output(c, axes_text()); return {};
+        case Op::PrintTime: output(c, fmt::format("time: {} since the last reset", format_time(elapsed()))); return {};
         case Op::ExpectAxis: {
             if (c.in_mm) {
                 const double mm = tool.table_mm(axis);
@@ -623,6 +651,9 @@ Session::Outcome Session::execute(const Command& c) {
             }
             return {};
         case Op::Motor:
+        case Op::Feedback:
+        case Op::PrintAxes:
+        case Op::PrintTime:
         case Op::ExpectAxis:
         case Op::ExpectCount:
         case Op::ExpectLost:

@@ -91,6 +91,7 @@ private:
     Outcome expect(const Command& c);
     Outcome tool_command(const Command& c);
     Outcome write_recording();
+    std::string axes_text() const;
     std::uint16_t read_reg(Reg r) const;
     void write_reg(Reg r, std::uint16_t v);
 

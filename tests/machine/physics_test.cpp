@@ -166,3 +166,35 @@ TEST(TransducerOnPhysicalTable, DefaultOffsetGivesOneEdgePerStep) {
 
 }  // namespace
 }  // namespace alp85::test
+
+namespace alp85::test {
+namespace {
+
+// Open loop (Feedback::Commanded): the transducer's bits follow the commanded pulses, so at
+// 600 steps/s, where the motor loses steps, the count is the 200 commanded while the table lags.
+TEST(MotorPhysical, CommandedFeedbackCountsThePulsesNotTheTable) {
+    MachineTool m;
+    m.set_feedback(MachineTool::Feedback::Commanded);
+    pulse_train(m, Axis::X, 200, 600.0, true, 1000);
+    ASSERT_GT(m.lost_steps(Axis::X), 0);
+    EXPECT_EQ(m.transducer_count(Axis::X), 200);
+    EXPECT_EQ(m.commanded_steps(Axis::X), 200);
+    // Back to the scale: the transducer walks to where the table really is.
+    m.set_feedback(MachineTool::Feedback::Scale);
+    EXPECT_EQ(m.transducer_count(Axis::X), 200 - m.lost_steps(Axis::X));
+}
+
+TEST(MotorPhysical, TheFeedbackSourceIsInTheSnapshot) {
+    MachineTool a;
+    a.set_feedback(MachineTool::Feedback::Commanded);
+    pulse_train(a, Axis::Y, 50, 600.0, true, 1000);
+    std::vector<std::uint8_t> blob;
+    a.save(blob);
+    MachineTool b;
+    b.load(blob);
+    EXPECT_EQ(b.feedback(), MachineTool::Feedback::Commanded);
+    EXPECT_EQ(b.transducer_count(Axis::Y), 50);
+}
+
+}  // namespace
+}  // namespace alp85::test
