@@ -1,13 +1,22 @@
 #!/usr/bin/env bash
-# The main job: build ALP85 (which assembles the monitor and the other firmware sources), then
-# start the board headless with its monitor: show the display after RESET, type R 7 0800 EXEC
-# (thesis Appendix C: GO to 0800H) to run the demo program, and show the display again.
+# The main job: build ALP85 (which assembles the monitor, the thesis firmware in its two builds and
+# the other firmware sources), then walk through thesis Appendix C headless on the reconstructed
+# firmware (scripts/demo/thesis.alp): the display at each prompt, the line drawn by the simulated
+# machine tool, the time it took, where the tables ended and the toolpath plot; then the same
+# session on the build as printed (scripts/demo/thesis-as-printed.alp), which draws no line.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$(nproc)"
+out=build/run
 echo
 echo "Executables:  build/bin/ ($(ls build/bin | tr '\n' ' '))"
 echo "Firmware:     $(find build/firmware -maxdepth 2 -name '*.hex' | sort | tr '\n' ' ')"
 echo
-build/bin/alp85 run firmware/demo/hello85.asm --keys "R 7 0800 EXEC"
+echo "== thesis Appendix C on thesis-fixed (the errata repaired)"
+build/bin/alp85 script scripts/demo/thesis.alp --out-dir "$out"
+echo
+echo "== the same session on the thesis firmware as printed"
+build/bin/alp85 script scripts/demo/thesis-as-printed.alp --out-dir "$out"
+echo
+echo "Toolpath plot: $out/thesis-toolpath.svg (recording: $out/thesis-line.csv)"

@@ -48,6 +48,7 @@ public:
             {"PRINT", &LineParser::print},     {"FIRMWARE", &LineParser::firmware},
             {"MOTOR", &LineParser::motor},     {"RECORD", &LineParser::record},
             {"PLOT", &LineParser::plot},       {"FEEDBACK", &LineParser::feedback},
+            {"MARK", &LineParser::mark},
         };
         const auto it = verbs.find(verb);
         if (it == verbs.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
@@ -330,6 +331,10 @@ private:
         else return more() ? (fail(peek(), fmt::format("unknown motor model '{}' (ideal or physical)", peek().text)), false)
                            : missing("a motor model (ideal or physical)");
         ++pos_;
+        return true;
+    }
+    bool mark(Command& c) {
+        c.op = Op::Mark;
         return true;
     }
     bool feedback(Command& c) {

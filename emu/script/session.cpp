@@ -459,7 +459,12 @@ Session::Outcome Session::tool_command(const Command& c) {
             tool.set_feedback(c.real == 0 ? periph::MachineTool::Feedback::Scale : periph::MachineTool::Feedback::Commanded);
             return {};
         case Op::PrintAxes: output(c, axes_text()); return {};
-        case Op::PrintTime: output(c, fmt::format("time: {} since the last reset", format_time(elapsed()))); return {};
+        case Op::PrintTime:
+            output(c, mark_ ? fmt::format("time: {} since the mark, {} since the last reset",
+                                          format_time(m.now() - *mark_), format_time(elapsed()))
+                            : fmt::format("time: {} since the last reset", format_time(elapsed())));
+            return {};
+        case Op::Mark: mark_ = m.now(); return {};
         case Op::ExpectAxis: {
             if (c.in_mm) {
                 const double mm = tool.table_mm(axis);
@@ -654,6 +659,7 @@ Session::Outcome Session::execute(const Command& c) {
         case Op::Feedback:
         case Op::PrintAxes:
         case Op::PrintTime:
+        case Op::Mark:
         case Op::ExpectAxis:
         case Op::ExpectCount:
         case Op::ExpectLost:

@@ -99,6 +99,7 @@ private:
     std::unique_ptr<Machine> machine_;
     debug::Debugger debugger_;
     std::filesystem::path out_dir_;
+    std::optional<std::uint64_t> mark_;  // `mark`: the time `print time` also counts from
     debug::ToolRecorder recorder_;
     std::filesystem::path record_path_;
     Command record_command_;
