@@ -1,7 +1,8 @@
 // libFuzzer target: the emulator's inputs must be accepted or refused with an error, never crash
 // or hang. The first byte picks the input: a script, Intel HEX, an asm85 map, a raw snapshot
 // file, a snapshot with valid framing but fuzzed section contents (restored, then run), or an
-// image to disassemble.
+// image to disassemble, or a sequence of drive levels for the machine tool (both motor models,
+// both feedback sources), with its sensing, snapshot round trip and views.
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -15,6 +16,7 @@
 #include "emu/script/parser.h"
 #include "emu/board/snapshot_file.h"
 #include "emu/program/symbols.h"
+#include "peripherals/machine_tool.h"
 
 namespace {
 
@@ -48,11 +50,44 @@ void fuzz_snapshot_sections(const std::uint8_t* data, std::size_t size) {
     m.run_for(20000);  // whatever was accepted must run
 }
 
+// [model/feedback byte] then events of 3 bytes: T-states to wait (16 bits, so up to 21 ms), and
+// the six port A bits (X/Y/Z pulse and direction); every event also reads the transducers.
+void fuzz_machine_tool(const std::uint8_t* data, std::size_t size) {
+    if (size < 1) return;
+    using periph::MachineTool;
+    MachineTool m;
+    m.set_model(data[0] & 1 ? MachineTool::MotorModel::Physical : MachineTool::MotorModel::Ideal);
+    if (data[0] & 2) m.set_feedback(MachineTool::Feedback::Commanded);
+    std::uint64_t t = 0;
+    for (std::size_t i = 1; i + 3 <= size && i < 3 * 4096; i += 3) {
+        t += static_cast<std::uint64_t>(data[i] | data[i + 1] << 8);
+        const std::uint8_t bits = data[i + 2];
+        for (int a = 0; a < 3; ++a) {
+            const auto axis = static_cast<MachineTool::Axis>(a);
+            m.set_drive(axis, (bits >> (2 * a)) & 1, (bits >> (2 * a + 1)) & 1, t);
+            (void)m.sense(axis, t + 1);
+        }
+        if (bits & 0x40) m.set_model(bits & 0x80 ? MachineTool::MotorModel::Physical : MachineTool::MotorModel::Ideal);
+    }
+    m.advance(t + 3'072'000);  // a second more: everything settles or rings down
+    std::vector<std::uint8_t> saved;
+    m.save(saved);
+    MachineTool copy;
+    copy.load(saved);  // what it saved, it must load
+    std::vector<std::uint8_t> again;
+    copy.save(again);
+    if (again != saved) __builtin_trap();
+    for (int a = 0; a < 3; ++a) {
+        const auto axis = static_cast<MachineTool::Axis>(a);
+        (void)m.table_mm(axis), (void)m.lost_steps(axis), (void)m.transducer_count(axis);
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0 || size > 64 * 1024) return 0;
-    const unsigned mode = data[0] % 6;
+    const unsigned mode = data[0] % 7;
     ++data, --size;
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     switch (mode) {
@@ -92,6 +127,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             (void)format_source(r, o, "fuzz");
             break;
         }
+        case 6:
+            fuzz_machine_tool(data, size);
+            break;
     }
     return 0;
 }
