@@ -6,6 +6,7 @@
 #include <bit>
 
 #include "emu/board/machine.h"
+#include "emu/program/image_loader.h"
 #include "peripherals/part.h"
 
 namespace alp85::test {
@@ -133,6 +134,37 @@ TEST(Parts, TwoPartsWithOneTagAreRefused) {
     Board b;
     LedLatch other;
     EXPECT_THROW(b.m.attach(other), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace alp85::test
+
+namespace alp85::test {
+namespace {
+
+// The machine tool is a part like the others: stopped in the middle of a move (physical motors,
+// rotors ringing), saved, restored into another board and run on, it ends exactly where the
+// uninterrupted run does, bit for bit (scripts/machine/axes.asm drives each axis both ways).
+TEST(Parts, TheMachineToolMidMoveSurvivesSnapshotRestoreContinueBitForBit) {
+    const std::string program = std::string(ALP85_SOURCE_DIR) + "/scripts/machine/axes.asm";
+    Machine a;
+    load_image(a, program);
+    a.reset();
+    a.run_until(board::tstates_from_ms(41.3));  // X half-way out, between two steps
+    ASSERT_FALSE(a.tool().settled(periph::MachineTool::Axis::X));
+    const std::vector<std::uint8_t> snap = a.snapshot_bytes();
+    a.run_until(board::tstates_from_ms(300));
+
+    Machine b;
+    load_image(b, program);
+    b.restore_bytes(snap);
+    b.run_until(board::tstates_from_ms(300));
+    for (int i = 0; i < 3; ++i) {
+        const auto axis = static_cast<periph::MachineTool::Axis>(i);
+        EXPECT_EQ(b.tool().table_mm(axis), a.tool().table_mm(axis));  // exactly: the same doubles
+        EXPECT_EQ(b.tool().transducer_count(axis), a.tool().transducer_count(axis));
+    }
+    EXPECT_EQ(b.snapshot_bytes(), a.snapshot_bytes());
 }
 
 }  // namespace
