@@ -1,5 +1,6 @@
 #include "emu/bench/bench_thesis.h"
 
+#include <array>
 #include <cmath>
 #include <ctime>
 
@@ -66,7 +67,14 @@ ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model, std::uint
         }
     }
     Machine& m = session.machine();
-    r.finished = m.run_until(t0 + window, [&] { return m.display_text() == "  8itti "; }) == Machine::Stop::Condition;
+    // The display is decoded only when its segments change (the check runs after every batch).
+    std::array<std::uint8_t, 8> last = m.display();
+    r.finished = m.run_until(t0 + window, [&] {
+                     const auto now = m.display();
+                     if (now == last) return false;
+                     last = now;
+                     return m.display_text() == "  8itti ";
+                 }) == Machine::Stop::Condition;
     r.host_seconds = cpu_seconds() - h0;
     r.tstates = session.machine().now() - t0;
     const auto& tool = session.machine().tool();

@@ -3,6 +3,7 @@
 // alp85 bench board [--tstates N]: the board with idle peripherals against the bare core.
 // alp85 bench machine: three axes stepping at 400 steps/s on the board, physical, ideal, no tool.
 // alp85 bench thesis: the thesis firmware's 100 mm diagonal at 1000 mm/min, physical and ideal.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -49,10 +50,15 @@ double cpu_seconds(Fn&& fn) {
 int run_bench_board(std::uint64_t tstates) {
     BoardBench bench;
     std::uint64_t bare = 0, board = 0;
-    const double bare_s = cpu_seconds([&] { bare = bench.run_bare(tstates); });
-    const double board_s = cpu_seconds([&] { board = bench.run_board(tstates); });
+    // Alternating runs, the fastest of each kind: a busy host slows single runs unevenly.
+    double bare_s = 1e30, board_s = 1e30;
+    for (int i = 0; i < 3; ++i) {
+        bare_s = std::min(bare_s, cpu_seconds([&] { bare = bench.run_bare(tstates); }));
+        board_s = std::min(board_s, cpu_seconds([&] { board = bench.run_board(tstates); }));
+    }
     const double bare_rate = bare / bare_s, board_rate = board / board_s;
     std::printf("workload:     16-bit arithmetic through RAM, CRC-16, the thesis's DL delay (emu/bench/bench_board.asm)\n");
+    std::printf("(the fastest of three alternating runs of each)\n");
     std::printf("bare core:    %llu T-states in %.3f s CPU time: %.4g T-states/s\n",
                 static_cast<unsigned long long>(bare), bare_s, bare_rate);
     std::printf("board:        %llu T-states in %.3f s CPU time: %.4g T-states/s (8155, 8279 and machine tool idle)\n",
@@ -95,7 +101,12 @@ int run_bench_thesis() {
     std::uint64_t window = 120ull * 3'072'000;
     for (const auto& [model, name, target] :
          {std::tuple{periph::MachineTool::MotorModel::Ideal, "ideal", 1000}, std::tuple{periph::MachineTool::MotorModel::Physical, "physical", 200}}) {
-        const ThesisBenchRun r = run_thesis_bench(model, window);
+        // The fastest of five runs (the machine's figures are the same every time).
+        ThesisBenchRun r = run_thesis_bench(model, window);
+        for (int i = 1; i < 5 && r.error.empty(); ++i) {
+            const ThesisBenchRun again = run_thesis_bench(model, window);
+            if (again.host_seconds < r.host_seconds) r = again;
+        }
         if (!r.error.empty()) {
             std::fprintf(stderr, "alp85 bench thesis: the walk-through failed: %s\n", r.error.c_str());
             return 1;
@@ -128,7 +139,7 @@ void add_bench_command(CLI::App& app, int& status) {
     cpu->callback([args, &status] { status = run_bench_cpu(*args); });
 
     CLI::App* board = bench->add_subcommand("board", "The board with idle peripherals against the bare core, same workload");
-    board->add_option("--tstates", args->tstates, "T-states to run on each")->check(CLI::Range(1ULL, 1ULL << 50))->capture_default_str();
+    board->add_option("--tstates", args->tstates, "T-states to run on each, three times")->check(CLI::Range(1ULL, 1ULL << 50))->capture_default_str();
     board->callback([args, &status] { status = run_bench_board(args->tstates); });
 
     CLI::App* machine = bench->add_subcommand("machine", "Three axes at 400 steps/s on the board: physical, ideal and no tool");
