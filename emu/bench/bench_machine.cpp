@@ -1,19 +1,12 @@
 #include "emu/bench/bench_machine.h"
 
 #include <cmath>
-#include <ctime>
+
+#include "emu/util/stopwatch.h"
 
 #include "machine_bench_program_embed.h"
 
 namespace alp85 {
-namespace {
-double cpu_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
-}
-}  // namespace
-
 namespace {
 MachineBenchRun run_once(MachineBenchTool tool) {
     Machine::Options o;
@@ -28,10 +21,10 @@ MachineBenchRun run_once(MachineBenchTool tool) {
     // Run to the HLT (a little over 25 s).
     const std::uint64_t limit = kMachineBenchSteps * kMachineBenchStepTStates + 3'072'000;
     m.cpu().on_halt = [&] { m.cpu().request_stop(); };  // end the batch at the HLT itself
-    const double start = cpu_seconds();
+    const Stopwatch watch;
     m.run_until(limit, [&] { return m.cpu().halted(); });
     MachineBenchRun r;
-    r.host_seconds = cpu_seconds() - start;
+    r.host_seconds = watch.cpu_seconds();
     r.tstates = m.now();
     m.run_for(board::tstates_from_ms(200));  // (untimed) let the rotors settle before the check
     for (int a = 0; a < 3; ++a) {

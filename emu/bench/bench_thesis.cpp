@@ -2,7 +2,8 @@
 
 #include <array>
 #include <cmath>
-#include <ctime>
+
+#include "emu/util/stopwatch.h"
 
 #include "emu/script/parser.h"
 #include "emu/script/session.h"
@@ -10,11 +11,6 @@
 namespace alp85 {
 namespace {
 
-double cpu_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
-}
 
 // Appendix C up to the feedrate (docs/thesis.md: Z, X1, Y1, X2, Y2, then the feedrate).
 constexpr const char* kSetup = R"(firmware monitor
@@ -59,7 +55,7 @@ ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model, std::uint
         }
     }
     const std::uint64_t t0 = session.machine().now();
-    const double h0 = cpu_seconds();
+    const Stopwatch watch;
     for (const auto& c : motion) {
         if (const auto o = session.execute(c); o.status != script::Session::Status::Ok) {
             r.error = o.message;
@@ -75,7 +71,7 @@ ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model, std::uint
                      last = now;
                      return m.display_text() == "  8itti ";
                  }) == Machine::Stop::Condition;
-    r.host_seconds = cpu_seconds() - h0;
+    r.host_seconds = watch.cpu_seconds();
     r.tstates = session.machine().now() - t0;
     const auto& tool = session.machine().tool();
     r.x_steps = std::llround(tool.table_steps(periph::MachineTool::Axis::X));

@@ -1,12 +1,12 @@
 // The alp85 subcommands; each lives in its own file (cmd_*.cpp) and registers itself on the app.
 #pragma once
 
-#include <chrono>
-#include <ctime>
 #include <string>
 #include <string_view>
 
 #include <CLI/CLI.hpp>
+
+#include "emu/util/stopwatch.h"
 
 #include "peripherals/machine_tool.h"
 
@@ -36,15 +36,7 @@ CLI::Option* add_motor_option(CLI::App* cmd, std::string& motor);
 periph::MachineTool::MotorModel motor_model_of(const std::string& motor);
 
 // Host time of a run: wall clock and this process's CPU time, from construction.
-class Stopwatch {
-public:
-    double wall_seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_).count(); }
-    double cpu_seconds() const { return static_cast<double>(std::clock() - cpu_) / CLOCKS_PER_SEC; }
-
-private:
-    std::chrono::steady_clock::time_point wall_ = std::chrono::steady_clock::now();
-    std::clock_t cpu_ = std::clock();
-};
+using alp85::Stopwatch;  // emu/util/stopwatch.h
 
 // Each add_* registers a subcommand whose callback stores the process exit status in `status`.
 void add_cpm_command(CLI::App& app, int& status);

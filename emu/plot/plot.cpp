@@ -1,5 +1,6 @@
 // Line charts to SVG or PNG with cairo; see plot.h.
 #include "emu/plot/plot.h"
+#include "emu/util/text.h"
 
 #include <cairo-svg.h>
 #include <cairo.h>
@@ -114,19 +115,6 @@ void text(cairo_t* cr, const std::string& s, double x, double y, double ax, doub
     cairo_restore(cr);
 }
 
-std::string xml_escape(const std::string& s) {
-    std::string out;
-    for (char ch : s) {
-        switch (ch) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += ch;
-        }
-    }
-    return out;
-}
 
 // cairo draws text as glyph outlines; an SVG <title> element carries the title as text (for
 // readers, search and tests).

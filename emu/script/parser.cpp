@@ -324,14 +324,23 @@ private:
         optional_compare(c);
         return integer(c.integer, "a number of steps");
     }
+    // One of two words (given in upper case): c.real = 0 for the first, 1 for the second.
+    bool one_of(Command& c, std::string_view first, std::string_view second, const char* what) {
+        for (int i = 0; i < 2; ++i) {
+            if (at_word(i == 0 ? first : second)) {
+                c.real = i;
+                ++pos_;
+                return true;
+            }
+        }
+        std::string both = fmt::format("{} or {}", first, second);
+        std::transform(both.begin(), both.end(), both.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+        if (more()) return fail(peek(), fmt::format("unknown {} '{}' ({})", what, peek().text, both)), false;
+        return missing(fmt::format("a {} ({})", what, both));
+    }
     bool motor(Command& c) {
         c.op = Op::Motor;
-        if (at_word("IDEAL")) c.real = 0;
-        else if (at_word("PHYSICAL")) c.real = 1;
-        else return more() ? (fail(peek(), fmt::format("unknown motor model '{}' (ideal or physical)", peek().text)), false)
-                           : missing("a motor model (ideal or physical)");
-        ++pos_;
-        return true;
+        return one_of(c, "IDEAL", "PHYSICAL", "motor model");
     }
     bool mark(Command& c) {
         c.op = Op::Mark;
@@ -339,12 +348,7 @@ private:
     }
     bool feedback(Command& c) {
         c.op = Op::Feedback;
-        if (at_word("SCALE")) c.real = 0;
-        else if (at_word("COMMANDED")) c.real = 1;
-        else return more() ? (fail(peek(), fmt::format("unknown feedback '{}' (scale or commanded)", peek().text)), false)
-                           : missing("what the transducers read (scale or commanded)");
-        ++pos_;
-        return true;
+        return one_of(c, "SCALE", "COMMANDED", "feedback");
     }
     bool record(Command& c) {
         if (at_word("STOP")) {

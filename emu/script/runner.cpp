@@ -7,26 +7,11 @@
 
 #include <fmt/format.h>
 
+#include "emu/util/text.h"
+
 namespace alp85::script {
 namespace {
 
-std::string xml_escape(std::string_view s) {
-    std::string out;
-    for (char ch : s) {
-        switch (ch) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&apos;"; break;
-            default:
-                // XML 1.0 allows no control characters other than tab, newline and return.
-                if (static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\n' && ch != '\r') out += '?';
-                else out += ch;
-        }
-    }
-    return out;
-}
 
 SessionOptions session_options(const std::filesystem::path& file, const RunnerOptions& o) {
     SessionOptions s;

@@ -23,4 +23,24 @@ inline std::string lower_extension(const std::filesystem::path& p) {
     return e;
 }
 
+// Text for XML (JUnit reports, SVG titles): the five entities escaped; control characters XML 1.0
+// does not allow become '?'.
+inline std::string xml_escape(std::string_view s) {
+    std::string out;
+    for (char ch : s) {
+        switch (ch) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            default:
+                // XML 1.0 allows no control characters other than tab, newline and return.
+                if (static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\n' && ch != '\r') out += '?';
+                else out += ch;
+        }
+    }
+    return out;
+}
+
 }  // namespace alp85
