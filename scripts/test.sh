@@ -21,5 +21,7 @@ run_suite build -DCMAKE_BUILD_TYPE=Release
 
 if [ $sanitize -eq 1 ]; then
   echo "== ASan + UBSan build and tests (build-asan/)"
+  # fontconfig's process-lifetime caches are not leaks of ours (tests/lsan.supp)
+  export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
   run_suite build-asan -DCMAKE_BUILD_TYPE=Release -DALP85_SANITIZE=ON -DALP85_BENCH=OFF
 fi
