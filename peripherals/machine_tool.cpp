@@ -1,6 +1,7 @@
 // The machine tool: three axes of sequencer, motor, table and transducer; see machine_tool.h.
 #include "peripherals/machine_tool.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -40,6 +41,13 @@ void MachineTool::init_axis(int a) {
     st = AxisState{};
     ax_[a].motor.init_at_rest(st.motor, 0.0, Sequencer::phases(st.sequencer));
     ax_[a].transducer.init(st.transducer, 0.0);
+}
+
+// The rotor angle of a whole step count, kept inside the end stops: a step count at a stop,
+// multiplied out, can land one rounding below the stop's own angle (found by input_fuzz).
+double MachineTool::theta_of_steps(int a, std::int64_t steps) const {
+    const StepperMotor::Load& load = ax_[a].motor.load();
+    return std::clamp(static_cast<double>(steps) * ax_[a].motor.step_angle(), load.theta_lo, load.theta_hi);
 }
 
 double MachineTool::feedback_mm(int a, const StepperMotor::State& m) const {
@@ -99,7 +107,7 @@ void MachineTool::set_model(MotorModel m) {
     s_.model = m;
     for (int a = 0; a < kAxes; ++a) {
         AxisState& st = s_.axes[a];
-        ax_[a].motor.init_at_rest(st.motor, static_cast<double>(st.ideal_steps) * ax_[a].motor.step_angle(),
+        ax_[a].motor.init_at_rest(st.motor, theta_of_steps(a, st.ideal_steps),
                                   Sequencer::phases(st.sequencer));
         st.grid_t = s_.now;
         ax_[a].transducer.update(st.transducer, feedback_mm(a, st.motor));
@@ -129,7 +137,7 @@ void MachineTool::set_drive(Axis axis, bool pulse, bool direction, std::uint64_t
             if (next == x.lo_steps) at = -1;
         }
         st.motor.phases = ph;
-        st.motor.theta = static_cast<double>(st.ideal_steps) * ax_[a].motor.step_angle();
+        st.motor.theta = theta_of_steps(a, st.ideal_steps);
         ax_[a].transducer.update(st.transducer, feedback_mm(a, st.motor));
         if (at != st.table.at_stop && table.update_stop(st.table, at, t) && on_end_stop_)
             on_end_stop_(axis, at > 0, t);

@@ -163,6 +163,7 @@ private:
     StepperMotor::State motor_view(int a) const;
     double position_mm(int a, const StepperMotor::State& m) const;
     double feedback_mm(int a, const StepperMotor::State& m) const;
+    double theta_of_steps(int a, std::int64_t steps) const;
     void init_axis(int a);
 
     Params p_;

@@ -206,3 +206,30 @@ TEST(MachineTool, IsAPartWithNoEvents) {
 
 }  // namespace
 }  // namespace alp85::test
+
+namespace alp85::test {
+namespace {
+
+// Found by input_fuzz: an ideal table driven onto its low stop (5 mm = 100 steps below the
+// power-on position), then switched to the physical model, saved a rotor angle one rounding
+// beyond the stop's, which its own load refused.
+TEST(MachineToolIdeal, ARotorLeftAtAStopBySwitchingModelsSavesAndLoads) {
+    MachineTool m;
+    m.set_model(MachineTool::MotorModel::Ideal);
+    std::uint64_t t = 1000;
+    for (int k = 0; k < 110; ++k, t += 12'000) {
+        m.set_drive(MachineTool::Axis::X, true, false, t);
+        m.set_drive(MachineTool::Axis::X, false, false, t + 6'000);
+    }
+    ASSERT_EQ(m.table_steps(MachineTool::Axis::X), -100.0);
+    m.set_model(MachineTool::MotorModel::Physical);
+    m.advance(t + 3'072'000);
+    std::vector<std::uint8_t> saved;
+    m.save(saved);
+    MachineTool copy;
+    EXPECT_NO_THROW(copy.load(saved));
+    EXPECT_NEAR(copy.table_mm(MachineTool::Axis::X), -5.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace alp85::test
