@@ -14,7 +14,7 @@
 
 namespace alp85::board {
 
-enum class Memory : std::uint8_t { MonitorEprom, UserEprom, Ram, Ram8155 };
+enum class Memory : std::uint8_t { MonitorEprom, UserEprom, Ram, Ram8155, ExpansionEprom };
 enum class MemoryKind : std::uint8_t { Rom, Ram };
 
 struct MemoryRegion {
@@ -31,6 +31,24 @@ inline constexpr std::array<MemoryRegion, 4> kMemoryMap{{
     {Memory::UserEprom, 0x0800, 0x0800, MemoryKind::Rom, "user", "2 KB user EPROM (2716): the thesis firmware, ORG 0800H"},
     {Memory::Ram, 0x1000, 0x1000, MemoryKind::Ram, "ram", "4 KB static RAM (firmware variables at 1B00H)"},
     {Memory::Ram8155, 0x2000, 0x0100, MemoryKind::Ram, "ram8155", "8155 RAM, IO/M low (firmware stack below 20B0H)"},
+}};
+
+// The EPROM expansion of thesis 5.3 ("EPROM memory region of the ALP 85 microcomputer can be
+// expanded with ease to store this master program"): an OPTION, off by default, so the machine
+// as built stays the thesis machine. Where: the map above fills the address space in 4 KB blocks
+// (0xxxH the two 2716s, 1xxxH the RAM, 2xxxH the 8155), so the next free block, 3000H-3FFFH,
+// is where a 2732 (4 KB) on the next decoder output would sit. It holds the master program
+// (3000H-37FFH, firmware/master) and its path tables (3800H-3FFFH, alp85 gcode): docs/contours.md.
+inline constexpr MemoryRegion kExpansionEprom{Memory::ExpansionEprom, 0x3000, 0x1000, MemoryKind::Rom, "expansion",
+                                              "4 KB expansion EPROM (2732, optional): master program and path tables"};
+
+// Board options a script or front end may switch on, by name (script `option NAME on|off`).
+struct BoardOption {
+    std::string_view name;
+    std::string_view what;
+};
+inline constexpr std::array<BoardOption, 1> kBoardOptions{{
+    {"expansion", "the 4 KB expansion EPROM at 3000H-3FFFH (thesis 5.3), off on the machine as built"},
 }};
 
 enum class Device : std::uint8_t { Kdc8279, Rio8155 };

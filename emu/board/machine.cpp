@@ -89,7 +89,10 @@ Machine::Machine(Options options)
     // are unpredictable, and a deterministic machine needs some fixed value).
     monitor_.fill(0xFF);
     user_.fill(0xFF);
+    expansion_.fill(0xFF);
+    map_.assign(board::kMemoryMap.begin(), board::kMemoryMap.end());
     wire();
+    set_expansion_eprom(options.expansion_eprom);
     reset();
 }
 
@@ -240,15 +243,28 @@ std::span<std::uint8_t> Machine::storage(board::Memory id) {
         case board::Memory::UserEprom: return user_;
         case board::Memory::Ram: return ram_;
         case board::Memory::Ram8155: return rio_.ram();
+        case board::Memory::ExpansionEprom: return expansion_;
     }
     return {};
 }
 
+void Machine::set_expansion_eprom(bool fitted) {
+    const board::MemoryRegion& r = board::kExpansionEprom;
+    options_.expansion_eprom = fitted;
+    std::erase_if(map_, [](const board::MemoryRegion& m) { return m.id == board::Memory::ExpansionEprom; });
+    if (fitted) {
+        map_.push_back(r);
+        bus_.map_rom(r.base, r.size, expansion_.data());
+    } else {
+        bus_.unmap(r.base, r.size);
+    }
+}
+
 namespace {
-void check_on_board(std::uint16_t address, std::size_t size) {
+void check_on_board(const std::vector<board::MemoryRegion>& map, std::uint16_t address, std::size_t size) {
     for (std::size_t i = 0; i < size; ++i) {
         const std::uint32_t a = address + static_cast<std::uint32_t>(i);
-        const bool mapped = a <= 0xFFFF && std::any_of(board::kMemoryMap.begin(), board::kMemoryMap.end(),
+        const bool mapped = a <= 0xFFFF && std::any_of(map.begin(), map.end(),
                                                        [a](const board::MemoryRegion& r) {
                                                            return a >= r.base && a < r.base + r.size;
                                                        });
@@ -264,13 +280,13 @@ void Machine::load(std::uint16_t address, std::span<const std::uint8_t> bytes) {
 
 void Machine::load(const std::vector<ImageSegment>& image) {
     // Check the whole image first, so a failed load changes nothing.
-    for (const ImageSegment& s : image) check_on_board(s.address, s.bytes.size());
+    for (const ImageSegment& s : image) check_on_board(map_, s.address, s.bytes.size());
     for (const ImageSegment& s : image)
         for (std::size_t i = 0; i < s.bytes.size(); ++i) poke(static_cast<std::uint16_t>(s.address + i), s.bytes[i]);
 }
 
 bool Machine::poke(std::uint16_t address, std::uint8_t value) {
-    for (const auto& r : board::kMemoryMap) {
+    for (const auto& r : map_) {
         if (address >= r.base && address < r.base + r.size) {
             storage(r.id)[address - r.base] = value;
             return true;

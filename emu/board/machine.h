@@ -37,6 +37,7 @@ public:
         Variant cpu = Variant::I8085;
         periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
         bool machine_tool = true;  // false: the board alone, port B undriven (benchmarks, tests)
+        bool expansion_eprom = false;  // board::kExpansionEprom mapped (thesis 5.3's expansion)
     };
 
     enum class Stop : std::uint8_t {
@@ -63,6 +64,11 @@ public:
     std::uint8_t peek(std::uint16_t address) const { return bus_.peek(address); }
     bool poke(std::uint16_t address, std::uint8_t value);
     std::span<std::uint8_t> storage(board::Memory id);
+    // The memory regions on this board: board::kMemoryMap, plus the expansion EPROM when fitted.
+    const std::vector<board::MemoryRegion>& memory_map() const { return map_; }
+    // Fits or removes the expansion EPROM (its contents are kept while it is out).
+    void set_expansion_eprom(bool fitted);
+    bool expansion_eprom() const { return options_.expansion_eprom; }
 
     // ---- control -----------------------------------------------------------------------------
     // RESET IN: the CPU and every part reset now (RESET OUT); memory and time are kept.
@@ -167,6 +173,8 @@ private:
     std::array<std::uint8_t, 0x0800> monitor_{};
     std::array<std::uint8_t, 0x0800> user_{};
     std::array<std::uint8_t, 0x1000> ram_{};
+    std::array<std::uint8_t, board::kExpansionEprom.size> expansion_{};
+    std::vector<board::MemoryRegion> map_;
     Bus bus_;
     I8085 cpu_;
     periph::I8155 rio_;

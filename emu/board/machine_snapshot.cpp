@@ -87,6 +87,7 @@ std::vector<std::uint8_t> Machine::snapshot_bytes() const {
     sections.push_back(memory_section("MON ", monitor_));
     sections.push_back(memory_section("USER", user_));
     sections.push_back(memory_section("RAM ", ram_));
+    if (options_.expansion_eprom) sections.push_back(memory_section("EXP ", expansion_));
     for (const periph::Part* p : parts_) {
         Section s{std::string(p->tag()), {}};
         p->save(s.data);
@@ -103,6 +104,7 @@ void Machine::restore_sections(const std::vector<std::uint8_t>& bytes) {
                             " machine, this one is an " + (options_.cpu == Variant::I8080 ? "8080" : "8085"));
     for (const Section& s : sections) {
         const bool known = s.tag == "MACH" || s.tag == "CPU " || s.tag == "MON " || s.tag == "USER" || s.tag == "RAM " ||
+                           (s.tag == "EXP " && options_.expansion_eprom) ||
                            std::any_of(parts_.begin(), parts_.end(), [&](const periph::Part* p) { return p->tag() == s.tag; });
         if (!known) throw SnapshotError("snapshot has a part this machine lacks ('" + s.tag + "')");
     }
@@ -110,6 +112,7 @@ void Machine::restore_sections(const std::vector<std::uint8_t>& bytes) {
     load_memory(snapshot::find(sections, "MON "), monitor_, "monitor EPROM");
     load_memory(snapshot::find(sections, "USER"), user_, "user EPROM");
     load_memory(snapshot::find(sections, "RAM "), ram_, "RAM");
+    if (options_.expansion_eprom) load_memory(snapshot::find(sections, "EXP "), expansion_, "expansion EPROM");
     for (periph::Part* p : parts_) p->load(snapshot::find(sections, p->tag()).data);
     // The machine keeps its parts caught up with the CPU (sync_parts after every run), so a part
     // at another time is a damaged file; a timer far behind would also take ages to catch up.

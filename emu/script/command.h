@@ -47,6 +47,7 @@ enum class Op : std::uint8_t {
     Motor, Feedback, PrintAxes, PrintTime, Mark, ExpectAxis, ExpectCount, ExpectLost, RunUntilAxis, Record, RecordStop, Plot,
     SetMem, SetReg,
     Save, Restore,
+    Option,
     PrintDisplay, Print,
 };
 

@@ -48,7 +48,7 @@ public:
             {"PRINT", &LineParser::print},     {"FIRMWARE", &LineParser::firmware},
             {"MOTOR", &LineParser::motor},     {"RECORD", &LineParser::record},
             {"PLOT", &LineParser::plot},       {"FEEDBACK", &LineParser::feedback},
-            {"MARK", &LineParser::mark},
+            {"MARK", &LineParser::mark},       {"OPTION", &LineParser::option},
         };
         const auto it = verbs.find(verb);
         if (it == verbs.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
@@ -341,6 +341,19 @@ private:
     bool motor(Command& c) {
         c.op = Op::Motor;
         return one_of(c, "IDEAL", "PHYSICAL", "motor model");
+    }
+    // option NAME on|off: a board option of board::kBoardOptions (c.name, c.real 1 = on).
+    bool option(Command& c) {
+        c.op = Op::Option;
+        if (!more()) return missing("a board option (expansion)");
+        const Token& t = peek();
+        const auto known = std::find_if(board::kBoardOptions.begin(), board::kBoardOptions.end(),
+                                        [&](const board::BoardOption& o) { return to_upper(o.name) == to_upper(t.text); });
+        if (t.quoted || known == board::kBoardOptions.end())
+            return fail(t, fmt::format("unknown board option '{}' (expansion)", t.text)), false;
+        c.name = std::string(known->name);
+        ++pos_;
+        return one_of(c, "OFF", "ON", "state");
     }
     bool mark(Command& c) {
         c.op = Op::Mark;

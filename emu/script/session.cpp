@@ -655,6 +655,9 @@ Session::Outcome Session::execute(const Command& c) {
                 return fail(c, x.what());
             }
             return {};
+        case Op::Option:
+            m.set_expansion_eprom(c.real == 1);  // the one board option (board::kBoardOptions)
+            return {};
         case Op::Motor:
         case Op::Feedback:
         case Op::PrintAxes:

@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "board_programs.h"
+#include "emu/board/snapshot_file.h"
 
 namespace alp85::test {
 namespace {
@@ -197,6 +198,53 @@ TEST(BoardTime, OneConversionAndOneKeyPress) {
     // 60 ms = 184320 T-states, ended on a whole instruction (a JMP: at most 10 T-states later).
     EXPECT_GE(m.now() - t0, 184'320u);
     EXPECT_LT(m.now() - t0, 184'320u + 10);
+}
+
+}  // namespace
+}  // namespace alp85::test
+
+namespace alp85::test {
+namespace {
+
+// Thesis 5.3's EPROM expansion (board::kExpansionEprom): absent on the machine as built, a 4 KB
+// ROM at 3000H-3FFFH when the option is on, and carried by snapshots only then.
+TEST(BoardOptions, ExpansionEpromIsOffByDefaultAndA4KRomWhenFitted) {
+    Machine built;
+    EXPECT_FALSE(built.expansion_eprom());
+    EXPECT_EQ(built.memory_map().size(), board::kMemoryMap.size());
+    const std::uint8_t code[] = {0x3E, 0x42};
+    EXPECT_THROW(built.load(0x3000, code), std::out_of_range);  // no memory there
+    EXPECT_EQ(built.peek(0x3000), 0xFF);
+
+    Machine m(Machine::Options{.expansion_eprom = true});
+    ASSERT_TRUE(m.expansion_eprom());
+    m.load(0x3000, code);
+    m.load(0x3FFE, code);
+    EXPECT_EQ(m.peek(0x3000), 0x3E);
+    EXPECT_EQ(m.peek(0x3FFF), 0x42);
+    EXPECT_EQ(m.peek(0x4000), 0xFF);  // 4 KB exactly
+    const std::uint8_t one[] = {0};
+    EXPECT_THROW(m.load(0x4000, one), std::out_of_range);
+    // A ROM: a CPU write is ignored. MVI A,55H / STA 3001H / HLT from RAM.
+    const std::uint8_t prog[] = {0x3E, 0x55, 0x32, 0x01, 0x30, 0x76};
+    m.load(0x1000, prog);
+    m.cpu().regs().pc = 0x1000;
+    m.run_for(1000, [&] { return m.cpu().halted(); });
+    EXPECT_EQ(m.peek(0x3001), 0x42);
+    EXPECT_EQ(m.bus().rom_writes_ignored(), 1u);
+
+    // Snapshots carry it; a machine without it refuses such a snapshot.
+    const auto bytes = m.snapshot_bytes();
+    Machine other(Machine::Options{.expansion_eprom = true});
+    other.restore_bytes(bytes);
+    EXPECT_EQ(other.peek(0x3FFE), 0x3E);
+    EXPECT_THROW(built.restore_bytes(bytes), snapshot::SnapshotError);
+
+    // Removing it unmaps it; fitting it again brings back what it held.
+    m.set_expansion_eprom(false);
+    EXPECT_EQ(m.peek(0x3000), 0xFF);
+    m.set_expansion_eprom(true);
+    EXPECT_EQ(m.peek(0x3000), 0x3E);
 }
 
 }  // namespace
