@@ -1,0 +1,74 @@
+// alp85 gcode FILE.nc... -o PATH.hex: G-code (the subset of docs/contours.md) to the master
+// program's path table in the expansion EPROM (3800H). Each file is one stored path, in order.
+// Exit status: 0 written, 1 a file refused (nothing written), 2 a usage error.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "emu/cli/commands.h"
+#include "emu/gcode/gcode.h"
+#include "emu/gcode/path_table.h"
+#include "emu/util/atomic_file.h"
+
+namespace alp85::cli {
+
+void add_gcode_command(CLI::App& app, int& status) {
+    struct Args {
+        std::vector<std::string> files;
+        std::string out;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("gcode", "G-code to the master program's path table (docs/contours.md)");
+    cmd->add_option("files", args->files, "G-code files (.nc); each one is a path the keypad chooses (1, 2, ...)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    cmd->add_option("-o,--output", args->out, "The path table as Intel HEX (load it with the master program)")->required();
+    cmd->footer(
+        "Example:\n"
+        "  alp85 gcode scripts/master/circle.nc -o circle.hex\n"
+        "Exit status: 0 the table was written, 1 a file was refused (its errors are shown as\n"
+        "file:line:col: error: ...; nothing is written), 2 a usage error.");
+    cmd->callback([args, &status] {
+        std::vector<std::vector<gcode::Entry>> paths;
+        bool failed = false;
+        for (const std::string& f : args->files) {
+            std::ifstream in(f, std::ios::binary);
+            std::stringstream text;
+            text << in.rdbuf();
+            gcode::Parsed p = gcode::parse(text.str());
+            if (p.error) {
+                std::cerr << fmt::format("{}:{}:{}: error: {}\n", f, p.error->line, p.error->column, p.error->message);
+                failed = true;
+                continue;
+            }
+            paths.push_back(std::move(p.entries));
+        }
+        std::vector<std::uint8_t> bytes;
+        if (!failed) {
+            bytes = gcode::table_bytes(paths);
+            if (bytes.size() > gcode::kTableSize) {
+                std::cerr << fmt::format("alp85 gcode: the table needs {} bytes; the EPROM holds {} ({} entries of {})\n",
+                                         bytes.size(), gcode::kTableSize, gcode::kTableSize / gcode::kEntrySize,
+                                         gcode::kEntrySize);
+                failed = true;
+            }
+        }
+        if (failed) {
+            std::cerr << fmt::format("alp85 gcode: nothing written to {}\n", args->out);
+            status = 1;
+            return;
+        }
+        try {
+            write_atomic(args->out, gcode::intel_hex(gcode::kTableBase, bytes));
+        } catch (const std::exception& e) {
+            std::cerr << fmt::format("alp85 gcode: {}\n", e.what());
+            status = 1;
+        }
+    });
+}
+
+}  // namespace alp85::cli
