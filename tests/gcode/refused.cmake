@@ -4,7 +4,7 @@ execute_process(COMMAND ${ALP85} gcode ${SRC}/bad_feed.nc -o ${OUT} RESULT_VARIA
 if(NOT rc EQUAL 1)
   message(FATAL_ERROR "status ${rc}, expected 1")
 endif()
-if(NOT err MATCHES "bad_feed.nc:3:11: error: feedrate 2000 mm/min is outside")
+if(NOT err MATCHES "bad_feed.nc:3:9: error: feedrate 2000 mm/min is outside")
   message(FATAL_ERROR "unexpected report: ${err}")
 endif()
 if(EXISTS ${OUT})
