@@ -222,6 +222,13 @@ NEXTS:  LHLD    SEG
         INX     H
         SHLD    SEG
 SHOW:   PUSH    B
+        MVI     B,80H                   ; "P=n" again (ZMOVE clears the display)
+        MVI     A,73H
+        CALL    AUS
+        MVI     A,48H
+        CALL    AUS
+        LDA     PBASE
+        CALL    ANWAUS
         MVI     B,08H                   ; digits 4-7: the segment number, hex
         LDA     SEG+1
         RRC

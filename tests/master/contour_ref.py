@@ -1,0 +1,106 @@
+"""Reference model of firmware/master/master.asm, worked from Watanabe and Iwai (IECI '81) and
+the path-table layout of docs/contours.md, not from the emulator: it predicts every segment the
+master hands to the thesis line routine, and the paper's bounds for each move.
+
+  eq. 8-11: the centre angle of a segment is 2^-C_R rad; X*, Y* are 16.16 (dX' = 2^-16 step);
+            each shift adds half its last place first (the paper's 2^(C_R+1) dX' ... terms),
+            rsh(v, n) = (v + 2^(n-1)) >> n, floor shifts as the 8085's RAR with the sign in CY.
+  eq. 9:    eps_A = 2^(-2 C_R - 4) R; the first point is pushed out by eps_A: S + rsh(S, 2 C_R + 4).
+  eq. 7:    eps_L,max = C_x (2^(2M - 3B + 2 + C_L) + 2^(-C_L - 1) + 2^-1) dX, here B = 16 (the
+            slope is 16.16), C_L = 0 (the thesis draws a line in one piece), M = bits of the longest
+            projection.
+"""
+import math
+
+TABLE = 0x3800
+ENTRY = 16
+
+
+def read_hex(path):
+    mem = {}
+    for line in open(path):
+        line = line.strip()
+        if not line.startswith(":"):
+            continue
+        b = bytes.fromhex(line[1:])
+        n, addr, kind = b[0], (b[1] << 8) | b[2], b[3]
+        if kind == 0:
+            for i in range(n):
+                mem[addr + i] = b[4 + i]
+    return mem
+
+
+def paths(mem):
+    """The table's paths: lists of entries (dicts), as the master reads them."""
+    out, cur, a = [], [], TABLE
+    while a in mem:
+        e = [mem.get(a + i, 0xFF) for i in range(ENTRY)]
+        w = lambda k: e[k] | (e[k + 1] << 8)
+        if e[0] == 0:
+            out.append(cur)
+            cur = []
+        else:
+            cur.append(dict(kind=e[0], cr=e[1], feed=w(2), x=w(4), y=w(6), z=w(8), cx=w(10), cy=w(12), n=w(14)))
+        a += ENTRY
+    return out
+
+
+def rsh(v, n):
+    return ((v >> (n - 1)) + 1) >> 1
+
+
+def step3(p, q, sigma, k):
+    t = rsh(q, k + 2)
+    t = p + sigma * t
+    t = rsh(t, k + 1)
+    t = q - sigma * t
+    t = rsh(t, k)
+    return p + sigma * t
+
+
+def rnd(v):
+    return (v + 0x8000) >> 16
+
+
+def handoffs(path):
+    """Every hand-over in order: ('Z', z) or ('XY', x2, y2, entry index); the table starts at 0, 0, 0."""
+    x = y = z = 0
+    out = []
+    for i, e in enumerate(path):
+        if e["z"] != z:
+            z = e["z"]
+            out.append(("Z", z, None, i))
+        pts = []
+        if e["kind"] in (3, 4):
+            k, s = e["cr"], (1 if e["kind"] == 4 else -1)
+            ax = (x - e["cx"]) << 16
+            ay = (y - e["cy"]) << 16
+            ax += rsh(ax, 2 * k + 4)
+            ay += rsh(ay, 2 * k + 4)
+            for _ in range(e["n"]):
+                ax, ay = step3(ax, ay, -s, k), step3(ay, ax, s, k)
+                pts.append((e["cx"] + rnd(ax), e["cy"] + rnd(ay)))
+        pts.append((e["x"], e["y"]))
+        for px, py in pts:
+            if (px, py) != (x, y):
+                out.append(("XY", px, py, i))
+                x, y = px, py
+    return out
+
+
+def radius(e, start):
+    return math.hypot(start[0] - e["cx"], start[1] - e["cy"])
+
+
+def eps_a(cr, r):
+    return r * 2.0 ** (-2 * cr - 4)
+
+
+def eps_l(dx, dy):
+    """eq. 7 with B = 16, C_L = 0: C_x (2^(2M-46) + 1/2 + 1/2) steps."""
+    big = max(abs(dx), abs(dy))
+    if big == 0:
+        return 0.0
+    m = big.bit_length()
+    cx = big / math.hypot(dx, dy)
+    return cx * (2.0 ** (2 * m - 46) + 0.5 + 0.5)
