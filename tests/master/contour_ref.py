@@ -88,6 +88,46 @@ def handoffs(path):
     return out
 
 
+def polygon(e, start):
+    """The arc's unrounded vertices (steps, from the 16.16 values), first-point correction included,
+    then the exact end point: the polygon eq. 9 speaks of."""
+    k, s = e["cr"], (1 if e["kind"] == 4 else -1)
+    ax = (start[0] - e["cx"]) << 16
+    ay = (start[1] - e["cy"]) << 16
+    ax += rsh(ax, 2 * k + 4)
+    ay += rsh(ay, 2 * k + 4)
+    pts = [(float(start[0]), float(start[1]))]
+    for _ in range(e["n"]):
+        ax, ay = step3(ax, ay, -s, k), step3(ay, ax, s, k)
+        pts.append((e["cx"] + ax / 65536.0, e["cy"] + ay / 65536.0))
+    pts.append((float(e["x"]), float(e["y"])))
+    return pts
+
+
+def polygon_error(e, start, r):
+    """Largest distance of that polygon from the circle (at vertices and chord middles): over the
+    inner chords (between corrected vertices: eq. 9 says eps_A), and over the first and last chord,
+    which join a corrected vertex (R + eps_A) to a point on the circle (about 1.5 eps_A)."""
+    c = (e["cx"], e["cy"])
+    pts = polygon(e, start)
+    off = lambda p: abs(math.hypot(p[0] - c[0], p[1] - c[1]) - r)
+    chords = list(zip(pts, pts[1:]))
+    worst = [0.0, 0.0]
+    for i, (a, b) in enumerate(chords):
+        end = i == 0 or i == len(chords) - 1
+        mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+        worst[end] = max(worst[end], off(mid), off(b) if i < len(chords) - 1 else 0.0)
+    return worst[0], worst[1]
+
+
+def staircase(dx, dy):
+    """The thesis line rule's own bound (docs/contours.md): it steps one axis at a time and its YID
+    is within one step of the line, so a point stands less than |slope| + 1 steps off in Y:
+    (cos a + sin a) steps from the line, at most sqrt 2."""
+    h = math.hypot(dx, dy)
+    return 0.0 if h == 0 else (abs(dx) + abs(dy)) / h
+
+
 def radius(e, start):
     return math.hypot(start[0] - e["cx"], start[1] - e["cy"])
 
