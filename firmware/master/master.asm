@@ -318,7 +318,7 @@ ALOOP:  LHLD    NCNT
         LXI     D,CYV
         CALL    ROUND
         SHLD    Y2
-        CALL    SEGMT
+AHAND:  CALL    SEGMT                   ; ALOOP to here: one segment's arithmetic (docs/contours.md)
         JMP     ALOOP
 ALAST:  CALL    ENDXY                   ; the last, shorter segment ends on the end point
         CALL    SEGMT

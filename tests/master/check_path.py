@@ -61,12 +61,12 @@ def dist(p, m):
     return min(math.dist(p, m["p0"]), math.dist(p, m["p1"]))
 
 
-def main():
-    path = ref.paths(ref.read_hex(sys.argv[1]))[0]
+def worst_per_move(path, csv_path):
+    """The largest distance per move, and how many moves the recording completed."""
     ms = moves(path)
     worst = [0.0] * len(ms)
     i, left, last = 0, False, None
-    with open(sys.argv[2]) as f:
+    with open(csv_path) as f:
         for row in csv.DictReader(f):
             p = (int(row["x_count"]), int(row["y_count"]))
             if p == last or i >= len(ms):
@@ -77,6 +77,13 @@ def main():
                 left = True
             elif left:
                 i, left = i + 1, False
+    return worst, i
+
+
+def main():
+    path = ref.paths(ref.read_hex(sys.argv[1]))[0]
+    ms = moves(path)
+    worst, i = worst_per_move(path, sys.argv[2])
     bad = 0
     for k, m in enumerate(ms):
         ok = worst[k] <= m["bound"] + 1e-9
