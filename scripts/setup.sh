@@ -10,6 +10,8 @@ packages=(
   clang libclang-rt-14-dev
   zlib1g-dev python3
   libcairo2-dev
+  libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri
+  xvfb xauth
 )
 
 missing=()
