@@ -1,0 +1,54 @@
+// alp85 gui [FIRMWARE...]: the ALP 85 and its machine tool in a window (emu/gui). Exit status: 0,
+// 1 the script (--script) or --expect-display failed, 2 a usage error or no display.
+#include <memory>
+
+#include "emu/cli/commands.h"
+#include "emu/gui/app.h"
+#include "emu/gui/controls.h"
+
+namespace alp85::cli {
+
+void add_gui_command(CLI::App& app, int& status) {
+    struct Args {
+        gui::GuiOptions o;
+        std::string motor = "physical";
+        std::string speed = "1";
+        long frames = 0;
+        double seconds = 0;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("gui", "The ALP 85 and its machine tool in a window, run from the keypad");
+    cmd->add_option("firmware", args->o.firmware,
+                    "Built-in firmware (thesis, thesis-fixed, monitor) or .asm/.hex files, loaded after the monitor "
+                    "(default: thesis-fixed)");
+    cmd->add_option("--script", args->o.script, "Run this script (docs/scripting.md) in the window first");
+    cmd->add_option("--click", args->o.clicks,
+                    "Then click these keypad buttons (R, 0-F, EXEC, NEXT, ..., RESET, VECT) with synthesized mouse "
+                    "events (a test hook)");
+    cmd->add_option("--screenshot", args->o.screenshot,
+                    "Save the window as PNG when the script and the clicks are done, then quit");
+    cmd->add_option("--expect-display", args->o.expect_display, "At exit the display must read this (else status 1)");
+    cmd->add_option("--frames", args->frames, "Quit after this many frames");
+    cmd->add_option("--seconds", args->seconds, "Quit after this many seconds");
+    cmd->add_flag("--stats", args->o.stats, "Print frames per second and the process's CPU use at exit");
+    cmd->add_option("--speed", args->speed, "0.1, 1 (real time), 10, 100 or max")
+        ->check(CLI::IsMember({"0.1", "1", "10", "100", "max"}))
+        ->capture_default_str();
+    add_motor_option(cmd, args->motor);
+    cmd->add_option("--out-dir", args->o.out_dir, "Folder for the files the script writes (as alp85 script --out-dir)");
+    cmd->footer(
+        "Examples:\n"
+        "  alp85 gui                       the monitor and thesis-fixed; type R 7 0800 EXEC\n"
+        "  alp85 gui --script scripts/demo/thesis.alp --screenshot gui.png\n"
+        "Without a display it exits with status 2; use `alp85 run` or `alp85 script` there.");
+    cmd->callback([args, &status] {
+        args->o.motor = motor_model_of(args->motor);
+        const std::string s = args->speed;
+        args->o.speed = s == "0.1" ? 0 : s == "1" ? 1 : s == "10" ? 2 : s == "100" ? 3 : 4;
+        if (args->frames > 0) args->o.frames = args->frames;
+        if (args->seconds > 0) args->o.seconds = args->seconds;
+        status = gui::run(args->o);
+    });
+}
+
+}  // namespace alp85::cli

@@ -1,0 +1,32 @@
+// `alp85 gui`: the ALP 85 and its machine tool in a window (SDL2, OpenGL 3, Dear ImGui), driving
+// one script Session (and so one Machine and its Debugger) - the same engine as `alp85 script`.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "peripherals/machine_tool.h"
+
+namespace alp85::gui {
+
+struct GuiOptions {
+    std::vector<std::string> firmware;  // built-in names or .asm/.hex paths; default thesis-fixed
+    std::string script;                 // run in the window first (as `alp85 script` would)
+    std::vector<std::string> clicks;    // then click these keypad buttons (synthesized mouse events)
+    std::string screenshot;             // then save the window here and quit
+    std::string expect_display;         // at exit: the display must read this (else status 1)
+    std::optional<long> frames;         // quit after this many frames
+    std::optional<double> seconds;      // quit after this many host seconds
+    bool stats = false;                 // print frames per second and CPU use at exit
+    int speed = 1;                      // index into kSpeeds (controls.h)
+    periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
+    std::string out_dir;                // where the script's files go (as alp85 script --out-dir)
+};
+
+// Opens the window and runs until it is closed or an exit condition of `o` is met. Returns the
+// exit status: 0, 1 (the script failed or the display was not as expected), 2 (no display, or
+// the script has errors).
+int run(const GuiOptions& o);
+
+}  // namespace alp85::gui

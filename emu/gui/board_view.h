@@ -1,0 +1,19 @@
+// The board drawn into the window: the eight seven-segment digits (each segment a bar, lit or
+// unlit, and the decimal point) and the keypad with each key's PC key under its caption.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include <imgui.h>
+
+#include "emu/gui/input.h"
+
+namespace alp85::gui {
+
+ImU32 to_imu32(Rgb c, std::uint8_t alpha = 255);
+
+void draw_display(ImDrawList* dl, const std::array<std::uint8_t, 8>& segments);
+void draw_keypad(ImDrawList* dl, const Presser& presser);
+
+}  // namespace alp85::gui

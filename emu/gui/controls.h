@@ -1,0 +1,42 @@
+// The controls panel (an ImGui window at kControlsRect): run/pause, reset, speed, firmware,
+// snapshots, screenshot, toolpath recording and plot, and the log of the session's messages.
+// It only reports what the user asked for; the app carries it out through the script Session.
+#pragma once
+
+#include <array>
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace alp85::gui {
+
+struct Speed {
+    const char* label;
+    double factor;  // 0: as fast as possible
+};
+inline constexpr std::array<Speed, 5> kSpeeds{{
+    {"x0.1", 0.1}, {"real time (3.072 MHz)", 1}, {"x10", 10}, {"x100", 100}, {"as fast as possible", 0}}};
+
+struct Action {
+    enum class Kind { RunPause, Reset, Speed, Firmware, LoadFile, SaveSnapshot, LoadSnapshot, Screenshot, RecordStart, RecordStop, Plot };
+    Kind kind;
+    std::string arg;  // firmware name or a path (as typed)
+    int speed = 1;    // index into kSpeeds
+};
+
+struct ControlsState {
+    bool running = true;
+    int speed = 1;
+    bool recording = false;
+    int firmware = 0;  // index into the built-in list
+    std::vector<std::string> firmware_names;
+    std::string file = "program.asm", snapshot = "alp85.snap", screenshot = "alp85.png";
+    std::string record = "toolpath.csv", plot = "toolpath.png";
+    std::deque<std::string> log;
+    std::string status;  // one line: time, speed, fps
+    void add_log(std::string line);
+};
+
+std::vector<Action> controls_panel(ControlsState& s);
+
+}  // namespace alp85::gui

@@ -1,0 +1,102 @@
+#include "emu/gui/layout.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <string_view>
+
+namespace alp85::gui {
+
+Segment segment(unsigned digit, unsigned s) {
+    const float x = kDigitX0 + kDigitPitch * static_cast<float>(digit), y = kDigitY0;
+    const float h = kSegT / 2, gap = 1.5f;
+    const float left = x + h, right = x + kDigitW - h;
+    const float top = y + h, mid = y + kDigitH / 2, bottom = y + kDigitH - h;
+    switch (s) {
+        case 0: return {{left + h + gap, top}, {right - h - gap, top}};          // a
+        case 1: return {{right, top + h + gap}, {right, mid - h - gap}};         // b
+        case 2: return {{right, mid + h + gap}, {right, bottom - h - gap}};      // c
+        case 3: return {{left + h + gap, bottom}, {right - h - gap, bottom}};    // d
+        case 4: return {{left, mid + h + gap}, {left, bottom - h - gap}};        // e
+        case 5: return {{left, top + h + gap}, {left, mid - h - gap}};           // f
+        default: return {{left + h + gap, mid}, {right - h - gap, mid}};         // g
+    }
+}
+
+Vec2 segment_centre(unsigned digit, unsigned s) {
+    const Segment g = segment(digit, s);
+    return {(g.a.x + g.b.x) / 2, (g.a.y + g.b.y) / 2};
+}
+
+Vec2 dp_centre(unsigned digit) {
+    return {kDigitX0 + kDigitPitch * static_cast<float>(digit) + kDigitW + 7, kDigitY0 + kDigitH - kDpRadius};
+}
+
+namespace {
+using periph::Key;
+constexpr std::array<PadKey, 26> kPad{{
+    {Pad::Reset, Key::K0, 0, 0}, {Pad::Vect, Key::K0, 0, 1}, {Pad::Matrix, Key::R, 0, 2},
+    {Pad::Matrix, Key::KC, 0, 3}, {Pad::Matrix, Key::KD, 0, 4}, {Pad::Matrix, Key::KE, 0, 5},
+    {Pad::Matrix, Key::KF, 0, 6},
+    {Pad::Matrix, Key::Reg, 1, 0}, {Pad::Matrix, Key::Mem, 1, 1}, {Pad::Matrix, Key::Go, 1, 2},
+    {Pad::Matrix, Key::K8, 1, 3}, {Pad::Matrix, Key::K9, 1, 4}, {Pad::Matrix, Key::KA, 1, 5},
+    {Pad::Matrix, Key::KB, 1, 6},
+    {Pad::Matrix, Key::Step, 2, 0}, {Pad::Matrix, Key::Prev, 2, 1}, {Pad::Matrix, Key::Next, 2, 2},
+    {Pad::Matrix, Key::K4, 2, 3}, {Pad::Matrix, Key::K5, 2, 4}, {Pad::Matrix, Key::K6, 2, 5},
+    {Pad::Matrix, Key::K7, 2, 6},
+    {Pad::Matrix, Key::Exec, 3, 2}, {Pad::Matrix, Key::K0, 3, 3}, {Pad::Matrix, Key::K1, 3, 4},
+    {Pad::Matrix, Key::K2, 3, 5}, {Pad::Matrix, Key::K3, 3, 6},
+}};
+
+bool iequal(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
+           });
+}
+}  // namespace
+
+std::span<const PadKey> pad_keys() { return kPad; }
+
+Rect key_rect(const PadKey& k) {
+    return {kKeyX0 + kKeyPitchX * static_cast<float>(k.col), kKeyY0 + kKeyPitchY * static_cast<float>(k.row), kKeyW,
+            kKeyH};
+}
+
+std::optional<PadKey> key_at(float x, float y) {
+    for (const PadKey& k : kPad)
+        if (key_rect(k).contains(x, y)) return k;
+    return std::nullopt;
+}
+
+std::optional<PadKey> find_pad_key(std::string_view name) {
+    if (iequal(name, "RESET")) return kPad[0];
+    if (iequal(name, "VECT") || iequal(name, "VECT INTR") || iequal(name, "VECTINTR")) return kPad[1];
+    const auto key = periph::Keypad::find(name);
+    if (!key) return std::nullopt;
+    for (const PadKey& k : kPad)
+        if (k.pad == Pad::Matrix && k.key == *key) return k;
+    return std::nullopt;
+}
+
+void Bounds::add(double x, double y) {
+    if (empty()) {
+        *this = {x, y, x, y};
+        return;
+    }
+    x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+}
+
+TableView TableView::fit(const Bounds& b, const Rect& r) {
+    TableView v;
+    const double w = std::max(b.x1 - b.x0, 1.0), h = std::max(b.y1 - b.y0, 1.0);
+    v.scale = std::min((r.w - 2 * kTableMargin) / w, (r.h - 2 * kTableMargin) / h);
+    v.cx = (b.x0 + b.x1) / 2;
+    v.cy = (b.y0 + b.y1) / 2;
+    return v;
+}
+
+Vec2 TableView::to_px(double x_mm, double y_mm, const Rect& r) const {
+    return {static_cast<float>(r.x + r.w / 2 + (x_mm - cx) * scale), static_cast<float>(r.y + r.h / 2 - (y_mm - cy) * scale)};
+}
+
+}  // namespace alp85::gui

@@ -1,0 +1,109 @@
+// The window's geometry, in pixels from the window's top left corner: where the eight digits and
+// their segments are, where each keypad button is, where the table view, the Z gauge and the
+// travel strip are, and how the table view maps millimetres to pixels. Plain arithmetic, no
+// drawing: the views draw from it and the tests compute the pixels they check from it.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+#include "peripherals/keypad.h"
+
+namespace alp85::gui {
+
+struct Vec2 {
+    float x = 0, y = 0;
+};
+
+struct Rect {
+    float x = 0, y = 0, w = 0, h = 0;
+    bool contains(float px, float py) const { return px >= x && px < x + w && py >= y && py < y + h; }
+    Vec2 centre() const { return {x + w / 2, y + h / 2}; }
+};
+
+struct Rgb {
+    std::uint8_t r, g, b;
+};
+
+// Colours the views draw with and the tests expect.
+namespace colour {
+inline constexpr Rgb kBackground{28, 30, 34};
+inline constexpr Rgb kBoard{18, 64, 40};           // the PCB around the display and keys
+inline constexpr Rgb kDisplayWindow{12, 6, 6};     // the display's dark red filter
+inline constexpr Rgb kSegmentLit{255, 52, 36};
+inline constexpr Rgb kSegmentUnlit{62, 20, 18};
+inline constexpr Rgb kKey{214, 210, 200};
+inline constexpr Rgb kKeyFunction{70, 90, 140};
+inline constexpr Rgb kKeyPressed{250, 200, 60};
+inline constexpr Rgb kTableBed{52, 56, 62};
+inline constexpr Rgb kWorkpiece{120, 96, 64};
+inline constexpr Rgb kToolpath{80, 200, 255};
+inline constexpr Rgb kIdealLine{120, 255, 120};
+inline constexpr Rgb kTool{255, 0, 200};           // magenta: nothing else is drawn in it
+}  // namespace colour
+
+inline constexpr int kWindowWidth = 1280;
+inline constexpr int kWindowHeight = 800;
+
+// ---- the board: eight digits ---------------------------------------------------------------------
+inline constexpr float kDigitX0 = 28, kDigitY0 = 44;  // top left of digit 1
+inline constexpr float kDigitPitch = 58, kDigitW = 40, kDigitH = 76, kSegT = 8;
+inline constexpr float kDpRadius = 4.5f;
+inline constexpr Rect kBoardRect{8, 8, 504, 470};
+inline constexpr Rect kDisplayRect{16, 30, 488, 104};
+
+// A segment as its centre line (the drawn bar is kSegT thick around it, with pointed ends).
+struct Segment {
+    Vec2 a, b;
+};
+// Segment s (0 = a ... 6 = g, the bit order of seven_segment.h) of digit d (0 = leftmost).
+Segment segment(unsigned digit, unsigned s);
+Vec2 segment_centre(unsigned digit, unsigned s);
+Vec2 dp_centre(unsigned digit);
+
+// ---- the board: keypad -----------------------------------------------------------------------------
+// The 24 matrix keys and RESET, VECT INTR, as docs/peripherals.md arranges them (front view):
+//   RESET VECT  R    C D E F
+//   REG   MEM   GO   8 9 A B
+//   STEP  PREV  NEXT 4 5 6 7
+//               EXEC 0 1 2 3
+enum class Pad : std::uint8_t { Matrix, Reset, Vect };
+struct PadKey {
+    Pad pad = Pad::Matrix;
+    periph::Key key = periph::Key::K0;  // for Matrix
+    int row = 0, col = 0;
+};
+inline constexpr float kKeyX0 = 24, kKeyY0 = 160, kKeyW = 62, kKeyH = 50, kKeyPitchX = 68, kKeyPitchY = 58;
+std::span<const PadKey> pad_keys();  // 26 buttons
+Rect key_rect(const PadKey& k);
+// The button under a point, if any.
+std::optional<PadKey> key_at(float x, float y);
+std::optional<PadKey> find_pad_key(std::string_view name);  // "R", "EXEC", "RESET", "VECT", ...
+
+// ---- the machine tool --------------------------------------------------------------------------------
+inline constexpr Rect kTableRect{528, 8, 660, 440};   // the X-Y table from above
+inline constexpr Rect kZGaugeRect{1204, 30, 60, 396}; // Z: 0 (bottom) .. travel (top)
+inline constexpr Rect kStripRect{528, 474, 744, 76};  // the whole X-Y travel (1500 x 200 mm)
+inline constexpr Rect kAxesRect{520, 556, 760, 244};  // the axis panel (ImGui)
+inline constexpr Rect kControlsRect{0, 484, 520, 316};  // the controls (ImGui)
+inline constexpr float kTableMargin = 24;  // pixels kept free inside kTableRect
+
+struct Bounds {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // mm
+    void add(double x, double y);
+    bool empty() const { return x1 < x0; }
+    static Bounds none() { return {1, 1, 0, 0}; }
+};
+
+// Millimetres of the table to pixels of kTableRect: the bounds fitted with equal scale on both
+// axes, centred, Y up.
+struct TableView {
+    double scale = 1;  // pixels per mm
+    double cx = 0, cy = 0;  // mm at the centre of the rect
+    static TableView fit(const Bounds& b, const Rect& r = kTableRect);
+    Vec2 to_px(double x_mm, double y_mm, const Rect& r = kTableRect) const;
+};
+
+}  // namespace alp85::gui

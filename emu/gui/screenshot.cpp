@@ -1,0 +1,35 @@
+#include "emu/gui/screenshot.h"
+
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include <SDL_opengl.h>
+#include <cairo.h>
+
+namespace alp85::gui {
+
+void save_screenshot(const std::string& path, int width, int height) {
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    // cairo's ARGB32: native-endian 32-bit words, rows top first (GL's are bottom first).
+    cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+    cairo_surface_flush(s);
+    std::uint8_t* data = cairo_image_surface_get_data(s);
+    const int stride = cairo_image_surface_get_stride(s);
+    for (int y = 0; y < height; ++y) {
+        const std::uint8_t* src = rgba.data() + static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) * 4;
+        auto* dst = reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+        for (int x = 0; x < width; ++x, src += 4)
+            dst[x] = 0xFF000000u | std::uint32_t{src[0]} << 16 | std::uint32_t{src[1]} << 8 | src[2];
+    }
+    cairo_surface_mark_dirty(s);
+    const cairo_status_t st = cairo_surface_write_to_png(s, path.c_str());
+    cairo_surface_destroy(s);
+    if (st != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error("screenshot " + path + ": " + cairo_status_to_string(st));
+}
+
+}  // namespace alp85::gui

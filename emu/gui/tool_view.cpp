@@ -1,0 +1,152 @@
+#include "emu/gui/tool_view.h"
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "emu/gui/board_view.h"
+#include "emu/plot/plot.h"
+
+namespace alp85::gui {
+namespace {
+
+using Axis = periph::MachineTool::Axis;
+ImVec2 v(Vec2 p) { return {p.x, p.y}; }
+
+}  // namespace
+
+Bounds table_bounds(const Machine& m, const Toolpath& path) {
+    Bounds b = path.workpiece(m);
+    if (const auto l = path.ideal(m)) b.add(l->from.x, l->from.y), b.add(l->to.x, l->to.y);
+    for (const PointMm& p : path.points()) b.add(p.x, p.y);
+    b.add(m.tool().table_mm(Axis::X), m.tool().table_mm(Axis::Y));
+    return b;
+}
+
+void draw_table(ImDrawList* dl, const Machine& m, const Toolpath& path) {
+    const Rect r = kTableRect;
+    dl->AddRectFilled({r.x, r.y}, {r.x + r.w, r.y + r.h}, to_imu32(colour::kTableBed));
+    dl->PushClipRect({r.x, r.y}, {r.x + r.w, r.y + r.h}, true);
+    const TableView view = TableView::fit(table_bounds(m, path));
+    // The mm grid, at 1-2-5 steps across the visible span.
+    const double half_w = (r.w / 2) / view.scale, half_h = (r.h / 2) / view.scale;
+    const ImU32 grid = IM_COL32(80, 86, 94, 255), label = IM_COL32(150, 156, 164, 255);
+    for (double x : plot::ticks(view.cx - half_w, view.cx + half_w, 8)) {
+        const Vec2 p = view.to_px(x, 0);
+        dl->AddLine({p.x, r.y}, {p.x, r.y + r.h}, grid);
+        dl->AddText({p.x + 2, r.y + r.h - 16}, label, fmt::format("{:g}", x).c_str());
+    }
+    for (double y : plot::ticks(view.cy - half_h, view.cy + half_h, 6)) {
+        const Vec2 p = view.to_px(0, y);
+        dl->AddLine({r.x, p.y}, {r.x + r.w, p.y}, grid);
+        dl->AddText({r.x + 2, p.y - 14}, label, fmt::format("{:g}", y).c_str());
+    }
+    const Bounds w = path.workpiece(m);
+    const Vec2 w0 = view.to_px(w.x0, w.y1), w1 = view.to_px(w.x1, w.y0);
+    dl->AddRectFilled(v(w0), v(w1), to_imu32(colour::kWorkpiece, 110));
+    dl->AddRect(v(w0), v(w1), to_imu32(colour::kWorkpiece), 0, 0, 2);
+    dl->AddText({w0.x + 4, w0.y + 2}, IM_COL32(230, 210, 170, 255), "workpiece");
+    const auto& pts = path.points();
+    if (pts.size() >= 2) {
+        // Thinned to about one point per pixel of the view.
+        const double step_mm = 1 / view.scale;
+        Vec2 last = view.to_px(pts[0].x, pts[0].y);
+        PointMm last_mm = pts[0];
+        for (std::size_t i = 1; i < pts.size(); ++i) {
+            if (i + 1 < pts.size() && std::hypot(pts[i].x - last_mm.x, pts[i].y - last_mm.y) < step_mm) continue;
+            const Vec2 p = view.to_px(pts[i].x, pts[i].y);
+            dl->AddLine(v(last), v(p), to_imu32(colour::kToolpath), 2);
+            last = p, last_mm = pts[i];
+        }
+    }
+    if (const auto l = path.ideal(m)) {
+        const ImU32 c = to_imu32(colour::kIdealLine, l->started ? 255 : 140);
+        dl->AddLine(v(view.to_px(l->from.x, l->from.y)), v(view.to_px(l->to.x, l->to.y)), c, 1.0f);
+        dl->AddCircle(v(view.to_px(l->to.x, l->to.y)), 4, c);
+    }
+    const Vec2 tool = view.to_px(m.tool().table_mm(Axis::X), m.tool().table_mm(Axis::Y));
+    dl->AddCircle(v(tool), kToolRadius + 1.5f, IM_COL32(0, 0, 0, 255), 20, 2);
+    dl->AddCircleFilled(v(tool), kToolRadius, to_imu32(colour::kTool), 20);
+    dl->PopClipRect();
+    dl->AddText({r.x + 6, r.y + 4}, IM_COL32(230, 230, 230, 255),
+                "X-Y table from above (mm from power-on): workpiece, ideal line (green), toolpath (blue), tool");
+}
+
+void draw_z_gauge(ImDrawList* dl, const Machine& m) {
+    const Rect r = kZGaugeRect;
+    const double travel = m.tool().params().axes[2].table.travel_mm;
+    const double z = m.tool().table_mm(Axis::Z);
+    dl->AddText({r.x + 4, r.y - 20}, IM_COL32(230, 230, 230, 255), "Z (mm)");
+    dl->AddRectFilled({r.x + 18, r.y}, {r.x + 42, r.y + r.h}, to_imu32(colour::kTableBed));
+    const float frac = static_cast<float>(std::clamp(z / travel, 0.0, 1.0));
+    const float y = r.y + r.h - frac * r.h;
+    dl->AddRectFilled({r.x + 18, y}, {r.x + 42, r.y + r.h}, to_imu32(colour::kToolpath, 160));
+    dl->AddLine({r.x + 10, y}, {r.x + 50, y}, to_imu32(colour::kTool), 3);
+    for (double t : plot::ticks(0, travel, 5)) {
+        const float ty = r.y + r.h - static_cast<float>(t / travel) * r.h;
+        dl->AddLine({r.x + 42, ty}, {r.x + 48, ty}, IM_COL32(200, 200, 200, 255));
+    }
+    dl->AddText({r.x, r.y + r.h + 4}, IM_COL32(230, 230, 230, 255), fmt::format("{:.2f}", z).c_str());
+}
+
+void draw_travel_strip(ImDrawList* dl, const Machine& m) {
+    const Rect r = kStripRect;
+    const double tx = m.tool().params().axes[0].table.travel_mm, ty = m.tool().params().axes[1].table.travel_mm;
+    const float h = r.h - 18, w = std::min(r.w, static_cast<float>(h * tx / ty));
+    dl->AddText({r.x, r.y}, IM_COL32(230, 230, 230, 255),
+                fmt::format("whole travel: X {:g} mm, Y {:g} mm", tx, ty).c_str());
+    const float x0 = r.x, y0 = r.y + 16;
+    dl->AddRectFilled({x0, y0}, {x0 + w, y0 + h}, to_imu32(colour::kTableBed));
+    const float px = x0 + static_cast<float>(std::clamp(m.tool().table_mm(Axis::X) / tx, 0.0, 1.0)) * w;
+    const float py = y0 + h - static_cast<float>(std::clamp(m.tool().table_mm(Axis::Y) / ty, 0.0, 1.0)) * h;
+    dl->AddCircleFilled({px, py}, 4, to_imu32(colour::kTool), 12);
+}
+
+std::optional<periph::MachineTool::MotorModel> axes_panel(const Machine& m) {
+    const Rect r = kAxesRect;
+    ImGui::SetNextWindowPos({r.x, r.y});
+    ImGui::SetNextWindowSize({r.w, r.h});
+    ImGui::Begin("Machine tool", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    const auto& tool = m.tool();
+    if (ImGui::BeginTable("axes", 9, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+        for (const char* h : {"axis", "mm", "steps", "commanded", "transducer", "lost", "end stop", "phases A /A B /B", "rotor deg"})
+            ImGui::TableSetupColumn(h);
+        ImGui::TableHeadersRow();
+        for (int a = 0; a < 3; ++a) {
+            const auto axis = static_cast<Axis>(a);
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn(); ImGui::TextUnformatted(a == 0 ? "X" : a == 1 ? "Y" : "Z");
+            ImGui::TableNextColumn(); ImGui::Text("%.3f", tool.table_mm(axis));
+            ImGui::TableNextColumn(); ImGui::Text("%.2f", tool.table_steps(axis));
+            ImGui::TableNextColumn(); ImGui::Text("%lld", static_cast<long long>(tool.commanded_steps(axis)));
+            ImGui::TableNextColumn(); ImGui::Text("%lld", static_cast<long long>(tool.transducer_count(axis)));
+            ImGui::TableNextColumn(); ImGui::Text("%lld", static_cast<long long>(tool.lost_steps(axis)));
+            const auto stop = tool.end_stop(axis);
+            ImGui::TableNextColumn(); ImGui::TextUnformatted(stop.at < 0 ? "LOW" : stop.at > 0 ? "HIGH" : "-");
+            ImGui::TableNextColumn();
+            const std::uint8_t ph = tool.phase_pattern(axis);
+            ImDrawList* dl = ImGui::GetWindowDrawList();
+            const ImVec2 p = ImGui::GetCursorScreenPos();
+            for (int i = 0; i < 4; ++i) {
+                const bool on = ph >> (3 - i) & 1;
+                const ImVec2 q{p.x + 4 + 22.0f * static_cast<float>(i), p.y + 2};
+                dl->AddRectFilled(q, {q.x + 16, q.y + 12}, on ? IM_COL32(255, 200, 40, 255) : IM_COL32(60, 60, 60, 255), 2);
+            }
+            ImGui::Dummy({92, 14});
+            ImGui::TableNextColumn(); ImGui::Text("%.1f", tool.rotor_angle_deg(axis));
+        }
+        ImGui::EndTable();
+    }
+    std::optional<periph::MachineTool::MotorModel> pick;
+    int model = tool.model() == periph::MachineTool::MotorModel::Ideal ? 0 : 1;
+    ImGui::TextUnformatted("Motors:");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("ideal (1.8 deg per pulse)", &model, 0)) pick = periph::MachineTool::MotorModel::Ideal;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("physical (currents, inertia)", &model, 1)) pick = periph::MachineTool::MotorModel::Physical;
+    ImGui::End();
+    return pick;
+}
+
+}  // namespace alp85::gui

@@ -1,0 +1,28 @@
+// The machine tool drawn into the window: the X-Y table from above (grid in mm, the workpiece
+// outline, the ideal line, the toolpath so far and the tool), the Z axis as a gauge, the whole
+// X-Y travel as a strip, and the axis panel (position in mm and steps, transducer count, lost
+// steps, end stops, the motors' phase states, the motor model).
+//
+// The table view is in the table's coordinates (mm from the power-on position, as `print axes` and
+// the toolpath plots give them): the tool is drawn where the table has brought the workpiece under
+// it. The view fits the workpiece, the ideal line, the toolpath and the tool.
+#pragma once
+
+#include <imgui.h>
+
+#include "emu/board/machine.h"
+#include "emu/gui/toolpath.h"
+
+namespace alp85::gui {
+
+// What the table view fits: the workpiece, the ideal line, the toolpath and the tool.
+Bounds table_bounds(const Machine& m, const Toolpath& path);
+void draw_table(ImDrawList* dl, const Machine& m, const Toolpath& path);
+void draw_z_gauge(ImDrawList* dl, const Machine& m);
+void draw_travel_strip(ImDrawList* dl, const Machine& m);
+// An ImGui window at kAxesRect. Returns the motor model the user picked, if changed.
+std::optional<periph::MachineTool::MotorModel> axes_panel(const Machine& m);
+
+inline constexpr float kToolRadius = 7;
+
+}  // namespace alp85::gui

@@ -1,0 +1,80 @@
+#include "emu/gui/toolpath.h"
+
+#include <cmath>
+
+namespace alp85::gui {
+namespace {
+constexpr double kStepMm = 0.05;   // lead / steps per revolution (docs/machine.md)
+constexpr double kMinMove = 0.005; // mm between recorded points
+}  // namespace
+
+void Toolpath::clear() {
+    points_.clear();
+    have_cmd_ = false;
+    anchor_.reset();
+}
+
+std::optional<std::array<std::int32_t, 4>> Toolpath::read_vars(const Machine& m) const {
+    if (!vars_at_) return std::nullopt;
+    std::array<std::int32_t, 4> v{};
+    for (int i = 0; i < 4; ++i) {
+        const auto a = static_cast<std::uint16_t>(*vars_at_ + 3 * i);
+        v[static_cast<std::size_t>(i)] = m.peek(a) | m.peek(static_cast<std::uint16_t>(a + 1)) << 8;
+    }
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0 && v[3] == 0) return std::nullopt;
+    return v;
+}
+
+void Toolpath::observe(const debug::ToolSample& s, const Machine& m) {
+    const PointMm p{s.axes[0].mm, s.axes[1].mm};
+    if (points_.empty() || std::hypot(p.x - points_.back().x, p.y - points_.back().y) >= kMinMove) {
+        if (points_.size() >= kMaxPoints) {  // keep every other point
+            std::size_t j = 0;
+            for (std::size_t i = 0; i < points_.size(); i += 2) points_[j++] = points_[i];
+            points_.resize(j);
+        }
+        points_.push_back(p);
+    }
+    const std::array<std::int64_t, 2> cmd{s.axes[0].commanded, s.axes[1].commanded};
+    if (!have_cmd_) {
+        last_cmd_ = cmd, last_change_ = s.t, have_cmd_ = true;
+        return;
+    }
+    if (cmd != last_cmd_) {
+        if (s.t - last_change_ >= kIdle) {  // a move starts from where the table stood
+            if (const auto v = read_vars(m)) {
+                anchor_ = last_cmd_;
+                anchor_vars_ = *v;
+            }
+        }
+        last_cmd_ = cmd;
+        last_change_ = s.t;
+    }
+}
+
+std::optional<Toolpath::Line> Toolpath::ideal(const Machine& m) const {
+    std::array<std::int32_t, 4> v{};
+    std::array<std::int64_t, 2> from{};
+    Line line;
+    if (anchor_) {
+        v = anchor_vars_, from = *anchor_, line.started = true;
+    } else {
+        const auto now = read_vars(m);
+        if (!now) return std::nullopt;
+        v = *now;
+        from = {m.tool().commanded_steps(periph::MachineTool::Axis::X),
+                m.tool().commanded_steps(periph::MachineTool::Axis::Y)};
+    }
+    line.from = {static_cast<double>(from[0]) * kStepMm, static_cast<double>(from[1]) * kStepMm};
+    line.to = {line.from.x + (v[2] - v[0]) * kStepMm, line.from.y + (v[3] - v[1]) * kStepMm};
+    line.origin = {line.from.x - v[0] * kStepMm, line.from.y - v[1] * kStepMm};
+    return line;
+}
+
+Bounds Toolpath::workpiece(const Machine& m) const {
+    PointMm o{};
+    if (const auto l = ideal(m)) o = l->origin;
+    return {o.x, o.y, o.x + kWorkpieceW, o.y + kWorkpieceH};
+}
+
+}  // namespace alp85::gui

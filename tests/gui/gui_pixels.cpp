@@ -1,0 +1,112 @@
+// Checks pixels of an `alp85 gui --screenshot` PNG against the window's layout (emu/gui/layout.h):
+//   gui_pixels SHOT.png --digits B1,B2,...,B8     each digit's segments (hex byte: bit0 = a ...
+//                                                  bit6 = g, bit7 = dp; "--" skips a digit): every
+//                                                  segment's centre is the lit or the unlit colour
+//   gui_pixels SHOT.png --tool X,Y --bounds X0,Y0,X1,Y1 [--not-tool X,Y]
+//                                                  the tool's colour where the table view (fitted to
+//                                                  the bounds, mm) draws the table position X,Y
+// Exit status 0 when every check holds; each failure is printed.
+#include <cairo.h>
+
+#include <cstdio>
+#include <cstdint>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "emu/gui/layout.h"
+
+using namespace alp85::gui;
+
+namespace {
+
+struct Image {
+    cairo_surface_t* s = nullptr;
+    Rgb at(int x, int y) const {
+        const auto* row = cairo_image_surface_get_data(s) + static_cast<std::ptrdiff_t>(y) * cairo_image_surface_get_stride(s);
+        const std::uint32_t w = reinterpret_cast<const std::uint32_t*>(row)[x];
+        return {static_cast<std::uint8_t>(w >> 16), static_cast<std::uint8_t>(w >> 8), static_cast<std::uint8_t>(w)};
+    }
+};
+
+bool near(Rgb a, Rgb b) {
+    return std::abs(a.r - b.r) <= 10 && std::abs(a.g - b.g) <= 10 && std::abs(a.b - b.b) <= 10;
+}
+
+std::vector<std::string> split(const std::string& s) {
+    std::vector<std::string> out;
+    std::stringstream in(s);
+    for (std::string item; std::getline(in, item, ',');) out.push_back(item);
+    return out;
+}
+
+int failures = 0;
+
+void expect(const Image& img, Vec2 p, Rgb want, const std::string& what) {
+    const int x = static_cast<int>(p.x), y = static_cast<int>(p.y);
+    const Rgb got = img.at(x, y);
+    if (!near(got, want)) {
+        std::printf("FAIL %s at (%d,%d): expected %d,%d,%d, found %d,%d,%d\n", what.c_str(), x, y, want.r, want.g, want.b,
+                    got.r, got.g, got.b);
+        ++failures;
+    } else {
+        std::printf("ok   %s at (%d,%d)\n", what.c_str(), x, y);
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: gui_pixels SHOT.png [--digits ...] [--tool X,Y --bounds X0,Y0,X1,Y1]\n");
+        return 2;
+    }
+    Image img{cairo_image_surface_create_from_png(argv[1])};
+    if (cairo_surface_status(img.s) != CAIRO_STATUS_SUCCESS) {
+        std::fprintf(stderr, "gui_pixels: cannot read %s\n", argv[1]);
+        return 2;
+    }
+    if (cairo_image_surface_get_width(img.s) != kWindowWidth || cairo_image_surface_get_height(img.s) != kWindowHeight) {
+        std::printf("FAIL the screenshot is %dx%d, the window %dx%d\n", cairo_image_surface_get_width(img.s),
+                    cairo_image_surface_get_height(img.s), kWindowWidth, kWindowHeight);
+        return 1;
+    }
+    std::vector<double> tool, not_tool, bounds;
+    for (int i = 2; i + 1 < argc; i += 2) {
+        const std::string opt = argv[i];
+        const auto items = split(argv[i + 1]);
+        if (opt == "--digits") {
+            for (unsigned d = 0; d < items.size() && d < 8; ++d) {
+                if (items[d] == "--") continue;
+                const auto bits = static_cast<unsigned>(std::stoul(items[d], nullptr, 16));
+                for (unsigned s = 0; s < 7; ++s)
+                    expect(img, segment_centre(d, s), (bits >> s & 1) ? colour::kSegmentLit : colour::kSegmentUnlit,
+                           "digit " + std::to_string(d + 1) + " segment " + std::string(1, static_cast<char>('a' + s)) +
+                               ((bits >> s & 1) ? " lit" : " unlit"));
+                expect(img, dp_centre(d), (bits & 0x80) ? colour::kSegmentLit : colour::kSegmentUnlit,
+                       "digit " + std::to_string(d + 1) + " dp" + ((bits & 0x80) ? " lit" : " unlit"));
+            }
+        } else {
+            std::vector<double>& v = opt == "--tool" ? tool : opt == "--not-tool" ? not_tool : bounds;
+            for (const auto& it : items) v.push_back(std::stod(it));
+        }
+    }
+    if (tool.size() == 2 && bounds.size() == 4) {
+        Bounds b = Bounds::none();
+        b.add(bounds[0], bounds[1]);
+        b.add(bounds[2], bounds[3]);
+        const TableView view = TableView::fit(b);
+        expect(img, view.to_px(tool[0], tool[1]), colour::kTool, "tool at table X,Y mm " + std::to_string(tool[0]) + "," + std::to_string(tool[1]));
+        if (not_tool.size() == 2) {
+            const Vec2 p = view.to_px(not_tool[0], not_tool[1]);
+            if (near(img.at(static_cast<int>(p.x), static_cast<int>(p.y)), colour::kTool)) {
+                std::printf("FAIL the tool is also drawn at %g,%g mm\n", not_tool[0], not_tool[1]);
+                ++failures;
+            }
+        }
+    }
+    cairo_surface_destroy(img.s);
+    std::printf("%s\n", failures ? "FAILED" : "all pixels as expected");
+    return failures ? 1 : 0;
+}

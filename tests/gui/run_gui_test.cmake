@@ -1,0 +1,17 @@
+# Runs `alp85 gui` under xvfb-run and then gui_pixels on its screenshot.
+#   cmake -DXVFB_RUN=... -DALP85=... -DPIXELS=... -DSHOT=out.png -DGUI_ARGS="a;b" -DPIXEL_ARGS="c;d" -P run_gui_test.cmake
+# Prints "SKIP: xvfb-run is missing" (the test's SKIP_REGULAR_EXPRESSION) when there is no xvfb-run.
+if(NOT XVFB_RUN)
+  message("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh does) to run the GUI tests")
+  return()
+endif()
+file(REMOVE "${SHOT}")
+execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24" ${ALP85} gui ${GUI_ARGS} --screenshot ${SHOT}
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "alp85 gui exited with ${rc}")
+endif()
+execute_process(COMMAND ${PIXELS} ${SHOT} ${PIXEL_ARGS} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the screenshot's pixels are not as expected")
+endif()
