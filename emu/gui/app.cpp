@@ -17,7 +17,9 @@
 #include <backends/imgui_impl_sdl.h>
 
 #include "emu/debug/tool_record.h"
+#include "emu/gui/backdrop.h"
 #include "emu/gui/board_view.h"
+#include "emu/gui/canvas.h"
 #include "emu/gui/controls.h"
 #include "emu/gui/input.h"
 #include "emu/gui/pacer.h"
@@ -75,6 +77,7 @@ public:
 
     int start();
     int loop();
+    bool canvas_ok() { return canvas_.init(kWindowWidth, kWindowHeight); }
 
 private:
     Machine& machine() { return session_.machine(); }
@@ -93,6 +96,7 @@ private:
     SDL_Window* window_;
     script::Session session_;
     Toolpath path_;
+    Backdrop backdrop_;
     Presser presser_;
     Pacer pacer_;
     ControlsState ui_;
@@ -112,6 +116,9 @@ private:
     std::string pending_shot_;
     bool quit_ = false;
     double fps_ = 0;
+    Canvas canvas_;
+    long presented_ = 0;  // frames that changed the picture
+    bool expose_ = true;
     double machine_s_ = 0, render_s_ = 0;  // host time in the machine and in drawing (--stats)
 };
 
@@ -192,6 +199,7 @@ void App::handle(const SDL_Event& e) {
         case SDL_QUIT: quit_ = true; break;
         case SDL_WINDOWEVENT:
             if (e.window.event == SDL_WINDOWEVENT_CLOSE) quit_ = true;
+            if (e.window.event == SDL_WINDOWEVENT_EXPOSED) expose_ = true;
             break;
         case SDL_MOUSEBUTTONDOWN:
             if (e.button.button == SDL_BUTTON_LEFT) {
@@ -331,15 +339,41 @@ void App::drive_clicks() {
     if (++click_frame_ == kClickFrames) click_frame_ = 0, ++click_pos_;
 }
 
+// A borderless, transparent window over `r` that takes no input (the keypad's clicks are
+// hit-tested on the SDL events): one draw list per view.
+ImDrawList* begin_layer(const char* name, const Rect& r) {
+    ImGui::SetNextWindowPos({r.x, r.y});
+    ImGui::SetNextWindowSize({r.w, r.h});
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0);
+    ImGui::Begin(name, nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoInputs |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+    ImGui::PopStyleVar(2);
+    return ImGui::GetWindowDrawList();
+}
+
 void App::draw() {
-    ImDrawList* bg = ImGui::GetBackgroundDrawList();
-    draw_display(bg, machine().display());
-    draw_keypad(bg, presser_);
-    draw_table(bg, machine(), path_);
-    draw_z_gauge(bg, machine());
-    draw_travel_strip(bg, machine());
+    backdrop_.reset();
+    backdrop_.fill(kControlsRect, colour::kPanel);
+    backdrop_.fill(kAxesRect, colour::kPanel);
+    // Each view in its own window, so that the canvas sees which one changed.
+    draw_keypad(begin_layer("##keypad", kBoardRect), presser_);
+    ImGui::End();
+    draw_display(begin_layer("##display", kDisplayRect), backdrop_, machine().display());
+    ImGui::End();
+    draw_table(begin_layer("##table", kTableRect), backdrop_, machine(), path_);
+    ImGui::End();
+    draw_z_gauge(begin_layer("##z", {kZGaugeRect.x - 8, kTableRect.y, kWindowWidth - kZGaugeRect.x + 8, kTableRect.h}), backdrop_,
+                 machine());
+    ImGui::End();
+    draw_travel_strip(begin_layer("##strip", kStripRect), backdrop_, machine());
+    ImGui::End();
     if (const auto model = axes_panel(machine())) command(*model == periph::MachineTool::MotorModel::Ideal ? "motor ideal" : "motor physical");
-    ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
+    // Four times a second: a clock that changes every frame would redraw its panel every frame.
+    if (frames_ % 15 == 0)
+        ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
                              script::Session::format_time(machine().now()), fps_);
     for (const Action& a : controls_panel(ui_)) act(a);
 }
@@ -368,13 +402,7 @@ int App::loop() {
         ImGui::NewFrame();
         draw();
         ImGui::Render();
-        int w = 0, h = 0;
-        SDL_GL_GetDrawableSize(window_, &w, &h);
-        glViewport(0, 0, w, h);
-        const Rgb bgc = colour::kBackground;
-        glClearColor(bgc.r / 255.0f, bgc.g / 255.0f, bgc.b / 255.0f, 1);
-        glClear(GL_COLOR_BUFFER_BIT);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        const bool painted = canvas_.render(ImGui::GetDrawData(), backdrop_, colour::kBackground);
         ++frames_;
         const bool end = (o_.frames && frames_ >= *o_.frames) ||
                          (o_.seconds && std::chrono::duration<double>(HostClock::now() - start).count() >= *o_.seconds) ||
@@ -382,7 +410,9 @@ int App::loop() {
         if (end && !o_.screenshot.empty()) pending_shot_ = o_.screenshot;
         if (!pending_shot_.empty()) {
             try {
-                save_screenshot(pending_shot_, w, h);
+                canvas_.bind_for_read();
+                save_screenshot(pending_shot_, kWindowWidth, kWindowHeight);
+                canvas_.unbind();
                 ui_.add_log("screenshot " + pending_shot_);
             } catch (const std::exception& x) {
                 std::cerr << "alp85 gui: " << x.what() << '\n';
@@ -390,7 +420,12 @@ int App::loop() {
             }
             pending_shot_.clear();
         }
-        SDL_GL_SwapWindow(window_);
+        if (painted || expose_) {  // the window is only sent a picture that changed
+            canvas_.present();
+            SDL_GL_SwapWindow(window_);
+            ++presented_;
+            expose_ = false;
+        }
         render_s_ += std::chrono::duration<double>(HostClock::now() - machine_end).count();
         if (end) break;
         ++fps_frames;
@@ -417,9 +452,9 @@ int App::loop() {
 
 void App::finish_stats(double wall, double cpu) const {
     const double sim = board::ms_from_tstates(session_.machine().now()) / 1000;
-    std::cout << fmt::format("stats: {} frames in {:.2f} s = {:.1f} fps; CPU {:.2f} s = {:.1f}% of one core; "
+    std::cout << fmt::format("stats: {} frames in {:.2f} s = {:.1f} fps ({} of them changed the picture); CPU {:.2f} s = {:.1f}% of one core; "
                              "simulated {:.3f} s ({:.2f}x real time); speed {}; per frame {:.2f} ms emulating, {:.2f} ms drawing\n",
-                             frames_, wall, static_cast<double>(frames_) / wall, cpu, 100 * cpu / wall, sim, sim / wall,
+                             frames_, wall, static_cast<double>(frames_) / wall, presented_, cpu, 100 * cpu / wall, sim, sim / wall,
                              kSpeeds[static_cast<std::size_t>(ui_.speed)].label,
                              1000 * machine_s_ / static_cast<double>(frames_), 1000 * render_s_ / static_cast<double>(frames_));
 }
@@ -463,7 +498,11 @@ int run(const GuiOptions& o) {
     int status = 0;
     {
         App app(o, window);
-        status = app.start();
+        if (!app.canvas_ok()) {
+            std::cerr << "alp85 gui: OpenGL has no framebuffer objects\n";
+            status = 2;
+        }
+        if (status == 0) status = app.start();
         if (status == 0) status = app.loop();
     }
     ImGui_ImplOpenGL3_Shutdown();

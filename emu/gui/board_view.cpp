@@ -26,11 +26,11 @@ void draw_segment(ImDrawList* dl, const Segment& s, ImU32 col) {
 
 }  // namespace
 
-void draw_display(ImDrawList* dl, const std::array<std::uint8_t, 8>& segments) {
+void draw_display(ImDrawList* dl, Backdrop& bd, const std::array<std::uint8_t, 8>& segments) {
     const Rect b = kBoardRect, d = kDisplayRect;
-    dl->AddRectFilled({b.x, b.y}, {b.x + b.w, b.y + b.h}, to_imu32(colour::kBoard), 6);
+    bd.fill(b, colour::kBoard);
     dl->AddText({b.x + 10, b.y + 4}, IM_COL32(220, 230, 220, 255), "ALP 85");
-    dl->AddRectFilled({d.x, d.y}, {d.x + d.w, d.y + d.h}, to_imu32(colour::kDisplayWindow), 4);
+    bd.fill(d, colour::kDisplayWindow);
     const ImU32 lit = to_imu32(colour::kSegmentLit), unlit = to_imu32(colour::kSegmentUnlit);
     for (unsigned digit = 0; digit < 8; ++digit) {
         const std::uint8_t bits = segments[digit];

@@ -7,13 +7,14 @@
 
 #include <imgui.h>
 
+#include "emu/gui/backdrop.h"
 #include "emu/gui/input.h"
 
 namespace alp85::gui {
 
 ImU32 to_imu32(Rgb c, std::uint8_t alpha = 255);
 
-void draw_display(ImDrawList* dl, const std::array<std::uint8_t, 8>& segments);
+void draw_display(ImDrawList* dl, Backdrop& bd, const std::array<std::uint8_t, 8>& segments);
 void draw_keypad(ImDrawList* dl, const Presser& presser);
 
 }  // namespace alp85::gui

@@ -18,7 +18,7 @@ std::vector<Action> controls_panel(ControlsState& s) {
     const Rect r = kControlsRect;
     ImGui::SetNextWindowPos({r.x, r.y});
     ImGui::SetNextWindowSize({r.w, r.h});
-    ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
     if (ImGui::Button(s.running ? "Pause" : "Run ", {60, 0})) out.push_back({K::RunPause, {}});
     ImGui::SameLine();
     if (ImGui::Button("Reset")) out.push_back({K::Reset, {}});

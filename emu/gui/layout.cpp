@@ -7,6 +7,20 @@
 
 namespace alp85::gui {
 
+Rect intersect(const Rect& a, const Rect& b) {
+    const float x0 = std::max(a.x, b.x), y0 = std::max(a.y, b.y);
+    const float x1 = std::min(a.x + a.w, b.x + b.w), y1 = std::min(a.y + a.h, b.y + b.h);
+    return {x0, y0, std::max(0.0f, x1 - x0), std::max(0.0f, y1 - y0)};
+}
+
+Rect unite(const Rect& a, const Rect& b) {
+    if (a.w <= 0 || a.h <= 0) return b;
+    if (b.w <= 0 || b.h <= 0) return a;
+    const float x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+    const float x1 = std::max(a.x + a.w, b.x + b.w), y1 = std::max(a.y + a.h, b.y + b.h);
+    return {x0, y0, x1 - x0, y1 - y0};
+}
+
 Segment segment(unsigned digit, unsigned s) {
     const float x = kDigitX0 + kDigitPitch * static_cast<float>(digit), y = kDigitY0;
     const float h = kSegT / 2, gap = 1.5f;

@@ -23,6 +23,10 @@ struct Rect {
     Vec2 centre() const { return {x + w / 2, y + h / 2}; }
 };
 
+// The common part of two rectangles (w or h 0 when there is none), and the smallest holding both.
+Rect intersect(const Rect& a, const Rect& b);
+Rect unite(const Rect& a, const Rect& b);
+
 struct Rgb {
     std::uint8_t r, g, b;
 };
@@ -39,6 +43,9 @@ inline constexpr Rgb kKeyFunction{70, 90, 140};
 inline constexpr Rgb kKeyPressed{250, 200, 60};
 inline constexpr Rgb kTableBed{52, 56, 62};
 inline constexpr Rgb kWorkpiece{120, 96, 64};
+inline constexpr Rgb kWorkpieceFill{84, 74, 62};  // the workpiece seen on the bed
+inline constexpr Rgb kZColumn{64, 130, 170};
+inline constexpr Rgb kPanel{36, 38, 44};
 inline constexpr Rgb kToolpath{80, 200, 255};
 inline constexpr Rgb kIdealLine{120, 255, 120};
 inline constexpr Rgb kTool{255, 0, 200};           // magenta: nothing else is drawn in it

@@ -12,7 +12,6 @@ namespace alp85::gui {
 void save_screenshot(const std::string& path, int width, int height) {
     std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadBuffer(GL_BACK);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     // cairo's ARGB32: native-endian 32-bit words, rows top first (GL's are bottom first).
     cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);

@@ -5,7 +5,7 @@
 
 namespace alp85::gui {
 
-// Reads width x height pixels of the current GL framebuffer and writes them to `path`.
+// Reads width x height pixels of the current GL read framebuffer and writes them to `path`.
 // Throws std::runtime_error when the file cannot be written.
 void save_screenshot(const std::string& path, int width, int height);
 

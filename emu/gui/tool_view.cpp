@@ -24,9 +24,9 @@ Bounds table_bounds(const Machine& m, const Toolpath& path) {
     return b;
 }
 
-void draw_table(ImDrawList* dl, const Machine& m, const Toolpath& path) {
+void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& path) {
     const Rect r = kTableRect;
-    dl->AddRectFilled({r.x, r.y}, {r.x + r.w, r.y + r.h}, to_imu32(colour::kTableBed));
+    bd.fill(r, colour::kTableBed);
     dl->PushClipRect({r.x, r.y}, {r.x + r.w, r.y + r.h}, true);
     const TableView view = TableView::fit(table_bounds(m, path));
     // The mm grid, at 1-2-5 steps across the visible span.
@@ -44,7 +44,7 @@ void draw_table(ImDrawList* dl, const Machine& m, const Toolpath& path) {
     }
     const Bounds w = path.workpiece(m);
     const Vec2 w0 = view.to_px(w.x0, w.y1), w1 = view.to_px(w.x1, w.y0);
-    dl->AddRectFilled(v(w0), v(w1), to_imu32(colour::kWorkpiece, 110));
+    bd.fill_clipped({w0.x, w0.y, w1.x - w0.x, w1.y - w0.y}, r, colour::kWorkpieceFill);
     dl->AddRect(v(w0), v(w1), to_imu32(colour::kWorkpiece), 0, 0, 2);
     dl->AddText({w0.x + 4, w0.y + 2}, IM_COL32(230, 210, 170, 255), "workpiece");
     const auto& pts = path.points();
@@ -73,15 +73,15 @@ void draw_table(ImDrawList* dl, const Machine& m, const Toolpath& path) {
                 "X-Y table from above (mm from power-on): workpiece, ideal line (green), toolpath (blue), tool");
 }
 
-void draw_z_gauge(ImDrawList* dl, const Machine& m) {
+void draw_z_gauge(ImDrawList* dl, Backdrop& bd, const Machine& m) {
     const Rect r = kZGaugeRect;
     const double travel = m.tool().params().axes[2].table.travel_mm;
     const double z = m.tool().table_mm(Axis::Z);
     dl->AddText({r.x + 4, r.y - 20}, IM_COL32(230, 230, 230, 255), "Z (mm)");
-    dl->AddRectFilled({r.x + 18, r.y}, {r.x + 42, r.y + r.h}, to_imu32(colour::kTableBed));
+    bd.fill({r.x + 18, r.y, 24, r.h}, colour::kTableBed);
     const float frac = static_cast<float>(std::clamp(z / travel, 0.0, 1.0));
     const float y = r.y + r.h - frac * r.h;
-    dl->AddRectFilled({r.x + 18, y}, {r.x + 42, r.y + r.h}, to_imu32(colour::kToolpath, 160));
+    bd.fill({r.x + 18, y, 24, r.y + r.h - y}, colour::kZColumn);
     dl->AddLine({r.x + 10, y}, {r.x + 50, y}, to_imu32(colour::kTool), 3);
     for (double t : plot::ticks(0, travel, 5)) {
         const float ty = r.y + r.h - static_cast<float>(t / travel) * r.h;
@@ -90,14 +90,14 @@ void draw_z_gauge(ImDrawList* dl, const Machine& m) {
     dl->AddText({r.x, r.y + r.h + 4}, IM_COL32(230, 230, 230, 255), fmt::format("{:.2f}", z).c_str());
 }
 
-void draw_travel_strip(ImDrawList* dl, const Machine& m) {
+void draw_travel_strip(ImDrawList* dl, Backdrop& bd, const Machine& m) {
     const Rect r = kStripRect;
     const double tx = m.tool().params().axes[0].table.travel_mm, ty = m.tool().params().axes[1].table.travel_mm;
     const float h = r.h - 18, w = std::min(r.w, static_cast<float>(h * tx / ty));
     dl->AddText({r.x, r.y}, IM_COL32(230, 230, 230, 255),
                 fmt::format("whole travel: X {:g} mm, Y {:g} mm", tx, ty).c_str());
     const float x0 = r.x, y0 = r.y + 16;
-    dl->AddRectFilled({x0, y0}, {x0 + w, y0 + h}, to_imu32(colour::kTableBed));
+    bd.fill({x0, y0, w, h}, colour::kTableBed);
     const float px = x0 + static_cast<float>(std::clamp(m.tool().table_mm(Axis::X) / tx, 0.0, 1.0)) * w;
     const float py = y0 + h - static_cast<float>(std::clamp(m.tool().table_mm(Axis::Y) / ty, 0.0, 1.0)) * h;
     dl->AddCircleFilled({px, py}, 4, to_imu32(colour::kTool), 12);
@@ -107,7 +107,7 @@ std::optional<periph::MachineTool::MotorModel> axes_panel(const Machine& m) {
     const Rect r = kAxesRect;
     ImGui::SetNextWindowPos({r.x, r.y});
     ImGui::SetNextWindowSize({r.w, r.h});
-    ImGui::Begin("Machine tool", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin("Machine tool", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
     const auto& tool = m.tool();
     if (ImGui::BeginTable("axes", 9, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
         for (const char* h : {"axis", "mm", "steps", "commanded", "transducer", "lost", "end stop", "phases A /A B /B", "rotor deg"})

@@ -11,15 +11,16 @@
 #include <imgui.h>
 
 #include "emu/board/machine.h"
+#include "emu/gui/backdrop.h"
 #include "emu/gui/toolpath.h"
 
 namespace alp85::gui {
 
 // What the table view fits: the workpiece, the ideal line, the toolpath and the tool.
 Bounds table_bounds(const Machine& m, const Toolpath& path);
-void draw_table(ImDrawList* dl, const Machine& m, const Toolpath& path);
-void draw_z_gauge(ImDrawList* dl, const Machine& m);
-void draw_travel_strip(ImDrawList* dl, const Machine& m);
+void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& path);
+void draw_z_gauge(ImDrawList* dl, Backdrop& bd, const Machine& m);
+void draw_travel_strip(ImDrawList* dl, Backdrop& bd, const Machine& m);
 // An ImGui window at kAxesRect. Returns the motor model the user picked, if changed.
 std::optional<periph::MachineTool::MotorModel> axes_panel(const Machine& m);
 

@@ -1,0 +1,163 @@
+#define GL_GLEXT_PROTOTYPES 1
+#include "emu/gui/canvas.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <SDL_opengl.h>
+#include <backends/imgui_impl_opengl3.h>
+
+namespace alp85::gui {
+namespace {
+
+std::uint64_t fnv(std::uint64_t h, const void* data, std::size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    // 8 bytes at a time (FNV-1a over words): the vertex buffers are tens of kilobytes a frame.
+    std::size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        std::uint64_t w;
+        std::memcpy(&w, p + i, 8);
+        h = (h ^ w) * 0x100000001B3ull;
+    }
+    for (; i < n; ++i) h = (h ^ p[i]) * 0x100000001B3ull;
+    return h;
+}
+
+bool same(const Backdrop::Fill& a, const Backdrop::Fill& b) {
+    return a.r.x == b.r.x && a.r.y == b.r.y && a.r.w == b.r.w && a.r.h == b.r.h && a.c.r == b.c.r && a.c.g == b.c.g &&
+           a.c.b == b.c.b;
+}
+
+Rect rect_of(const ImVec4& c) { return {c.x, c.y, c.z - c.x, c.w - c.y}; }
+
+bool overlap(const Rect& a, const Rect& b) {
+    const Rect i = intersect(a, b);
+    return i.w > 0 && i.h > 0;
+}
+
+}  // namespace
+
+Canvas::~Canvas() {
+    if (fbo_) glDeleteFramebuffers(1, &fbo_);
+    if (rbo_) glDeleteRenderbuffers(1, &rbo_);
+}
+
+bool Canvas::init(int w, int h) {
+    w_ = w, h_ = h;
+    glGenRenderbuffers(1, &rbo_);
+    glBindRenderbuffer(GL_RENDERBUFFER, rbo_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
+    glGenFramebuffers(1, &fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rbo_);
+    const bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    full_ = true;
+    return ok;
+}
+
+bool Canvas::render(ImDrawData* dd, const Backdrop& bd, Rgb background) {
+    std::vector<Rect> damage;
+    const Rect all{0, 0, static_cast<float>(w_), static_cast<float>(h_)};
+    // The draw lists: a changed one damages where it was and where it is.
+    for (auto& [name, st] : lists_) st.seen = false;
+    for (int i = 0; i < dd->CmdListsCount; ++i) {
+        const ImDrawList* l = dd->CmdLists[i];
+        std::uint64_t h = 0xCBF29CE484222325ull;
+        h = fnv(h, l->VtxBuffer.Data, static_cast<std::size_t>(l->VtxBuffer.Size) * sizeof(ImDrawVert));
+        h = fnv(h, l->IdxBuffer.Data, static_cast<std::size_t>(l->IdxBuffer.Size) * sizeof(ImDrawIdx));
+        Rect clips{};
+        for (const ImDrawCmd& c : l->CmdBuffer) {
+            h = fnv(h, &c.ClipRect, sizeof c.ClipRect);
+            h = fnv(h, &c.TextureId, sizeof c.TextureId);
+            if (c.ElemCount) clips = unite(clips, rect_of(c.ClipRect));
+        }
+        // Where the list draws: its vertices' bounding box, inside its clip rectangles.
+        float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
+        for (const ImDrawVert& v : l->VtxBuffer)
+            x0 = std::min(x0, v.pos.x), y0 = std::min(y0, v.pos.y), x1 = std::max(x1, v.pos.x), y1 = std::max(y1, v.pos.y);
+        const Rect extent = x1 >= x0 ? intersect(intersect(Rect{x0, y0, x1 - x0, y1 - y0}, clips), all) : Rect{};
+        const std::string name = l->_OwnerName ? l->_OwnerName : std::to_string(i);
+        auto [it, added] = lists_.try_emplace(name);
+        ListState& st = it->second;
+        if (added || st.hash != h) damage.push_back(unite(st.extent, extent));
+        st.hash = h, st.extent = extent, st.seen = true;
+    }
+    for (auto it = lists_.begin(); it != lists_.end();) {  // a window gone (a closed combo box)
+        if (!it->second.seen) {
+            damage.push_back(it->second.extent);
+            it = lists_.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    // The backdrop: rectangles that changed damage their old and new places.
+    const auto& now = bd.fills();
+    for (std::size_t i = 0; i < std::max(now.size(), backdrop_.size()); ++i) {
+        const bool a = i < now.size(), b = i < backdrop_.size();
+        if (a && b && same(now[i], backdrop_[i])) continue;
+        if (a) damage.push_back(now[i].r);
+        if (b) damage.push_back(backdrop_[i].r);
+    }
+    backdrop_ = now;
+    if (full_) damage = {all}, full_ = false;
+    // Overlapping damage is merged (whole pixels, inside the window).
+    std::vector<Rect> merged;
+    for (Rect d : damage) {
+        d = intersect(Rect{std::floor(d.x) - 1, std::floor(d.y) - 1, std::ceil(d.w) + 3, std::ceil(d.h) + 3}, all);
+        if (d.w <= 0 || d.h <= 0) continue;
+        for (bool again = true; again;) {
+            again = false;
+            for (auto it = merged.begin(); it != merged.end(); ++it)
+                if (overlap(*it, d)) {
+                    d = unite(*it, d);
+                    merged.erase(it);
+                    again = true;
+                    break;
+                }
+        }
+        merged.push_back(d);
+    }
+    if (merged.empty()) return false;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glViewport(0, 0, w_, h_);
+    for (const Rect& d : merged) {
+        paint(dd, bd, background, d);
+        painted_ += static_cast<std::uint64_t>(d.w * d.h);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return true;
+}
+
+void Canvas::paint(ImDrawData* dd, const Backdrop& bd, Rgb background, const Rect& damage) {
+    bd.paint(background, h_, damage);
+    // Every command clipped to the damage (the renderer skips those left empty), then restored.
+    std::vector<ImVec4> saved;
+    for (int i = 0; i < dd->CmdListsCount; ++i)
+        for (ImDrawCmd& c : dd->CmdLists[i]->CmdBuffer) {
+            saved.push_back(c.ClipRect);
+            const Rect r = intersect(rect_of(c.ClipRect), damage);
+            c.ClipRect = r.w > 0 && r.h > 0 ? ImVec4{r.x, r.y, r.x + r.w, r.y + r.h} : ImVec4{0, 0, 0, 0};
+        }
+    ImGui_ImplOpenGL3_RenderDrawData(dd);
+    std::size_t k = 0;
+    for (int i = 0; i < dd->CmdListsCount; ++i)
+        for (ImDrawCmd& c : dd->CmdLists[i]->CmdBuffer) c.ClipRect = saved[k++];
+}
+
+void Canvas::present() {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, w_, h_, 0, 0, w_, h_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Canvas::unbind() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+
+void Canvas::bind_for_read() {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+}
+
+}  // namespace alp85::gui
