@@ -34,7 +34,7 @@
 namespace alp85::gui {
 namespace {
 
-constexpr auto kMachineBudget = std::chrono::milliseconds(11);  // of a 16.7 ms frame
+constexpr auto kMachineBudget = std::chrono::milliseconds(10);  // of a 16.7 ms frame
 constexpr std::uint64_t kSamplePeriod = board::tstates_from_ms(1);
 constexpr int kClickDownFrames = 2, kClickFrames = 8, kSettleFrames = 30;
 
@@ -117,6 +117,7 @@ private:
     bool quit_ = false;
     double fps_ = 0;
     Canvas canvas_;
+    AxesReadout axes_{};
     long presented_ = 0;  // frames that changed the picture
     bool expose_ = true;
     double machine_s_ = 0, render_s_ = 0;  // host time in the machine and in drawing (--stats)
@@ -199,7 +200,7 @@ void App::handle(const SDL_Event& e) {
         case SDL_QUIT: quit_ = true; break;
         case SDL_WINDOWEVENT:
             if (e.window.event == SDL_WINDOWEVENT_CLOSE) quit_ = true;
-            if (e.window.event == SDL_WINDOWEVENT_EXPOSED) expose_ = true;
+            if (e.window.event == SDL_WINDOWEVENT_EXPOSED) expose_ = true, canvas_.expose();
             break;
         case SDL_MOUSEBUTTONDOWN:
             if (e.button.button == SDL_BUTTON_LEFT) {
@@ -340,7 +341,8 @@ void App::drive_clicks() {
 }
 
 // A borderless, transparent window over `r` that takes no input (the keypad's clicks are
-// hit-tested on the SDL events): one draw list per view.
+// hit-tested on the SDL events): one draw list per view. Layers are stacked in the order they are
+// first made (not NoBringToFrontOnFocus: ImGui puts such a new window behind all the others).
 ImDrawList* begin_layer(const char* name, const Rect& r) {
     ImGui::SetNextWindowPos({r.x, r.y});
     ImGui::SetNextWindowSize({r.w, r.h});
@@ -348,8 +350,7 @@ ImDrawList* begin_layer(const char* name, const Rect& r) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0);
     ImGui::Begin(name, nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoInputs |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
-                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
     ImGui::PopStyleVar(2);
     return ImGui::GetWindowDrawList();
 }
@@ -363,14 +364,18 @@ void App::draw() {
     ImGui::End();
     draw_display(begin_layer("##display", kDisplayRect), backdrop_, machine().display());
     ImGui::End();
-    draw_table(begin_layer("##table", kTableRect), backdrop_, machine(), path_);
+    const TableView view = table_view(machine(), path_);
+    draw_table(begin_layer("##table", kTableRect), backdrop_, machine(), path_, view);
+    ImGui::End();
+    draw_toolpath(begin_layer("##toolpath", kTableRect), machine(), path_, view);
     ImGui::End();
     draw_z_gauge(begin_layer("##z", {kZGaugeRect.x - 8, kTableRect.y, kWindowWidth - kZGaugeRect.x + 8, kTableRect.h}), backdrop_,
                  machine());
     ImGui::End();
     draw_travel_strip(begin_layer("##strip", kStripRect), backdrop_, machine());
     ImGui::End();
-    if (const auto model = axes_panel(machine())) command(*model == periph::MachineTool::MotorModel::Ideal ? "motor ideal" : "motor physical");
+    if (frames_ % 4 == 0) axes_ = read_axes(machine());
+    if (const auto model = axes_panel(axes_, machine().tool().model())) command(*model == periph::MachineTool::MotorModel::Ideal ? "motor ideal" : "motor physical");
     // Four times a second: a clock that changes every frame would redraw its panel every frame.
     if (frames_ % 15 == 0)
         ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include <SDL_opengl.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -54,6 +55,11 @@ bool Canvas::init(int w, int h) {
     const bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     full_ = true;
+    present_full_ = true;
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string r = renderer ? renderer : "";
+    software_ = r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos ||
+                r.find("swrast") != std::string::npos;
     return ok;
 }
 
@@ -102,11 +108,10 @@ bool Canvas::render(ImDrawData* dd, const Backdrop& bd, Rgb background) {
     }
     backdrop_ = now;
     if (full_) damage = {all}, full_ = false;
-    // Overlapping damage is merged (whole pixels, inside the window).
+    // Overlapping damage is merged (whole pixels, inside the window), and so are two rectangles
+    // that one draw command crosses: then each command is drawn into one rectangle at most.
     std::vector<Rect> merged;
-    for (Rect d : damage) {
-        d = intersect(Rect{std::floor(d.x) - 1, std::floor(d.y) - 1, std::ceil(d.w) + 3, std::ceil(d.h) + 3}, all);
-        if (d.w <= 0 || d.h <= 0) continue;
+    const auto add = [&merged](Rect d) {
         for (bool again = true; again;) {
             again = false;
             for (auto it = merged.begin(); it != merged.end(); ++it)
@@ -118,29 +123,66 @@ bool Canvas::render(ImDrawData* dd, const Backdrop& bd, Rgb background) {
                 }
         }
         merged.push_back(d);
+    };
+    for (Rect d : damage) {
+        d = intersect(Rect{std::floor(d.x) - 1, std::floor(d.y) - 1, std::ceil(d.w) + 3, std::ceil(d.h) + 3}, all);
+        if (d.w > 0 && d.h > 0) add(d);
     }
     if (merged.empty()) return false;
+    for (bool again = true; again;) {
+        again = false;
+        for (int i = 0; i < dd->CmdListsCount && !again; ++i)
+            for (const ImDrawCmd& c : dd->CmdLists[i]->CmdBuffer) {
+                Rect hit{};
+                int hits = 0;
+                for (const Rect& d : merged)
+                    if (overlap(d, rect_of(c.ClipRect))) hit = unite(hit, d), ++hits;
+                if (hits > 1) {
+                    add(hit);
+                    again = true;
+                    break;
+                }
+            }
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glViewport(0, 0, w_, h_);
     for (const Rect& d : merged) {
-        paint(dd, bd, background, d);
+        bd.paint(background, h_, d);
         painted_ += static_cast<std::uint64_t>(d.w * d.h);
     }
+    paint(dd, merged);
+    previous_damage_ = std::move(damage_);
+    damage_ = merged;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return true;
 }
 
-void Canvas::paint(ImDrawData* dd, const Backdrop& bd, Rgb background, const Rect& damage) {
-    bd.paint(background, h_, damage);
-    // Every command clipped to the damage (the renderer skips those left empty), then restored.
+// One pass of the renderer over the lists that draw into the damage, each command clipped to the
+// damage rectangle it meets (the renderer skips the commands left empty); then restored.
+void Canvas::paint(ImDrawData* dd, const std::vector<Rect>& damage) {
     std::vector<ImVec4> saved;
-    for (int i = 0; i < dd->CmdListsCount; ++i)
-        for (ImDrawCmd& c : dd->CmdLists[i]->CmdBuffer) {
+    std::vector<ImDrawList*> lists;
+    int vtx = 0, idx = 0;
+    for (int i = 0; i < dd->CmdListsCount; ++i) {
+        ImDrawList* l = dd->CmdLists[i];
+        bool used = false;
+        for (ImDrawCmd& c : l->CmdBuffer) {
             saved.push_back(c.ClipRect);
-            const Rect r = intersect(rect_of(c.ClipRect), damage);
-            c.ClipRect = r.w > 0 && r.h > 0 ? ImVec4{r.x, r.y, r.x + r.w, r.y + r.h} : ImVec4{0, 0, 0, 0};
+            Rect r{};
+            for (const Rect& d : damage)
+                if (overlap(d, rect_of(c.ClipRect))) r = intersect(rect_of(c.ClipRect), d);
+            const bool draws = r.w > 0 && r.h > 0 && c.ElemCount > 0;
+            c.ClipRect = draws ? ImVec4{r.x, r.y, r.x + r.w, r.y + r.h} : ImVec4{0, 0, 0, 0};
+            used = used || draws;
         }
-    ImGui_ImplOpenGL3_RenderDrawData(dd);
+        if (used) lists.push_back(l), vtx += l->VtxBuffer.Size, idx += l->IdxBuffer.Size;
+    }
+    ImDrawData part = *dd;  // only the lists that draw: the others' buffers are not uploaded
+    part.CmdLists = lists.data();
+    part.CmdListsCount = static_cast<int>(lists.size());
+    part.TotalVtxCount = vtx;
+    part.TotalIdxCount = idx;
+    if (!lists.empty()) ImGui_ImplOpenGL3_RenderDrawData(&part);
     std::size_t k = 0;
     for (int i = 0; i < dd->CmdListsCount; ++i)
         for (ImDrawCmd& c : dd->CmdLists[i]->CmdBuffer) c.ClipRect = saved[k++];
@@ -149,7 +191,17 @@ void Canvas::paint(ImDrawData* dd, const Backdrop& bd, Rgb background, const Rec
 void Canvas::present() {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, w_, h_, 0, 0, w_, h_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    if (!software_ || present_full_) {
+        glBlitFramebuffer(0, 0, w_, h_, 0, 0, w_, h_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        present_full_ = false;
+    } else {
+        for (const auto* list : {&damage_, &previous_damage_})
+            for (const Rect& d : *list) {
+                const int x0 = static_cast<int>(d.x), x1 = static_cast<int>(std::ceil(d.x + d.w));
+                const int y0 = h_ - static_cast<int>(std::ceil(d.y + d.h)), y1 = h_ - static_cast<int>(d.y);
+                glBlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            }
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -31,12 +31,17 @@ public:
     bool init(int w, int h);
     // Paints what changed; returns true when anything was painted.
     bool render(ImDrawData* dd, const Backdrop& bd, Rgb background);
-    // Copies the picture into the window's back buffer (then swap).
+    // Copies the picture into the window's back buffer (then swap): with software OpenGL only what
+    // this frame and the one before repainted (Mesa's software back buffer keeps its pixels across
+    // a swap, and a pair of exchanged buffers would be one frame behind); with a GPU, all of it.
     void present();
+    bool software() const { return software_; }
     // Makes the picture the source of glReadPixels (screenshots).
     void bind_for_read();
     void unbind();
     void invalidate() { full_ = true; }
+    // The window lost its pixels (exposed): the next present copies everything.
+    void expose() { present_full_ = true; }
     std::uint64_t painted_pixels() const { return painted_; }
 
 private:
@@ -45,13 +50,16 @@ private:
         Rect extent;
         bool seen = false;
     };
-    void paint(ImDrawData* dd, const Backdrop& bd, Rgb background, const Rect& damage);
+    void paint(ImDrawData* dd, const std::vector<Rect>& damage);
 
     unsigned fbo_ = 0, rbo_ = 0;
     int w_ = 0, h_ = 0;
     bool full_ = true;
     std::map<std::string, ListState> lists_;
     std::vector<Backdrop::Fill> backdrop_;
+    std::vector<Rect> damage_, previous_damage_;
+    bool software_ = false;
+    bool present_full_ = true;
     std::uint64_t painted_ = 0;
 };
 

@@ -24,11 +24,12 @@ Bounds table_bounds(const Machine& m, const Toolpath& path) {
     return b;
 }
 
-void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& path) {
+TableView table_view(const Machine& m, const Toolpath& path) { return TableView::fit(table_bounds(m, path)); }
+
+void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& path, const TableView& view) {
     const Rect r = kTableRect;
     bd.fill(r, colour::kTableBed);
     dl->PushClipRect({r.x, r.y}, {r.x + r.w, r.y + r.h}, true);
-    const TableView view = TableView::fit(table_bounds(m, path));
     // The mm grid, at 1-2-5 steps across the visible span.
     const double half_w = (r.w / 2) / view.scale, half_h = (r.h / 2) / view.scale;
     const ImU32 grid = IM_COL32(80, 86, 94, 255), label = IM_COL32(150, 156, 164, 255);
@@ -47,6 +48,14 @@ void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& 
     bd.fill_clipped({w0.x, w0.y, w1.x - w0.x, w1.y - w0.y}, r, colour::kWorkpieceFill);
     dl->AddRect(v(w0), v(w1), to_imu32(colour::kWorkpiece), 0, 0, 2);
     dl->AddText({w0.x + 4, w0.y + 2}, IM_COL32(230, 210, 170, 255), "workpiece");
+    dl->PopClipRect();
+    dl->AddText({r.x + 6, r.y + 4}, IM_COL32(230, 230, 230, 255),
+                "X-Y table from above (mm from power-on): workpiece, ideal line (green), toolpath (blue), tool");
+}
+
+void draw_toolpath(ImDrawList* dl, const Machine& m, const Toolpath& path, const TableView& view) {
+    const Rect r = kTableRect;
+    dl->PushClipRect({r.x, r.y}, {r.x + r.w, r.y + r.h}, true);
     const auto& pts = path.points();
     if (pts.size() >= 2) {
         // Thinned to about one point per pixel of the view.
@@ -69,8 +78,6 @@ void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& 
     dl->AddCircle(v(tool), kToolRadius + 1.5f, IM_COL32(0, 0, 0, 255), 20, 2);
     dl->AddCircleFilled(v(tool), kToolRadius, to_imu32(colour::kTool), 20);
     dl->PopClipRect();
-    dl->AddText({r.x + 6, r.y + 4}, IM_COL32(230, 230, 230, 255),
-                "X-Y table from above (mm from power-on): workpiece, ideal line (green), toolpath (blue), tool");
 }
 
 void draw_z_gauge(ImDrawList* dl, Backdrop& bd, const Machine& m) {
@@ -98,34 +105,47 @@ void draw_travel_strip(ImDrawList* dl, Backdrop& bd, const Machine& m) {
                 fmt::format("whole travel: X {:g} mm, Y {:g} mm", tx, ty).c_str());
     const float x0 = r.x, y0 = r.y + 16;
     bd.fill({x0, y0, w, h}, colour::kTableBed);
-    const float px = x0 + static_cast<float>(std::clamp(m.tool().table_mm(Axis::X) / tx, 0.0, 1.0)) * w;
-    const float py = y0 + h - static_cast<float>(std::clamp(m.tool().table_mm(Axis::Y) / ty, 0.0, 1.0)) * h;
+    // Whole pixels: a dot moving by less than one does not repaint the strip.
+    const float px = std::round(x0 + static_cast<float>(std::clamp(m.tool().table_mm(Axis::X) / tx, 0.0, 1.0)) * w);
+    const float py = std::round(y0 + h - static_cast<float>(std::clamp(m.tool().table_mm(Axis::Y) / ty, 0.0, 1.0)) * h);
     dl->AddCircleFilled({px, py}, 4, to_imu32(colour::kTool), 12);
 }
 
-std::optional<periph::MachineTool::MotorModel> axes_panel(const Machine& m) {
+AxesReadout read_axes(const Machine& m) {
+    AxesReadout r;
+    const auto& tool = m.tool();
+    for (int a = 0; a < 3; ++a) {
+        const auto axis = static_cast<Axis>(a);
+        r[static_cast<std::size_t>(a)] = {tool.table_mm(axis),         tool.table_steps(axis),
+                                          tool.rotor_angle_deg(axis),  tool.commanded_steps(axis),
+                                          tool.transducer_count(axis), tool.lost_steps(axis),
+                                          tool.end_stop(axis).at,      tool.phase_pattern(axis)};
+    }
+    return r;
+}
+
+std::optional<periph::MachineTool::MotorModel> axes_panel(const AxesReadout& axes, periph::MachineTool::MotorModel motor) {
     const Rect r = kAxesRect;
     ImGui::SetNextWindowPos({r.x, r.y});
     ImGui::SetNextWindowSize({r.w, r.h});
-    ImGui::Begin("Machine tool", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
-    const auto& tool = m.tool();
+    ImGui::Begin("Machine tool", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
     if (ImGui::BeginTable("axes", 9, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
         for (const char* h : {"axis", "mm", "steps", "commanded", "transducer", "lost", "end stop", "phases A /A B /B", "rotor deg"})
             ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
         for (int a = 0; a < 3; ++a) {
-            const auto axis = static_cast<Axis>(a);
+            const AxisReadout& x = axes[static_cast<std::size_t>(a)];
             ImGui::TableNextRow();
             ImGui::TableNextColumn(); ImGui::TextUnformatted(a == 0 ? "X" : a == 1 ? "Y" : "Z");
-            ImGui::TableNextColumn(); ImGui::Text("%.3f", tool.table_mm(axis));
-            ImGui::TableNextColumn(); ImGui::Text("%.2f", tool.table_steps(axis));
-            ImGui::TableNextColumn(); ImGui::Text("%lld", static_cast<long long>(tool.commanded_steps(axis)));
-            ImGui::TableNextColumn(); ImGui::Text("%lld", static_cast<long long>(tool.transducer_count(axis)));
-            ImGui::TableNextColumn(); ImGui::Text("%lld", static_cast<long long>(tool.lost_steps(axis)));
-            const auto stop = tool.end_stop(axis);
-            ImGui::TableNextColumn(); ImGui::TextUnformatted(stop.at < 0 ? "LOW" : stop.at > 0 ? "HIGH" : "-");
+            ImGui::TableNextColumn(); ImGui::Text("%.3f", x.mm);
+            ImGui::TableNextColumn(); ImGui::Text("%.2f", x.steps);
+            ImGui::TableNextColumn(); ImGui::Text("%lld", static_cast<long long>(x.commanded));
+            ImGui::TableNextColumn(); ImGui::Text("%lld", static_cast<long long>(x.count));
+            ImGui::TableNextColumn(); ImGui::Text("%lld", static_cast<long long>(x.lost));
+            ImGui::TableNextColumn(); ImGui::TextUnformatted(x.end_stop < 0 ? "LOW" : x.end_stop > 0 ? "HIGH" : "-");
             ImGui::TableNextColumn();
-            const std::uint8_t ph = tool.phase_pattern(axis);
+            const std::uint8_t ph = x.phases;
             ImDrawList* dl = ImGui::GetWindowDrawList();
             const ImVec2 p = ImGui::GetCursorScreenPos();
             for (int i = 0; i < 4; ++i) {
@@ -134,12 +154,12 @@ std::optional<periph::MachineTool::MotorModel> axes_panel(const Machine& m) {
                 dl->AddRectFilled(q, {q.x + 16, q.y + 12}, on ? IM_COL32(255, 200, 40, 255) : IM_COL32(60, 60, 60, 255), 2);
             }
             ImGui::Dummy({92, 14});
-            ImGui::TableNextColumn(); ImGui::Text("%.1f", tool.rotor_angle_deg(axis));
+            ImGui::TableNextColumn(); ImGui::Text("%.1f", x.rotor_deg);
         }
         ImGui::EndTable();
     }
     std::optional<periph::MachineTool::MotorModel> pick;
-    int model = tool.model() == periph::MachineTool::MotorModel::Ideal ? 0 : 1;
+    int model = motor == periph::MachineTool::MotorModel::Ideal ? 0 : 1;
     ImGui::TextUnformatted("Motors:");
     ImGui::SameLine();
     if (ImGui::RadioButton("ideal (1.8 deg per pulse)", &model, 0)) pick = periph::MachineTool::MotorModel::Ideal;

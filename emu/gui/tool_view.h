@@ -8,6 +8,10 @@
 // it. The view fits the workpiece, the ideal line, the toolpath and the tool.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <optional>
+
 #include <imgui.h>
 
 #include "emu/board/machine.h"
@@ -18,11 +22,25 @@ namespace alp85::gui {
 
 // What the table view fits: the workpiece, the ideal line, the toolpath and the tool.
 Bounds table_bounds(const Machine& m, const Toolpath& path);
-void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& path);
+TableView table_view(const Machine& m, const Toolpath& path);
+// The table: bed, mm grid, workpiece (changes only when the view does).
+void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& path, const TableView& view);
+// Over it, in a window of its own (what moves): the toolpath, the ideal line, the tool.
+void draw_toolpath(ImDrawList* dl, const Machine& m, const Toolpath& path, const TableView& view);
 void draw_z_gauge(ImDrawList* dl, Backdrop& bd, const Machine& m);
 void draw_travel_strip(ImDrawList* dl, Backdrop& bd, const Machine& m);
+// What the axis panel shows, read from the tool. The app reads it 15 times a second (a readout
+// changing at 60 Hz cannot be read, and would repaint its panel every frame).
+struct AxisReadout {
+    double mm = 0, steps = 0, rotor_deg = 0;
+    std::int64_t commanded = 0, count = 0, lost = 0;
+    std::int8_t end_stop = 0;
+    std::uint8_t phases = 0;
+};
+using AxesReadout = std::array<AxisReadout, 3>;
+AxesReadout read_axes(const Machine& m);
 // An ImGui window at kAxesRect. Returns the motor model the user picked, if changed.
-std::optional<periph::MachineTool::MotorModel> axes_panel(const Machine& m);
+std::optional<periph::MachineTool::MotorModel> axes_panel(const AxesReadout& axes, periph::MachineTool::MotorModel model);
 
 inline constexpr float kToolRadius = 7;
 
