@@ -1,5 +1,7 @@
 // alp85 gui [FIRMWARE...]: the ALP 85 and its machine tool in a window (emu/gui). Exit status: 0,
 // 1 the script (--script) or --expect-display failed, 2 a usage error or no display.
+#include <filesystem>
+#include <iostream>
 #include <memory>
 
 #include "emu/cli/commands.h"
@@ -35,7 +37,7 @@ void add_gui_command(CLI::App& app, int& status) {
         ->check(CLI::IsMember({"0.1", "1", "10", "100", "max"}))
         ->capture_default_str();
     add_motor_option(cmd, args->motor);
-    cmd->add_option("--out-dir", args->o.out_dir, "Folder for the files the script writes (as alp85 script --out-dir)");
+    cmd->add_option("--out-dir", args->o.out_dir, "Folder for the files the script writes (as alp85 script --out-dir); created if missing");
     cmd->footer(
         "Examples:\n"
         "  alp85 gui                       the monitor and thesis-fixed; type R 7 0800 EXEC\n"
@@ -43,6 +45,15 @@ void add_gui_command(CLI::App& app, int& status) {
         "Without a display it exits with status 2; use `alp85 run` or `alp85 script` there.");
     cmd->callback([args, &status] {
         args->o.motor = motor_model_of(args->motor);
+        if (!args->o.out_dir.empty()) {
+            std::error_code ec;
+            std::filesystem::create_directories(args->o.out_dir, ec);
+            if (ec) {
+                std::cerr << "alp85 gui: --out-dir " << args->o.out_dir << ": " << ec.message() << '\n';
+                status = 2;
+                return;
+            }
+        }
         const std::string s = args->speed;
         args->o.speed = s == "0.1" ? 0 : s == "1" ? 1 : s == "10" ? 2 : s == "100" ? 3 : 4;
         if (args->frames > 0) args->o.frames = args->frames;
