@@ -36,7 +36,8 @@ namespace {
 
 constexpr auto kMachineBudget = std::chrono::milliseconds(10);  // of a 16.7 ms frame
 constexpr std::uint64_t kSamplePeriod = board::tstates_from_ms(1);
-constexpr int kClickDownFrames = 2, kClickFrames = 8, kSettleFrames = 30;
+constexpr int kSettleFrames = 30;
+constexpr std::uint64_t kClickGap = board::tstates_from_ms(100);
 
 double cpu_seconds() {
     rusage u{};
@@ -110,7 +111,8 @@ private:
     std::optional<PadKey> mouse_key_;
     std::vector<std::string> clicks_;
     std::size_t click_pos_ = 0;
-    long click_frame_ = 0;
+    std::uint64_t click_t_ = 0;  // machine time of the next click event
+    bool click_down_ = false;
     long idle_frames_ = 0;  // frames since the script and the clicks were done
     long frames_ = 0;
     std::string pending_shot_;
@@ -255,7 +257,8 @@ void App::step_script(HostClock::time_point until) {
 
 void App::run_machine(HostClock::time_point until) {
     Machine& m = machine();
-    const std::uint64_t goal = pacer_.target(m.now(), HostClock::now());
+    std::uint64_t goal = pacer_.target(m.now(), HostClock::now());
+    if (!script_active_ && click_pos_ < clicks_.size()) goal = std::min(goal, std::max(click_t_, m.now()));
     std::uint64_t slice = board::tstates_from_ms(5);
     while (m.now() < goal) {
         const auto t0 = HostClock::now();
@@ -315,9 +318,11 @@ void App::act(const Action& a) {
 }
 
 // The --click test hook: each button is pressed by a synthesized left-button-down event at its
-// centre and released kClickDownFrames frames later, exactly as a real click arrives.
+// centre and released by a button-up event, as a real click arrives. They are timed in machine
+// time (held kKeyHold, then kClickGap before the next), and the machine is not run past the next
+// one, so that a slow host gives the same presses as a fast one.
 void App::drive_clicks() {
-    if (click_pos_ >= clicks_.size()) return;
+    if (click_pos_ >= clicks_.size() || machine().now() < click_t_) return;
     const auto k = find_pad_key(clicks_[click_pos_]);
     if (!k) {
         std::cerr << "alp85 gui: --click " << clicks_[click_pos_] << ": no such key\n";
@@ -327,17 +332,17 @@ void App::drive_clicks() {
     }
     const Vec2 c = key_rect(*k).centre();
     SDL_Event e{};
-    if (click_frame_ == 0 || click_frame_ == kClickDownFrames) {
-        e.type = click_frame_ == 0 ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
-        e.button.windowID = SDL_GetWindowID(window_);
-        e.button.button = SDL_BUTTON_LEFT;
-        e.button.state = click_frame_ == 0 ? SDL_PRESSED : SDL_RELEASED;
-        e.button.clicks = 1;
-        e.button.x = static_cast<int>(c.x);
-        e.button.y = static_cast<int>(c.y);
-        SDL_PushEvent(&e);
-    }
-    if (++click_frame_ == kClickFrames) click_frame_ = 0, ++click_pos_;
+    e.type = click_down_ ? SDL_MOUSEBUTTONUP : SDL_MOUSEBUTTONDOWN;
+    e.button.windowID = SDL_GetWindowID(window_);
+    e.button.button = SDL_BUTTON_LEFT;
+    e.button.state = click_down_ ? SDL_RELEASED : SDL_PRESSED;
+    e.button.clicks = 1;
+    e.button.x = static_cast<int>(c.x);
+    e.button.y = static_cast<int>(c.y);
+    SDL_PushEvent(&e);  // handled at the start of the next frame, before the machine runs
+    click_t_ = machine().now() + (click_down_ ? kClickGap : kKeyHold);
+    if (click_down_) ++click_pos_;
+    click_down_ = !click_down_;
 }
 
 // A borderless, transparent window over `r` that takes no input (the keypad's clicks are
