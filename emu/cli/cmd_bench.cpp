@@ -73,7 +73,7 @@ int run_bench_machine() {
     double none_s = 0, ideal_s = 0;
     for (const auto& [tool, name] : {std::pair{MachineBenchTool::None, "no tool"}, std::pair{MachineBenchTool::Ideal, "ideal"},
                                      std::pair{MachineBenchTool::Physical, "physical"}}) {
-        const MachineBenchRun r = run_machine_bench(tool);
+        const MachineBenchRun r = run_machine_bench(tool, 11);
         const double machine_s = static_cast<double>(r.tstates) / 3.072e6;
         std::printf("%-9s     %.3f s machine time in %.3f s CPU time: %.0fx real time", name, machine_s, r.host_seconds,
                     machine_s / r.host_seconds);
