@@ -3,25 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "emu/script/parser.h"
+#include "tests/scripts/parse_helpers.h"
 
 namespace alp85::script {
 namespace {
 
-Command one(std::string_view line) {
-    std::vector<ParseError> errors;
-    auto c = parse_line(line, "t.alp", 1, errors);
-    EXPECT_TRUE(errors.empty()) << (errors.empty() ? "" : errors[0].format());
-    EXPECT_TRUE(c.has_value());
-    return c.value_or(Command{});
-}
-
-ParseError error_of(std::string_view line) {
-    std::vector<ParseError> errors;
-    auto c = parse_line(line, "t.alp", 7, errors);
-    EXPECT_FALSE(c.has_value());
-    EXPECT_EQ(errors.size(), 1u);
-    return errors.empty() ? ParseError{} : errors[0];
-}
+using test::error_of;
+using test::one;
 
 TEST(ScriptNumbers, IntelSuffixesAndCPrefix) {
     EXPECT_EQ(parse_number("1234"), 1234);
