@@ -9,6 +9,7 @@ namespace alp85 {
 CpuBench::CpuBench(Variant variant) : ram_(0x10000, 0), cpu_(bus_, variant) {
     std::copy_n(bench::kCpuBenchProgram, bench::kCpuBenchProgram_size, ram_.begin() + bench::kCpuBenchProgram_origin);
     bus_.map_ram(0, 0x10000, ram_.data());
+    cpu_.set_fast_loops(false);  // the interpreter alone: every DL iteration executed
 }
 
 std::uint64_t CpuBench::run(std::uint64_t tstates) { return cpu_.run(cpu_.tstates() + tstates); }

@@ -37,7 +37,7 @@ constexpr const char* kMotion = R"(press EXEC hold 30ms gap 0t
 
 }  // namespace
 
-ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model, std::uint64_t window) {
+ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model, std::uint64_t window, bool fast_loops) {
     ThesisBenchRun r;
     std::vector<script::ParseError> errors;
     const auto setup = script::parse_script(kSetup, "bench-thesis", errors);
@@ -48,6 +48,7 @@ ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model, std::uint
     }
     script::Session session(script::SessionOptions{});
     session.machine().tool().set_model(model);
+    session.machine().cpu().set_fast_loops(fast_loops);
     for (const auto& c : setup) {
         if (const auto o = session.execute(c); o.status != script::Session::Status::Ok) {
             r.error = o.message;
@@ -76,6 +77,7 @@ ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model, std::uint
     const auto& tool = session.machine().tool();
     r.x_steps = std::llround(tool.table_steps(periph::MachineTool::Axis::X));
     r.y_steps = std::llround(tool.table_steps(periph::MachineTool::Axis::Y));
+    r.end_state = session.machine().snapshot_bytes();
     return r;
 }
 

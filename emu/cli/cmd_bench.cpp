@@ -93,22 +93,36 @@ int run_bench_machine() {
     return 0;
 }
 
+// The fastest of five runs (the machine's figures are the same every time).
+ThesisBenchRun fastest_thesis_run(periph::MachineTool::MotorModel model, std::uint64_t window, bool fast_loops) {
+    ThesisBenchRun r = run_thesis_bench(model, window, fast_loops);
+    for (int i = 1; i < 5 && r.error.empty(); ++i) {
+        ThesisBenchRun again = run_thesis_bench(model, window, fast_loops);
+        if (again.host_seconds < r.host_seconds) r = std::move(again);
+    }
+    return r;
+}
+
 int run_bench_thesis() {
     std::printf("workload:     thesis-fixed, a 100 mm diagonal at 1000 mm/min: (0100, 0100) to (1514, 1514) steps,\n"
-                "              typed in as Appendix C says; the motion (EXEC to Bitti) timed\n");
+                "              typed in as Appendix C says; the motion (EXEC to Bitti) timed\n"
+                "              as alp85 runs it, and with every DL delay-loop iteration interpreted\n");
     // The ideal motors finish; the physical ones are given the same machine time (they may not
     // finish: see docs/results.md on the closed loop and the rotor's ringing).
     std::uint64_t window = 120ull * 3'072'000;
     for (const auto& [model, name, target] :
          {std::tuple{periph::MachineTool::MotorModel::Ideal, "ideal", 1000}, std::tuple{periph::MachineTool::MotorModel::Physical, "physical", 200}}) {
-        // The fastest of five runs (the machine's figures are the same every time).
-        ThesisBenchRun r = run_thesis_bench(model, window);
-        for (int i = 1; i < 5 && r.error.empty(); ++i) {
-            const ThesisBenchRun again = run_thesis_bench(model, window);
-            if (again.host_seconds < r.host_seconds) r = again;
+        const ThesisBenchRun r = fastest_thesis_run(model, window, true);
+        const ThesisBenchRun slow = r.error.empty() ? fastest_thesis_run(model, window, false) : r;
+        if (!r.error.empty() || !slow.error.empty()) {
+            std::fprintf(stderr, "alp85 bench thesis: the walk-through failed: %s\n",
+                         (r.error.empty() ? slow.error : r.error).c_str());
+            return 1;
         }
-        if (!r.error.empty()) {
-            std::fprintf(stderr, "alp85 bench thesis: the walk-through failed: %s\n", r.error.c_str());
+        // The countdown fast path must change nothing but the host time (I8085::set_fast_loops).
+        if (slow.tstates != r.tstates || slow.end_state != r.end_state) {
+            std::fprintf(stderr, "alp85 bench thesis: %s: the run with every delay-loop iteration interpreted "
+                                 "ended in another state\n", name);
             return 1;
         }
         if (model == periph::MachineTool::MotorModel::Ideal) {
@@ -123,6 +137,8 @@ int run_bench_thesis() {
                     name, machine_s, r.host_seconds, machine_s / r.host_seconds, target,
                     r.finished ? "Bitti," : "no Bitti in that time, tables", static_cast<long long>(r.x_steps),
                     static_cast<long long>(r.y_steps));
+        std::printf("  interpreted %.3f s CPU time: %.0fx; the same end state\n", slow.host_seconds,
+                    machine_s / slow.host_seconds);
     }
     return 0;
 }

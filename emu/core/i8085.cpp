@@ -57,6 +57,14 @@ template <Variant V>
 constexpr auto kSZP = make_szp<V>();
 
 static_assert(kBase<Variant::I8085>[0x40] == 4 && kBase<Variant::I8080>[0x40] == 5, "MOV r,r timing");
+// The countdown fast path (JNZ, execute) times every DCR r like DCR B.
+template <Variant V>
+constexpr bool dcr_r_timed_alike() {
+    for (unsigned op : {0x0Du, 0x15u, 0x1Du, 0x25u, 0x2Du, 0x3Du})
+        if (kBase<V>[op] != kBase<V>[0x05]) return false;
+    return true;
+}
+static_assert(dcr_r_timed_alike<Variant::I8085>() && dcr_r_timed_alike<Variant::I8080>(), "DCR r timing");
 
 // ---- flag arithmetic ---------------------------------------------------------------------------
 // V (8085, bit 1) = carry into bit 7 XOR carry out of bit 7, i.e. two's-complement overflow.
@@ -939,7 +947,15 @@ op_C1:  // POP B
     c = RDD(sp); sp = sp + 1; b = RDD(sp); sp = sp + 1;
     NEXT();
 op_C2:  // JNZ a16
-    if (!(f & F_Z)) { pc = IMM16(); t += kTaken<V>[0xC2]; } else { pc = pc + 2; }
+    if (!(f & F_Z)) {
+        const std::uint16_t from = static_cast<std::uint16_t>(pc - 1);
+        pc = IMM16(); t += kTaken<V>[0xC2];
+        if constexpr (!Debug) {
+            // Back onto the byte before it: perhaps "L: DCR r / JNZ L", a delay loop.
+            if (pc == static_cast<std::uint16_t>(from - 1) && fast_loops_) [[unlikely]]
+                goto countdown;
+        }
+    } else { pc = pc + 2; }
     NEXT();
 op_C3:  // JMP a16
     pc = IMM16();
@@ -1124,6 +1140,38 @@ op_FE:  // CPI d8
 op_FF:  // RST 7
     PUSH2(pc >> 8, pc & 0xFF); pc = 0x38;
     NEXT();
+countdown: __attribute__((unused)); {
+    // "L: DCR r / JNZ L" with the JNZ just taken: the iterations that keep r non-zero and start
+    // before the batch's limit are done at once. Nothing else can happen inside such a loop (no
+    // memory or I/O access, pins change only between batches), so registers, flags, T-states and
+    // the instruction count end exactly as instruction by instruction. Debug runs never get here.
+    constexpr unsigned per = kBase<V>[0x05] + kBase<V>[0xC2] + kTaken<V>[0xC2];
+    const std::uint8_t* const code = rp[pc >> 8];
+    if (!code || !rp[static_cast<std::uint16_t>(pc + 3) >> 8] || limit <= t) NEXT();
+    const std::uint64_t fit = (limit - t) / per;
+#define COUNTDOWN(r)                                                                        \
+    do {                                                                                    \
+        const unsigned left = (r - 1u) & 0xFFu; /* iterations whose DCR leaves r non-zero */ \
+        const unsigned m = fit < left ? static_cast<unsigned>(fit) : left;                  \
+        if (m) {                                                                            \
+            r = dcr<V>(static_cast<std::uint8_t>(r - m + 1), f);                            \
+            t += std::uint64_t{per} * m;                                                    \
+            n += 2u * m;                                                                    \
+        }                                                                                   \
+    } while (0)
+    switch (code[pc & 0xFF]) {
+        case 0x05: COUNTDOWN(b); break;
+        case 0x0D: COUNTDOWN(c); break;
+        case 0x15: COUNTDOWN(d); break;
+        case 0x1D: COUNTDOWN(e); break;
+        case 0x25: COUNTDOWN(h); break;
+        case 0x2D: COUNTDOWN(l); break;
+        case 0x3D: COUNTDOWN(a); break;
+        default: break;  // another instruction (DCR M reads memory: not taken over)
+    }
+#undef COUNTDOWN
+    NEXT();
+}
 done:
     SAVE_REGS();
 #undef HL

@@ -125,6 +125,12 @@ public:
     // HLT executed (the status lines show HALT). A front end may call request_stop() here.
     std::function<void()> on_halt;
 
+    // Counted delay loops ("L: DCR r / JNZ L") run to their end in one step when no debug hooks are
+    // installed: the same state and T-states, without executing each iteration. On by default; off
+    // to measure the interpreter alone (alp85 bench cpu) or to compare (tests/core).
+    void set_fast_loops(bool on) { fast_loops_ = on; }
+    bool fast_loops() const { return fast_loops_; }
+
     // ---- debugging -------------------------------------------------------------------------------
     void set_debug_hooks(DebugHooks* hooks) { hooks_ = hooks; }
     DebugHooks* debug_hooks() const { return hooks_; }
@@ -166,6 +172,7 @@ private:
     bool rst65_pin_ = false, rst55_pin_ = false, intr_pin_ = false;
     bool sid_ = false, sod_ = false;
     bool hold_ = false, hlda_ = false;
+    bool fast_loops_ = true;  // host setting, not machine state: not in snapshots
 };
 
 }  // namespace alp85
