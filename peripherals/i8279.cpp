@@ -241,7 +241,9 @@ void I8279::advance(std::uint64_t now) {
     if (now < s_.now) now = s_.now;
     while (true) {
         if (!busy()) {
-            // Idle: skip straight to the first digit time after `now`.
+            // Idle: skip straight to the first digit time after `now` (already there when the
+            // next digit is still ahead: the firmware polling the status, no division).
+            if (time_of_digit(s_.next_digit) > now) break;
             const std::uint64_t next = clk_at(now) / kClocksPerDigit + 1;
             s_.next_digit = std::max(s_.next_digit, next);
             break;
