@@ -14,11 +14,10 @@ import check_path
 import contour_ref as ref
 import mkscripts
 
-TIMING = """option expansion on
-motor ideal
+TIMING = """motor ideal
 monitor
 firmware thesis-fixed
-load {asm}
+firmware master
 load {hex}
 reset
 wait display "-ALP 85-" timeout 1s
@@ -51,9 +50,8 @@ def patch(hexfile, cr):
 def main():
     alp85, work = sys.argv[1], sys.argv[2]
     os.makedirs(work, exist_ok=True)
-    asm = os.path.abspath(os.path.join(os.path.dirname(__file__), "../../firmware/master/master.asm"))
     print("| R (mm) | R (steps) | C_R | segments | eps_A (eq. 9, steps) | polygon, inner chords | toolpath, largest | "
-          "bound 1.5 eps_A + 2.12 | eps_A + 1 | T-states per segment (ms) |")
+          "bound 1.5 eps_A + 1.80 | eps_A + 1 | T-states per segment (ms) |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for r_mm in (2, 5, 10, 20, 50, 90):
         nc = os.path.join(work, f"r{r_mm}.nc")
@@ -66,7 +64,7 @@ def main():
             hexfile = os.path.join(work, name + ".hex")
             open(hexfile, "w").write(open(base).read())
             patch(hexfile, cr)
-            text = mkscripts.script(name, hexfile).replace("../../firmware/master/master.asm", asm)
+            text = mkscripts.script(name, hexfile)
             alp = os.path.join(work, name + ".alp")
             open(alp, "w").write(text)
             run = subprocess.run([alp85, "script", alp], capture_output=True, text=True)
@@ -75,7 +73,7 @@ def main():
             m = check_path.moves(path)[1]
             worst = check_path.worst_per_move(path, os.path.join(work, name + ".csv"))[0][1]
             tim = os.path.join(work, name + "_t.alp")
-            open(tim, "w").write(TIMING.format(asm=asm, hex=hexfile))
+            open(tim, "w").write(TIMING.format(hex=hexfile))
             out = subprocess.run([alp85, "script", tim], capture_output=True, text=True).stdout
             t = re.search(r"time: ([0-9.]+) ms \((\d+) T-states\) since the mark", out)
             ea = ref.eps_a(cr, m["r"])
