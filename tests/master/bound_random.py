@@ -15,7 +15,7 @@ import sys
 import check_path
 import contour_ref as ref
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../firmware/thesis/check"))
+sys.path.append(os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../firmware/thesis/check"))
 from pathrule import rule  # noqa: E402
 
 
