@@ -21,7 +21,7 @@ void add_gui_command(CLI::App& app, int& status) {
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("gui", "The ALP 85 and its machine tool in a window, run from the keypad");
     cmd->add_option("firmware", args->o.firmware,
-                    "Built-in firmware (thesis, thesis-fixed, monitor) or .asm/.hex files, loaded after the monitor "
+                    "Built-in firmware (thesis, thesis-fixed, master, monitor) or .asm/.hex files, loaded after the monitor "
                     "(default: thesis-fixed)");
     cmd->add_option("--script", args->o.script, "Run this script (docs/scripting.md) in the window first");
     cmd->add_option("--click", args->o.clicks,

@@ -99,7 +99,7 @@ void add_run_command(CLI::App& app, int& status) {
     cmd->add_option("--for", args->run_for, "Time to run after the keys (default 1s)")->needs(keys);
     cmd->add_flag("--no-monitor", args->no_monitor, "Do not load the built-in monitor ROM");
     cmd->add_option("--firmware", args->firmware,
-                    "Firmware built into alp85 to load (thesis, thesis-fixed), with its symbols; may be repeated");
+                    "Firmware built into alp85 to load (thesis, thesis-fixed, master), with its symbols; may be repeated");
     add_motor_option(cmd, args->motor);
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
     cmd->footer(

@@ -15,6 +15,11 @@ namespace alp85 {
 extern const char kThesisHex[], kThesisMap[], kThesisFixedHex[], kThesisFixedMap[];  // emu/embed_text.cmake
 }
 #endif
+#ifdef ALP85_HAVE_MASTER
+namespace alp85 {
+extern const char kMasterHex[], kMasterMap[];  // emu/embed_text.cmake
+}
+#endif
 
 namespace alp85::firmware {
 namespace {
@@ -72,6 +77,9 @@ std::vector<Entry> builtin() {
     out.push_back({"thesis", "the thesis firmware of Appendix B at 0800H, as printed (firmware/thesis)"});
     out.push_back({"thesis-fixed", "the thesis firmware with its errata repaired (firmware/thesis/RECONSTRUCTION.md)"});
 #endif
+#ifdef ALP85_HAVE_MASTER
+    out.push_back({"master", "the master program at 3000H in the expansion EPROM, which it fits (firmware/master, docs/contours.md)"});
+#endif
     return out;
 }
 
@@ -80,6 +88,13 @@ std::optional<Firmware> find(std::string_view name) {
 #ifdef ALP85_HAVE_THESIS
     if (name == "thesis") return from_hex("thesis", kThesisHex, kThesisMap);
     if (name == "thesis-fixed") return from_hex("thesis-fixed", kThesisFixedHex, kThesisFixedMap);
+#endif
+#ifdef ALP85_HAVE_MASTER
+    if (name == "master") {
+        Firmware f = from_hex("master", kMasterHex, kMasterMap);
+        f.expansion_eprom = true;
+        return f;
+    }
 #endif
     return std::nullopt;
 }

@@ -1,5 +1,6 @@
-// Firmware built into alp85 by the build: the ALP 85 monitor EPROM (firmware/monitor) and the
-// two builds of the thesis firmware (firmware/thesis: "thesis" as printed, "thesis-fixed").
+// Firmware built into alp85 by the build: the ALP 85 monitor EPROM (firmware/monitor), the
+// two builds of the thesis firmware (firmware/thesis: "thesis" as printed, "thesis-fixed") and the
+// master program for the expansion EPROM (firmware/master).
 #pragma once
 
 #include <optional>
@@ -17,6 +18,7 @@ struct Firmware {
     std::string name;
     std::vector<ImageSegment> segments;
     SymbolTable symbols;  // its symbols and source lines (from asm85's map)
+    bool expansion_eprom = false;  // it lives in the expansion EPROM: loading it fits that option
 };
 
 bool have_monitor();
@@ -26,7 +28,7 @@ Firmware monitor();
 // The monitor's asm85 map (JSON, "alp85-asm-map"); empty when this build has no monitor.
 const char* monitor_map();
 
-// Every firmware built into this alp85, by name ("monitor", "thesis", "thesis-fixed"), with a
+// Every firmware built into this alp85, by name ("monitor", "thesis", "thesis-fixed", "master"), with a
 // line saying what it is.
 struct Entry {
     std::string_view name;

@@ -215,7 +215,7 @@ private:
     }
     bool firmware(Command& c) {
         c.op = Op::Firmware;
-        return string_operand(c.text, "a firmware name (thesis, thesis-fixed, monitor)");
+        return string_operand(c.text, "a firmware name (thesis, thesis-fixed, master, monitor)");
     }
     bool reset(Command& c) {
         c.op = Op::Reset;

@@ -565,6 +565,7 @@ Session::Outcome Session::execute(const Command& c) {
         case Op::Firmware: {
             const auto fw = firmware::find(c.text);
             if (!fw) return fail(c, fmt::format("no firmware '{}' in this alp85", c.text));
+            if (fw->expansion_eprom) m.set_expansion_eprom(true);  // the EPROM it is in goes in with it
             m.load(fw->segments);
             debugger_.program().add_table(fw->symbols);
             return {};

@@ -310,11 +310,18 @@ ALOOP:  LHLD    NCNT
         LXI     D,AX
         MVI     C,08H
         CALL    COPYN
-        LXI     H,AX                    ; X2 = CX + round(X*), Y2 = CY + round(Y*)
+        LDA     AY+3                    ; X2 = CX + X* to a step against the X motion: the
+        RLC                             ; line routine's corners stand on the side the X step
+        LXI     H,DIR                   ; goes to, so the floor where X goes +, the ceiling
+        XRA     M                       ; where it goes - (CCW below the centre, CW above it)
+        ANI     01H                     ; sign(Y*) xor DIR: 1 = floor
+        XRI     01H
+        MOV     B,A                     ; B = 1: the ceiling
+        LXI     H,AX
         LXI     D,CXV
-        CALL    ROUND
+        CALL    XRND
         SHLD    X2
-        LXI     H,AY
+        LXI     H,AY                    ; Y2 = CY + round(Y*)
         LXI     D,CYV
         CALL    ROUND
         SHLD    Y2
@@ -482,6 +489,21 @@ RND1:   POP     H
         MOV     L,A
         DAD     D
         RET
+;
+; ; XRND: HL = (DE) + floor (HL) when B = 0, else its ceiling (16.16 to a step)
+XRND:   PUSH    D
+        MOV     A,M
+        INX     H
+        ORA     M                       ; Z: X* is a whole step, floor = ceiling
+        INX     H
+        MOV     E,M
+        INX     H
+        MOV     D,M
+        JZ      RND1
+        DCR     B
+        JNZ     RND1
+        INX     D
+        JMP     RND1
 ;
         IF      $ GT 3800H
         ERROR   "the master program does not fit 3000H-37FFH"

@@ -1,11 +1,15 @@
-(A contour mixing lines and arcs, with a Z plunge and a retract; part in inches, part incremental)
+(A part outline, counter-clockwise round the part: lines and arcs with a Z plunge and a retract;)
+(arcs by I J and by R, one the long way round; part of it incremental, part in inches)
 G21 G90
 G00 X10 Y10
 G01 Z2 F300          (plunge: Z moves on its own)
-G01 X50 Y10 F750
-G02 X70 Y30 I0 J20   (clockwise, centre by I J)
-G91 G01 X0 Y20       (incremental)
-G90 G03 X40 Y80 R30  (counter-clockwise, by R, the long way is R-30)
-G20 G01 X0.7874 Y1.9685 (inches: 20 mm, 50 mm)
-G21 G02 X10 Y10 R-25 (clockwise the long way round)
+G01 X50 Y10 F750     (bottom edge)
+G03 X70 Y30 I0 J20   (fillet R 20, counter-clockwise, centre by I J)
+G91 G01 X0 Y20       (right edge, incremental)
+G90 G03 X40 Y80 R30  (corner R 30 by R, the short way)
+G20 G01 X0.7874 Y3.1496 (top edge in inches: to X20 Y80 mm)
+G21 G03 X10 Y70 R10  (corner R 10)
+G01 Y50              (left edge, down to the keyhole)
+G02 X10 Y30 R-12     (keyhole R 12 cut into the part: clockwise the long way round, R < 0)
+G01 Y10              (left edge back to the start)
 G00 Z0               (retract)

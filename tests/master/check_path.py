@@ -6,9 +6,10 @@ The recorded X-Y positions (transducer counts, steps) are taken in time order, m
 path 1 (a move ends when the tool stands on its end point, having left it). Per move, the largest
 distance from the true line or arc is compared with:
   line: the thesis rule's staircase bound cos a + sin a (contour_ref.staircase), eq. 7 beside it;
-  arc:  1.5 eps_A (eq. 9; the first and last chord, see below) + 1/2 sqrt 2 (each segment end
-        rounded to a step) + sqrt 2 (the staircase along a chord); the issue's eps_A + 1 step is
-        reported beside it (over / within).
+  arc:  1.5 eps_A (eq. 9; the first and last chord, see below) + 1.5 cos a + sin a <= sqrt(13)/2
+        (the staircase along a chord, its end points rounded against the X motion: X by up to one
+        step to the side opposite the staircase's corners, Y by up to 1/2; docs/contours.md); the
+        issue's eps_A + 1 step is reported beside it (over / within).
 And per arc the unrounded polygon of the 16.16 arithmetic: its inner chords against eps_A (eq. 9
 with the first-point correction), its first and last chord against 1.5 eps_A (they join R + eps_A
 to a point on the circle), each + 1/16 step for eqs. 15-16's drift and the 16.16 rounding.
@@ -19,6 +20,10 @@ import math
 import sys
 
 import contour_ref as ref
+
+
+# max over a of 1.5 cos a + sin a: the staircase and the rounding of a chord's ends (docs/contours.md)
+ARC_STAIRCASE = math.sqrt(13) / 2
 
 
 def moves(path):
@@ -35,7 +40,7 @@ def moves(path):
             sweep = (s * (a1 - a0)) % (2 * math.pi) or 2 * math.pi
             ea = ref.eps_a(e["cr"], r)
             out.append(dict(arc=True, c=(e["cx"], e["cy"]), r=r, a0=a0, s=s, sweep=sweep, cr=e["cr"],
-                            p0=(x, y), p1=(e["x"], e["y"]), bound=1.5 * ea + 0.5 * math.sqrt(2) + math.sqrt(2),
+                            p0=(x, y), p1=(e["x"], e["y"]), bound=1.5 * ea + ARC_STAIRCASE,
                             issue=ea + 1.0, poly=ref.polygon_error(e, (x, y), r)))
         else:
             out.append(dict(arc=False, p0=(x, y), p1=(e["x"], e["y"]), bound=ref.staircase(e["x"] - x, e["y"] - y),

@@ -62,8 +62,16 @@ def rnd(v):
     return (v + 0x8000) >> 16
 
 
-def handoffs(path):
-    """Every hand-over in order: ('Z', z) or ('XY', x2, y2, entry index); the table starts at 0, 0, 0."""
+def rnd_x(ax, ay, s):
+    """X* to a step against the X motion at the vertex (docs/contours.md, "Rounding against the
+    staircase"): the floor where X goes + (CCW below the centre, CW above it), else the ceiling."""
+    going_plus = (ay < 0) if s == 1 else (ay >= 0)
+    return ax >> 16 if going_plus else -((-ax) >> 16)
+
+
+def handoffs(path, nearest=False):
+    """Every hand-over in order: ('Z', z) or ('XY', x2, y2, entry index); the table starts at 0, 0, 0.
+    nearest: X* rounded to the nearest step too, as the master did before (docs/contours.md's table)."""
     x = y = z = 0
     out = []
     for i, e in enumerate(path):
@@ -79,7 +87,7 @@ def handoffs(path):
             ay += rsh(ay, 2 * k + 4)
             for _ in range(e["n"]):
                 ax, ay = step3(ax, ay, -s, k), step3(ay, ax, s, k)
-                pts.append((e["cx"] + rnd(ax), e["cy"] + rnd(ay)))
+                pts.append((e["cx"] + (rnd(ax) if nearest else rnd_x(ax, ay, s)), e["cy"] + rnd(ay)))
         pts.append((e["x"], e["y"]))
         for px, py in pts:
             if (px, py) != (x, y):

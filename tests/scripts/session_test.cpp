@@ -49,6 +49,15 @@ TEST_F(SessionTest, WaitDisplayStopsWhenTheTextAppears) {
     EXPECT_NE(o.message.find("did not show \"NEVER\" within 10.000 ms"), std::string::npos) << o.message;
 }
 
+TEST_F(SessionTest, FirmwareMasterFitsTheExpansionEpromAndBringsItsSymbols) {
+    EXPECT_FALSE(s.machine().expansion_eprom());  // the thesis board as built
+    ok("firmware master");
+    EXPECT_TRUE(s.machine().expansion_eprom());
+    ok("expect mem 3000H 31H 0B0H 20H");  // MSTR: LXI SP,20B0H (firmware/master/master.asm)
+    ok("expect mem MSTR 31H");
+    ok("expect mem HAND 0DBH 0FAH");      // the hand-over: IN 0FAH
+}
+
 TEST_F(SessionTest, RunUntilASymbolAndRegisters) {
     ok("load hello.asm");
     ok("reset");
