@@ -29,7 +29,7 @@ RunResult run_tape(const std::vector<std::uint32_t>& rom, const Tape& tape, cons
         if (ch != 2) return;
         ay.command(v, t);
         ax.advance(t);
-        r.samples.push_back({t, ax.command_um(), ay.command_um(), ax.position_mm(), ay.position_mm()});
+        r.samples.push_back({t, ax.command_um(), ay.command_um(), ax.position_mm(), ay.position_mm(), m.idle_steps()});
     });
     r.stop = m.run(p.max_steps);
     r.output_samples = r.samples.size();

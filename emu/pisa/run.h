@@ -27,6 +27,7 @@ struct Sample {
     std::uint64_t t = 0;                 // digit steps (100 ns)
     std::int64_t cmd_x_um = 0, cmd_y_um = 0;  // the converters after the write
     double x_mm = 0, y_mm = 0;           // the tables, from program zero
+    std::uint64_t idle = 0;              // the program's waiting-loop steps so far
 };
 
 struct RunResult {
