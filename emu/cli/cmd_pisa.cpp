@@ -14,6 +14,7 @@
 #include "asm/pisa_asm.h"
 #include "emu/cli/commands.h"
 #include "emu/pisa/run.h"
+#include "emu/pisa/run_plot.h"
 #include "emu/plot/plot.h"
 #include "emu/util/atomic_file.h"
 
@@ -32,24 +33,11 @@ std::optional<std::string> read_text(const std::string& path) {
     return ss.str();
 }
 
-// The plot: the exact path (dashed), the 6 ms outputs and the tables, drawn to a file of the
-// same extension beside the target, then read back for the all-or-nothing write.
+// The plot drawn to a file of the same extension beside the target, then read back for the
+// all-or-nothing write.
 std::string plot_bytes(const std::string& target, const std::string& title, const pisa::Tape& tape,
                        const pisa::RunResult& r) {
-    plot::Chart c;
-    c.title = title;
-    c.equal_scale = true;
-    plot::Series ideal{"exact path", {}, false, true};
-    for (auto& p : pisa::ideal_path_mm(tape)) ideal.points.push_back({p.x, p.y});
-    plot::Series cmd{"6 ms outputs", {}, false, false};
-    plot::Series table{"tables (servo)", {}, false, false};
-    for (std::size_t i = 0; i < r.samples.size(); ++i) {
-        const auto& s = r.samples[i];
-        if (i < r.output_samples)
-            cmd.points.push_back({static_cast<double>(s.cmd_x_um) / 1000, static_cast<double>(s.cmd_y_um) / 1000});
-        table.points.push_back({s.x_mm, s.y_mm});
-    }
-    c.series = {ideal, cmd, table};
+    plot::Chart c = pisa::toolpath_chart(title, tape, r);
     std::filesystem::path tmp = std::filesystem::path(target).parent_path() /
                                 ("." + std::filesystem::path(target).stem().string() + ".plot-tmp" +
                                  std::filesystem::path(target).extension().string());
@@ -79,13 +67,11 @@ void add_pisa_command(CLI::App& app, int& status) {
         "Exit status: 0 the tape ran to its end; 1 a bad tape or program (file:line:col: error: ...,\n"
         "nothing written), a run that did not end, or an output that cannot be written; 2 a usage error.");
     cmd->callback([args, &status] {
-        for (const std::string& p : {args->plot}) {
-            auto ext = std::filesystem::path(p).extension().string();
-            if (!p.empty() && ext != ".svg" && ext != ".png") {
-                std::cerr << fmt::format("alp85 pisa: --plot {}: the extension must be .svg or .png\n", p);
-                status = kUsageError;
-                return;
-            }
+        auto ext = std::filesystem::path(args->plot).extension().string();
+        if (!args->plot.empty() && ext != ".svg" && ext != ".png") {
+            std::cerr << fmt::format("alp85 pisa: --plot {}: the extension must be .svg or .png\n", args->plot);
+            status = kUsageError;
+            return;
         }
         auto text = read_text(args->tape);
         if (!text) {
@@ -121,6 +107,11 @@ void add_pisa_command(CLI::App& app, int& status) {
             const auto* s = program.out.find_symbol(name);
             return s && s->value < pisa::kIndicators && r.indicators[s->value];
         };
+        if (r.output_samples == 0) {
+            std::cerr << "alp85 pisa: the program ended without an output; nothing written\n";
+            status = 1;
+            return;
+        }
         const auto& last = r.samples[r.output_samples - 1];
         fmt::print("{} blocks, {} elements; {:.3f} s of machine time, {} instructions\n", parsed.tape.blocks,
                    parsed.tape.elements.size(), static_cast<double>(r.steps) * 1e-7, r.instructions);

@@ -12,6 +12,7 @@
 
 #include "asm/pisa_asm.h"
 #include "emu/pisa/run.h"
+#include "emu/pisa/run_plot.h"
 #include "emu/plot/plot.h"
 
 using namespace alp85;
@@ -84,20 +85,7 @@ int main(int argc, char** argv) {
         fmt::print("| {} | {} | {} | {:.3f} | {:.0f} | {:.3f} | {:.0f} | {:.3f} | {:.2f} | {:.3f} |\n", name, els.size(),
                    outputs, worst, end_off + (k == els.size() ? 0 : 1e9), path, busy / path, busy * 1e-4 / path, busiest, follow);
         for (const char* ext : {"svg", "png"}) {
-            plot::Chart c;
-            c.title = fmt::format("Pisa interpolator, {}.tape", name);
-            c.equal_scale = true;
-            plot::Series ideal{"exact path", {}, false, true};
-            for (auto& q : pisa::ideal_path_mm(parsed.tape)) ideal.points.push_back({q.x, q.y});
-            plot::Series cmd{"6 ms outputs", {}, false, false};
-            plot::Series table{"tables (servo, Kv 25/s)", {}, false, false};
-            for (std::size_t i = 0; i < r.samples.size(); ++i) {
-                const auto& s = r.samples[i];
-                if (i < r.output_samples)
-                    cmd.points.push_back({static_cast<double>(s.cmd_x_um) / 1000, static_cast<double>(s.cmd_y_um) / 1000});
-                table.points.push_back({s.x_mm, s.y_mm});
-            }
-            c.series = {ideal, cmd, table};
+            plot::Chart c = pisa::toolpath_chart(fmt::format("Pisa interpolator, {}.tape", name), parsed.tape, r);
             plot::write(c, fmt::format("{}/{}.{}", argv[3], name, ext));
         }
     }
