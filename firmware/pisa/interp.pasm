@@ -129,7 +129,6 @@ START:  MOV NG,G
         MOV NQT,QT
         MOV NNL,NL
         RST NXT
-        SET MOVED
         SET RUN                 ; read the block after it meanwhile
         SUB ONE,G,T             ; G - 1
         TPL ST1,T
@@ -164,6 +163,7 @@ STLIN:  STO #SGO,LRET
         JMP LSET
 SGO:    STO 0,NI
         STO 0,NJ
+        SET MOVED               ; (a block with no move has not started the motion)
         SET ACT
 STEP:   TRS CSTART,CIRC
         JMP LSTEP
