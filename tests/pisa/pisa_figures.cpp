@@ -84,6 +84,28 @@ int main(int argc, char** argv) {
         double busy = static_cast<double>(r.steps - r.idle_steps);
         fmt::print("| {} | {} | {} | {:.3f} | {:.0f} | {:.3f} | {:.0f} | {:.3f} | {:.2f} | {:.3f} |\n", name, els.size(),
                    outputs, worst, end_off + (k == els.size() ? 0 : 1e9), path, busy / path, busy * 1e-4 / path, busiest, follow);
+        if (std::string(name) == "circle") {
+            // The radial error of the outputs and of the tables against time: the method's
+            // +-1 um and the servo's steady shrink R (1 - 1/sqrt(1 + (w/Kv)^2)).
+            const auto& e = els.front();
+            double cx = static_cast<double>(e.cx) / 1000, cy = static_cast<double>(e.cy) / 1000;
+            double rad = std::hypot(static_cast<double>(e.x0 - e.cx), static_cast<double>(e.y0 - e.cy)) / 1000;
+            plot::Series out{"6 ms outputs", {}, false, false}, tab{"tables (servo)", {}, false, false};
+            bool started = false;
+            for (std::size_t i = 0; i < r.output_samples; ++i) {
+                const auto& s = r.samples[i];
+                if (!started && s.cmd_x_um == 0 && s.cmd_y_um == 0) continue;
+                started = true;
+                double t = static_cast<double>(s.t) * 1e-7;
+                out.points.push_back({t, (std::hypot(static_cast<double>(s.cmd_x_um) / 1000 - cx,
+                                                     static_cast<double>(s.cmd_y_um) / 1000 - cy) - rad) * 1000});
+                tab.points.push_back({t, (std::hypot(s.x_mm - cx, s.y_mm - cy) - rad) * 1000});
+            }
+            for (const char* ext : {"svg", "png"})
+                plot::write_time_series(fmt::format("{}/circle-error.{}", argv[3], ext),
+                                        "Circle R 20 mm, F 750: distance from the circle", {out, tab},
+                                        "r - R (um)", "t (s)", plot::Chart::Legend::BottomRight);
+        }
         for (const char* ext : {"svg", "png"}) {
             plot::Chart c = pisa::toolpath_chart(fmt::format("Pisa interpolator, {}.tape", name), parsed.tape, r);
             plot::write(c, fmt::format("{}/{}.{}", argv[3], name, ext));
