@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 
 #include "asm/pisa_asm.h"
+#include "emu/pisa/interpolator.h"
 #include "emu/pisa/tape.h"
+
+#include <random>
 
 namespace alp85::pisa {
 namespace {
@@ -105,6 +108,48 @@ TEST(PisaTape, RefusedWithLineAndColumn) {
         EXPECT_EQ(p.error->line, c.line) << c.text;
         EXPECT_EQ(p.error->col, c.col) << c.text << p.error->message;
         EXPECT_NE(p.error->message.find(c.message), std::string::npos) << c.text << ": " << p.error->message;
+    }
+}
+
+// Bad input never crashes (the sanitizer build runs these too): text mutated at random through the
+// tape parser and the assembler, and random ROM words through the machine.
+TEST(PisaRobustness, MutatedTapesAndSourcesAndRandomRoms) {
+    std::mt19937 rng(1969);
+    const std::string tape = "%\nN010 G01 X+012.5 Y-3000 F600 (c)\nN020 G03 X0 Y0 I-12.5 J1.5\nN030 G00 X0\n%\n";
+    const std::string src = "K EQU 9\nL: ADD 1,2,3\n  STO #L,K\n  SHR 1,2,3\n  TRS L,0\n  IN 0,8,9\n  JMI K\n  END\n";
+    const std::string alphabet = "NGXYIJFM+-.0123456789 ()%;,#:\n\tLADSTOEQU@$'\"";
+    for (int round = 0; round < 3000; ++round) {
+        for (const std::string* base : {&tape, &src}) {
+            std::string t = *base;
+            int edits = 1 + static_cast<int>(rng() % 6);
+            for (int e = 0; e < edits && !t.empty(); ++e) {
+                std::size_t at = rng() % t.size();
+                char c = alphabet[rng() % alphabet.size()];
+                switch (rng() % 3) {
+                    case 0: t[at] = c; break;
+                    case 1: t.insert(at, 1, c); break;
+                    default: t.erase(at, 1);
+                }
+            }
+            if (base == &tape) {
+                auto p = parse_tape(t);
+                if (p.error) {
+                    EXPECT_GE(p.error->line, 1);
+                }
+            } else {
+                auto r = pisa_asm::assemble_string(t);
+                for (auto& d : r.out.diagnostics) EXPECT_FALSE(asm85::format_diagnostic(d).empty());
+            }
+        }
+    }
+    for (int round = 0; round < 200; ++round) {
+        std::vector<std::uint32_t> rom(64 + rng() % 200);
+        for (auto& w : rom) w = rng() & kWordMask;
+        Interpolator m(rom);
+        m.reader().load({{kX, true, 12345, 8, 1}, {kEob, false, 0, 1, 1}});
+        auto stop = m.run(200'000);
+        EXPECT_TRUE(stop.reason == StopReason::End || stop.reason == StopReason::Fault ||
+                    stop.reason == StopReason::StepLimit);
     }
 }
 
