@@ -149,10 +149,19 @@ std::string write_intel_hex(const Image& image, int per_record = 16);
 // Bytes [first, last] with gaps filled by `fill`.
 std::vector<std::uint8_t> write_binary(const Image& image, std::uint16_t first, std::uint16_t last,
                                        std::uint8_t fill = 0xFF);
+// How addresses count in the listing and the map: the 8085's bytes, or the words of another
+// machine stored as `unit_bytes` bytes each in Result::image (the Pisa interpolator's 22-bit ROM
+// words: three bytes at 3 x address; asm/pisa_asm.h). Listing LOC and map addresses are in units.
+struct OutputFormat {
+    std::string_view title = "asm85 8080/8085 MACRO ASSEMBLER";
+    int unit_bytes = 1;         // bytes per addressed unit
+    int obj_bytes = 4;          // OBJ column: bytes on the statement's line, the rest continue
+    std::string_view unit;      // map: "unit" (empty: not written, bytes)
+};
 // The classic Intel listing: LOC OBJ LINE SOURCE STATEMENT, '+' on expansion lines, symbols after.
-std::string write_listing(const Result& result);
+std::string write_listing(const Result& result, const OutputFormat& format = {});
 // {"files":[...], "symbols":[{"name","value","kind","file","line"}], "lines":[{"address",
 //  "length","file","line"}], "start":n|null} - the map the debugger reads.
-std::string write_json_map(const Result& result);
+std::string write_json_map(const Result& result, const OutputFormat& format = {});
 
 }  // namespace alp85::asm85

@@ -200,6 +200,8 @@ private:
 
 bool is_register_name(const std::string& upper, int* value = nullptr);
 std::vector<std::string> split_lines(std::string_view text);  // CR LF or LF; stops at ^Z
+// A regular file's text (up to 16 MB); nullopt when it cannot be read.
+std::optional<std::string> read_disk_file(const std::filesystem::path& p);
 std::string trim(std::string_view s);        // without leading/trailing blanks
 std::string strip_angle(std::string s);      // trimmed, without one enclosing <...>
 bool is_directive_word(const std::string& upper);    // ORG, DB, ... (not the IF family)

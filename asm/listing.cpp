@@ -12,9 +12,9 @@
 
 namespace alp85::asm85 {
 
-std::string write_listing(const Result& r) {
+std::string write_listing(const Result& r, const OutputFormat& form) {
     std::string out;
-    out += "asm85 8080/8085 MACRO ASSEMBLER";
+    out += form.title;
     if (!r.title.empty()) out += "    " + r.title;
     out += "\n\n  LOC  OBJ         LINE        SOURCE STATEMENT\n\n";
 
@@ -33,16 +33,18 @@ std::string write_listing(const Result& r) {
             loc = fmt::format("{:04X}", *l.address);
         }
         std::string obj;
-        std::size_t shown = std::min<std::size_t>(l.bytes.size(), 4);
+        const auto per_line = static_cast<std::size_t>(form.obj_bytes);
+        std::size_t shown = std::min<std::size_t>(l.bytes.size(), per_line);
         for (std::size_t i = 0; i < shown; ++i) obj += fmt::format("{:02X}", l.bytes[i]);
         if (l.value) obj = "=";
         if (l.expansion_depth > 0) mark = l.expansion_depth < 10 ? fmt::format("+{}", l.expansion_depth) : "+*";
         else if (l.include_depth > 0) mark = "= ";
         out += fmt::format("  {:4} {:<8} {:>6} {:2}  {}\n", loc, obj, number, mark, l.text);
-        for (std::size_t i = 4; i < l.bytes.size(); i += 4) {
+        for (std::size_t i = per_line; i < l.bytes.size(); i += per_line) {
             std::string more;
-            for (std::size_t k = i; k < std::min(l.bytes.size(), i + 4); ++k) more += fmt::format("{:02X}", l.bytes[k]);
-            out += fmt::format("  {:04X} {}\n", static_cast<unsigned>((l.address.value_or(0) + i) & 0xFFFF), more);
+            for (std::size_t k = i; k < std::min(l.bytes.size(), i + per_line); ++k) more += fmt::format("{:02X}", l.bytes[k]);
+            auto unit = static_cast<std::size_t>(form.unit_bytes);
+            out += fmt::format("  {:04X} {}\n", static_cast<unsigned>((l.address.value_or(0) + i / unit) & 0xFFFF), more);
         }
         if (l.file >= 0 && static_cast<std::size_t>(l.file) < r.files.size()) {
             auto range = diags.equal_range({r.files[static_cast<std::size_t>(l.file)], l.line});

@@ -5,10 +5,11 @@
 
 namespace alp85::asm85 {
 
-std::string write_json_map(const Result& r) {
+std::string write_json_map(const Result& r, const OutputFormat& f) {
     nlohmann::ordered_json j;
     j["format"] = "alp85-asm-map";
     j["version"] = 1;
+    if (!f.unit.empty()) j["unit"] = std::string(f.unit);
     j["files"] = r.files;
     j["start"] = r.image.start_address ? nlohmann::ordered_json(*r.image.start_address) : nlohmann::ordered_json(nullptr);
     auto& syms = j["symbols"] = nlohmann::ordered_json::array();
@@ -31,7 +32,8 @@ std::string write_json_map(const Result& r) {
         lines.push_back(std::move(o));
     }
     auto& segs = j["segments"] = nlohmann::ordered_json::array();
-    for (const auto& s : r.image.segments()) segs.push_back({{"start", s.start}, {"length", s.bytes.size()}});
+    auto unit = static_cast<std::size_t>(f.unit_bytes);
+    for (const auto& s : r.image.segments()) segs.push_back({{"start", s.start / unit}, {"length", s.bytes.size() / unit}});
     return j.dump(1) + "\n";
 }
 

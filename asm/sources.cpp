@@ -10,6 +10,8 @@ namespace {
 
 constexpr std::uintmax_t kMaxFileSize = 16u << 20;
 
+}  // namespace
+
 std::optional<std::string> read_disk_file(const std::filesystem::path& p) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(p, ec)) return std::nullopt;
@@ -21,8 +23,6 @@ std::optional<std::string> read_disk_file(const std::filesystem::path& p) {
     ss << in.rdbuf();
     return ss.str();
 }
-
-}  // namespace
 
 std::vector<std::string> split_lines(std::string_view text) {
     std::vector<std::string> lines;

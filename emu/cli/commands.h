@@ -45,6 +45,7 @@ void add_disasm_command(CLI::App& app, int& status);
 void add_script_command(CLI::App& app, int& status);
 void add_run_command(CLI::App& app, int& status);
 void add_gcode_command(CLI::App& app, int& status);
+void add_pisa_command(CLI::App& app, int& status);
 void add_gui_command(CLI::App& app, int& status);
 
 }  // namespace alp85::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     alp85::cli::add_bench_command(app, status);
     alp85::cli::add_disasm_command(app, status);
     alp85::cli::add_gcode_command(app, status);
+    alp85::cli::add_pisa_command(app, status);
     alp85::cli::add_run_command(app, status);
     alp85::cli::add_script_command(app, status);
     alp85::cli::add_gui_command(app, status);

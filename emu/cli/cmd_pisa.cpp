@@ -1,0 +1,136 @@
+// alp85 pisa TAPE [--rom PROGRAM.pasm] [--record FILE.csv] [--plot FILE.svg|png]: the Pisa
+// multi-purpose interpolator (1969) runs a tape through its ROM program and drives the machine
+// tool's X and Y tables through its servos (docs/pisa.md).
+// Exit status: 0 the tape ran to its end; 1 a bad tape or program (file:line:col: error:, nothing
+// written), a run that did not end, or an output that cannot be written; 2 a usage error.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "asm/pisa_asm.h"
+#include "emu/cli/commands.h"
+#include "emu/pisa/run.h"
+#include "emu/pisa/run_plot.h"
+#include "emu/plot/plot.h"
+#include "emu/util/atomic_file.h"
+
+namespace alp85 {
+extern const char pisa_interp_source[];  // firmware/pisa/interp.pasm, embedded at build time
+}
+
+namespace alp85::cli {
+namespace {
+
+std::optional<std::string> read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// The plot drawn to a file of the same extension beside the target, then read back for the
+// all-or-nothing write.
+std::string plot_bytes(const std::string& target, const std::string& title, const pisa::Tape& tape,
+                       const pisa::RunResult& r) {
+    plot::Chart c = pisa::toolpath_chart(title, tape, r);
+    std::filesystem::path tmp = std::filesystem::path(target).parent_path() /
+                                ("." + std::filesystem::path(target).stem().string() + ".plot-tmp" +
+                                 std::filesystem::path(target).extension().string());
+    plot::write(c, tmp.string());
+    auto bytes = read_text(tmp.string());
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    if (!bytes) throw std::runtime_error("cannot read back the plot");
+    return *bytes;
+}
+
+}  // namespace
+
+void add_pisa_command(CLI::App& app, int& status) {
+    struct Args {
+        std::string tape, rom, record, plot;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("pisa", "The Pisa multi-purpose interpolator (1969) runs a tape (docs/pisa.md)");
+    cmd->add_option("TAPE", args->tape, "Tape in block format: N G X Y I J F (docs/pisa.md)")->required();
+    cmd->add_option("--rom", args->rom, "The ROM program, Pisa assembly (default: the built-in firmware/pisa/interp.pasm)");
+    cmd->add_option("--record", args->record, "Write the 6 ms outputs and the tables' positions as CSV");
+    cmd->add_option("--plot", args->plot, "Draw the toolpath (exact path, outputs, tables) to .svg or .png");
+    cmd->footer(
+        "Example:\n"
+        "  alp85 pisa scripts/pisa/contour.tape --record contour.csv --plot contour.svg\n"
+        "Exit status: 0 the tape ran to its end; 1 a bad tape or program (file:line:col: error: ...,\n"
+        "nothing written), a run that did not end, or an output that cannot be written; 2 a usage error.");
+    cmd->callback([args, &status] {
+        auto ext = std::filesystem::path(args->plot).extension().string();
+        if (!args->plot.empty() && ext != ".svg" && ext != ".png") {
+            std::cerr << fmt::format("alp85 pisa: --plot {}: the extension must be .svg or .png\n", args->plot);
+            status = kUsageError;
+            return;
+        }
+        auto text = read_text(args->tape);
+        if (!text) {
+            std::cerr << fmt::format("alp85 pisa: cannot read {}\n", args->tape);
+            status = 1;
+            return;
+        }
+        auto parsed = pisa::parse_tape(*text);
+        if (parsed.error) {
+            std::cerr << fmt::format("{}:{}:{}: error: {}\n", args->tape, parsed.error->line, parsed.error->col,
+                                     parsed.error->message);
+            std::cerr << "alp85 pisa: the tape was refused; nothing written\n";
+            status = 1;
+            return;
+        }
+        auto program = args->rom.empty() ? pisa_asm::assemble_string(pisa_interp_source, {}, "interp.pasm")
+                                         : pisa_asm::assemble_file(args->rom);
+        for (auto& d : program.out.diagnostics) std::cerr << asm85::format_diagnostic(d);
+        if (!program.ok()) {
+            std::cerr << "alp85 pisa: the program does not assemble; nothing written\n";
+            status = 1;
+            return;
+        }
+        auto r = pisa::run_tape(program.rom, parsed.tape);
+        if (r.stop.reason != pisa::StopReason::End) {
+            std::cerr << fmt::format("alp85 pisa: the run did not end: {}; nothing written\n",
+                                     r.stop.reason == pisa::StopReason::Fault ? r.stop.message
+                                                                              : std::string("10 minutes of machine time passed"));
+            status = 1;
+            return;
+        }
+        auto flag = [&](const char* name) {
+            const auto* s = program.out.find_symbol(name);
+            return s && s->value < pisa::kIndicators && r.indicators[s->value];
+        };
+        if (r.output_samples == 0) {
+            std::cerr << "alp85 pisa: the program ended without an output; nothing written\n";
+            status = 1;
+            return;
+        }
+        const auto& last = r.samples[r.output_samples - 1];
+        fmt::print("{} blocks, {} elements; {:.3f} s of machine time, {} instructions\n", parsed.tape.blocks,
+                   parsed.tape.elements.size(), static_cast<double>(r.steps) * 1e-7, r.instructions);
+        fmt::print("end point X{:.3f} Y{:.3f} mm (commanded), tables X{:.4f} Y{:.4f} mm\n",
+                   static_cast<double>(last.cmd_x_um) / 1000, static_cast<double>(last.cmd_y_um) / 1000,
+                   r.samples.back().x_mm, r.samples.back().y_mm);
+        fmt::print("overran the 6 ms clock: {}; motion waited for the tape: {}\n", flag("LATE") ? "yes" : "no",
+                   flag("STALL") ? "yes" : "no");
+        try {
+            AtomicFileGroup out;
+            if (!args->record.empty()) out.add(args->record, pisa::samples_csv(r));
+            if (!args->plot.empty())
+                out.add(args->plot, plot_bytes(args->plot, std::filesystem::path(args->tape).filename().string(), parsed.tape, r));
+            out.commit();
+        } catch (const std::exception& e) {
+            std::cerr << fmt::format("alp85 pisa: {}; nothing written\n", e.what());
+            status = 1;
+        }
+    });
+}
+
+}  // namespace alp85::cli
