@@ -73,7 +73,7 @@ private:
     const CommandDef* find_command(std::string_view word, std::string& error) const;
 
     std::string error(int col, std::string message);
-    std::string report(const Stop& s, int depth = 0);  // describe + the breakpoint's commands
+    std::string report(const Stop& s);  // describe, then the breakpoint's commands
     std::string location_lines(std::uint16_t pc);
     std::optional<std::string> source_line(const SourceLine& l);
     std::string run_fallback(std::string_view line);
@@ -118,6 +118,7 @@ private:
     std::string cmd_backtrace(std::string_view a, int col);
     std::string cmd_info(std::string_view a, int col);
     std::string cmd_history(std::string_view a, int col);
+    std::string cmd_expect(std::string_view a, int col);
     std::string cmd_help(std::string_view a, int col);
     std::string cmd_quit(std::string_view a, int col);
     // info ...
@@ -135,6 +136,7 @@ private:
     SourceReader read_source_;
     std::map<std::string, std::vector<std::string>> sources_;  // file -> lines
     std::vector<Display> displays_;
+    Expr::Variables vars_;  // set $NAME = EXPR
     int last_display_ = 0;
     int print_count_ = 0;
     bool quit_ = false;
