@@ -229,7 +229,7 @@ public:
     std::size_t history_snapshots() const;
     // True while the machine re-executes the past (front ends keep quiet about what it does again).
     bool replaying() const { return replaying_; }
-    static constexpr std::uint64_t kHistoryInterval = 30'720;  // 10 ms simulated
+    static constexpr std::uint64_t kHistoryInterval = 768'000;  // 250 ms simulated: a few per cent of a run's time
 
     // ---- breakpoints and watchpoints -------------------------------------------------------------
     // A location: a symbol or expression ("OUT", "OUT+3", "0B2CH", "*0B2CH") or FILE:LINE. A line
