@@ -55,6 +55,10 @@ public:
     std::vector<std::string> complete(std::string_view word, bool first_word) const;
     // The stop as the console reports it (header, source line, displays); no commands run.
     std::string describe(const Stop& s);
+    // What `info WHAT` shows (registers, 8155, 8279, axis, breakpoints, ...), for panes.
+    std::string info(std::string_view what) { return cmd_info(what, 1); }
+    // A line of a loaded program's source (read once, kept), or nullopt.
+    std::optional<std::string> source_line(const SourceLine& l);
 
 private:
     struct Display {
@@ -75,7 +79,6 @@ private:
     std::string error(int col, std::string message);
     std::string report(const Stop& s);  // describe, then the breakpoint's commands
     std::string location_lines(std::uint16_t pc);
-    std::optional<std::string> source_line(const SourceLine& l);
     std::string run_fallback(std::string_view line);
     std::string format_value(std::int64_t v, int width, char fmt) const;
     std::optional<int> number_arg(std::string_view& args, int& col, std::string& err);
