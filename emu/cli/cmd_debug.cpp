@@ -25,7 +25,10 @@ namespace {
 debug::Debugger* g_debugger = nullptr;       // for the Ctrl-C handler
 script::DebugShell* g_completing = nullptr;  // for libedit's completion callbacks
 
+volatile std::sig_atomic_t g_sigints = 0;  // Ctrl-C presses so far
+
 extern "C" void on_sigint(int) {
+    g_sigints = g_sigints + 1;
     if (g_debugger) g_debugger->interrupt();
 }
 
@@ -69,7 +72,12 @@ void interactive(script::DebugShell& shell) {
     std::string last;
     while (!shell.console().quit_requested()) {
         const std::string prompt = shell.console().prompt();
+        const std::sig_atomic_t sigints = g_sigints;
         char* raw = readline(prompt.c_str());
+        if (!raw && g_sigints != sigints) {  // Ctrl-C at the prompt: a fresh line, as gdb does
+            std::cout << "^C\n" << std::flush;
+            continue;
+        }
         if (!raw) {  // Ctrl-D
             std::cout << "quit\n";
             break;

@@ -214,9 +214,10 @@ public:
     // earlier instruction since history began: memory, chips, machine tool and time included.
     void set_history(bool on, std::uint64_t interval = kHistoryInterval);
     bool history() const { return history_on_; }
-    // The machine was changed outside its run (set, load, reset, restore): history after now is
-    // no longer this timeline's, and a snapshot is taken now.
-    void state_changed();
+    // The machine was changed outside its run (set, load, reset): history after now is no longer
+    // this timeline's, and a snapshot is taken now. `new_timeline` (a snapshot restored: the
+    // machine's past is another run's): all history goes.
+    void state_changed(bool new_timeline = false);
     Stop reverse_stepi();
     Stop reverse_step();      // as reverse_stepi (asm: a line is an instruction)
     Stop reverse_next();      // back one instruction of this routine (a routine called is undone whole)

@@ -70,6 +70,13 @@ def main():
     t.type("p $T < 600 * 3072000\r")
     out = t.read_until(PROMPT, 10)
     assert b"= 01H (1)" in out, out
+    # Ctrl-C at the prompt abandons the line, not the session.
+    t.type("info regi")
+    os.write(t.fd, b"\x03")
+    t.read_until(PROMPT, 10)
+    t.type("info registers\r")
+    out = t.read_until(PROMPT, 10)
+    assert b"PC " in out, out
     # A mistake is an error with its column, and the session goes on.
     t.type("p 1 + \r")
     out = t.read_until(PROMPT, 10)
