@@ -194,5 +194,55 @@ TEST_F(Thesis, CommandsAtABreakpointMakeALogPoint) {
     EXPECT_NE(more.find("New value = 0033H (51)"), std::string::npos) << more;
 }
 
+// OUT is called at X = 100 (an X step), 101 (X), 102 (the first Y step: YID(102) = 51), 102 (X), ...
+TEST_F(Thesis, IgnoreCountsTemporaryBreakpointsEnableAndDisable) {
+    run("break OUT");
+    run("ignore 1 2");
+    run("press EXEC");
+    EXPECT_EQ(m().cpu().regs().pc, symbol("OUT"));
+    EXPECT_EQ(m().peek(symbol("XAC")), 102);  // the third call
+    EXPECT_EQ(m().peek(symbol("YAC")), 50);
+    EXPECT_NE(run("info breakpoints").find("already hit 3 times"), std::string::npos);
+    run("disable 1");
+    run("tbreak DELAY");
+    run("continue");
+    EXPECT_EQ(m().cpu().regs().pc, symbol("DELAY"));
+    EXPECT_EQ(shell.debugger().breakpoints().size(), 1u);  // the temporary one is gone
+    run("enable 1");
+    run("continue");
+    EXPECT_EQ(m().cpu().regs().pc, symbol("OUT"));
+    EXPECT_EQ(m().peek(symbol("XAC")), 102);  // the Y step did not move X: OUT again at 102
+    EXPECT_EQ(m().peek(symbol("YAC")), 51);
+    run("advance DELAY");
+    EXPECT_EQ(m().cpu().regs().pc, symbol("DELAY"));
+}
+
+TEST_F(Thesis, WatchpointsOnReadsChipsAndTheKeyboard) {
+    // DELAY's LDA 1B38H reads D: stop after it, A = D = 2
+    run("rwatch DLYK");
+    run("press EXEC");
+    EXPECT_EQ(m().cpu().regs().pc, symbol("DELAY") + 3);
+    EXPECT_EQ(m().cpu().regs().a, 2);
+    run("delete");
+    // port A's latch: the next change is DELAY's pulse low, 03H -> 02H (O42's MVI A,03H ... OUT)
+    run("watch 8155 porta");
+    const std::string out = run("continue");
+    EXPECT_NE(out.find("Old value = 03H (3)\nNew value = 02H (2)"), std::string::npos) << out;
+    EXPECT_EQ(m().cpu().regs().pc, symbol("DELAY") + 13);
+    run("delete");
+    // a key pressed during the motion: the 8279's FIFO count goes 0 -> 1 when its debounce ends
+    run("watch 8279 fifo");
+    run("keydown 5");
+    const std::string key = run("continue");
+    EXPECT_NE(key.find("Watchpoint 3: 8279 fifo\nOld value = 00H (0)\nNew value = 01H (1)"), std::string::npos) << key;
+    EXPECT_EQ(m().kdc().state().fifo_count, 1);
+    run("delete");
+    run("keyup 5");
+    // awatch: any access; OKEY reads XAC (LXI H,1B34H; XRA M)
+    run("awatch XAC");
+    run("continue");
+    EXPECT_NE(run("info breakpoints").find("acc watchpoint"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace alp85::test
