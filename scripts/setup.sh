@@ -12,6 +12,7 @@ packages=(
   libcairo2-dev
   libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri
   xvfb xauth
+  libedit-dev
 )
 
 missing=()
