@@ -46,5 +46,6 @@ void add_script_command(CLI::App& app, int& status);
 void add_run_command(CLI::App& app, int& status);
 void add_gcode_command(CLI::App& app, int& status);
 void add_gui_command(CLI::App& app, int& status);
+void add_dap_command(CLI::App& app, int& status);
 
 }  // namespace alp85::cli
