@@ -29,8 +29,15 @@ public:
     std::function<void(const I8085&)> trace;
     bool run_to = false;  // run_to(): only run_to_pc stops the run
     std::uint16_t run_to_pc = 0;
+    RunMonitor* monitor = nullptr;
+    bool monitor_accesses = false;
 
     bool before_instruction(I8085& cpu) override {
+        if (monitor && !run_to && monitor->before_instruction(cpu)) {
+            stopped = true;
+            reason = Stop::Monitor;
+            return false;
+        }
         const std::uint16_t pc = cpu.regs().pc;
         const bool stop_here = run_to ? pc == run_to_pc : static_cast<bool>(breakpoint[pc]);
         if (stop_here && !(skip_armed && pc == skip_pc)) {
@@ -43,10 +50,24 @@ public:
         if (trace) trace(cpu);
         return true;
     }
-    void on_read(I8085& cpu, std::uint16_t addr, std::uint8_t) override { check(cpu, addr); }
-    void on_write(I8085& cpu, std::uint16_t addr, std::uint8_t) override { check(cpu, addr); }
+    void on_read(I8085& cpu, std::uint16_t addr, std::uint8_t v) override {
+        check(cpu, addr);
+        if (monitor_accesses && monitor->on_read(addr, v)) stop_monitor(cpu);
+    }
+    void on_write(I8085& cpu, std::uint16_t addr, std::uint8_t v) override {
+        check(cpu, addr);
+        if (monitor_accesses && monitor->on_write(addr, v)) stop_monitor(cpu);
+    }
+    void on_io(I8085& cpu, std::uint8_t port, std::uint8_t value, bool is_out) override {
+        if (monitor_accesses && monitor->on_io(port, value, is_out)) stop_monitor(cpu);
+    }
 
 private:
+    void stop_monitor(I8085& cpu) {
+        stopped = true;
+        reason = Stop::Monitor;
+        cpu.request_stop();
+    }
     void check(I8085& cpu, std::uint16_t addr) {
         if (any_watch && watch[addr]) {
             stopped = true;
@@ -206,7 +227,7 @@ void Machine::sample(std::uint64_t t) {
         const std::uint64_t at = next_sample_;
         next_sample_ += sample_period_;
         for (periph::Part* p : parts_) p->advance(std::max(at, p->now()));
-        sampler_(at);
+        if (!sampler_paused_) sampler_(at);
     }
 }
 
@@ -398,7 +419,19 @@ std::array<std::string, 7> Machine::display_art() const {
 void Machine::update_hooks() {
     Hooks& h = *hooks_;
     h.any_watch = h.watch.any();
-    cpu_.set_debug_hooks(h.breakpoint.any() || h.any_watch || h.trace ? hooks_.get() : nullptr);
+    h.monitor_accesses = h.monitor && h.monitor->wants_accesses();
+    cpu_.set_debug_hooks(h.breakpoint.any() || h.any_watch || h.trace || h.monitor ? hooks_.get() : nullptr);
+}
+
+void Machine::set_monitor(RunMonitor* monitor) {
+    hooks_->monitor = monitor;
+    update_hooks();
+}
+RunMonitor* Machine::monitor() const { return hooks_->monitor; }
+
+void Machine::rewind_inputs(std::size_t log_size, const std::vector<InputEvent>& pending, std::uint64_t next_seq) {
+    if (log_size < input_log_.size()) input_log_.resize(log_size);
+    inputs_.restore(pending, next_seq);
 }
 
 void Machine::add_breakpoint(std::uint16_t pc) {

@@ -31,6 +31,23 @@
 
 namespace alp85 {
 
+// A debugger's eyes on a run (Machine::set_monitor): consulted before every instruction and at
+// every data access and I/O transfer while installed. While none is installed the CPU runs its
+// plain path and pays nothing for it.
+class RunMonitor {
+public:
+    virtual ~RunMonitor() = default;
+    // Before each instruction (registers current). True: stop before it (Stop::Monitor).
+    virtual bool before_instruction(const I8085& cpu) = 0;
+    // Data accesses and I/O of the instruction running (its registers are not current). True:
+    // stop after that instruction (Stop::Monitor).
+    virtual bool on_read(std::uint16_t addr, std::uint8_t value) { (void)addr, (void)value; return false; }
+    virtual bool on_write(std::uint16_t addr, std::uint8_t value) { (void)addr, (void)value; return false; }
+    virtual bool on_io(std::uint8_t port, std::uint8_t value, bool is_out) { (void)port, (void)value, (void)is_out; return false; }
+    // Which of the above it needs: before_instruction is always called; these only when true.
+    virtual bool wants_accesses() const { return false; }
+};
+
 class Machine {
 public:
     struct Options {
@@ -46,6 +63,7 @@ public:
         Breakpoint,  // the PC reached a breakpoint (the instruction there has not run)
         Watchpoint,  // a watched address was accessed (after the instruction)
         Target,      // run_to reached its address (the instruction there has not run)
+        Monitor,     // the installed RunMonitor asked to stop
     };
 
     Machine();
@@ -117,6 +135,14 @@ public:
     void set_trace(std::function<void(const I8085&)> trace);
     // What stopped the last run at a watchpoint: the address accessed.
     std::uint16_t watch_hit() const { return watch_hit_; }
+    // Installs a debugger's monitor (nullptr removes it); like breakpoints, it puts the CPU on its
+    // debug path only while installed. The monitor must outlive its installation.
+    void set_monitor(RunMonitor* monitor);
+    RunMonitor* monitor() const;
+    // Rewinding for reverse execution: after restore_bytes() of an earlier snapshot, the input log
+    // is cut back to `log_size` entries (what had been applied at that snapshot) and the queue
+    // holds `pending` (every input still to come on this timeline), numbered as before.
+    void rewind_inputs(std::size_t log_size, const std::vector<InputEvent>& pending, std::uint64_t next_seq);
 
     // ---- parts ------------------------------------------------------------------------------------
     // Every part beside the CPU, in the order they are advanced, reset and saved.
@@ -129,6 +155,7 @@ public:
     I8085& cpu() { return cpu_; }
     const I8085& cpu() const { return cpu_; }
     Bus& bus() { return bus_; }
+    const Bus& bus() const { return bus_; }
     periph::I8155& rio() { return rio_; }  // the 8155 (RAM-I/O-timer)
     const periph::I8155& rio() const { return rio_; }
     periph::I8279& kdc() { return kdc_; }  // the 8279 (keyboard/display controller)
@@ -138,6 +165,9 @@ public:
     // Calls fn(t) at every multiple of `period` T-states while set (a recorder's sampling clock);
     // the batches end there. period 0 removes it.
     void set_sampler(std::uint64_t period, std::function<void(std::uint64_t t)> fn);
+    // While paused the sampler is not called (a debugger re-executing the past: those samples
+    // were taken the first time).
+    void pause_sampler(bool paused) { sampler_paused_ = paused; }
 
     // ---- snapshots -------------------------------------------------------------------------------
     // The whole machine (CPU, memories, every part, pending inputs; breakpoints and the input log
@@ -186,6 +216,7 @@ private:
     std::uint64_t sample_period_ = 0;
     std::uint64_t next_sample_ = periph::Part::kNever;
     std::function<void(std::uint64_t)> sampler_;
+    bool sampler_paused_ = false;
     std::vector<periph::Part*> parts_;
 
     std::vector<std::unique_ptr<IoDevice>> chip_ports_;  // the chips' I/O decoding (board::kIoMap)

@@ -1,6 +1,10 @@
+// Running under the debugger: the run loop, steps with CALL/RET tracking, stops as values.
 #include "emu/debug/debugger.h"
 
 #include <fmt/format.h>
+
+#include "asm/isa.h"
+#include "emu/debug/monitor.h"
 
 namespace alp85::debug {
 
@@ -12,22 +16,20 @@ std::string_view name(StopReason reason) {
         case StopReason::Watchpoint: return "watchpoint";
         case StopReason::Target: return "target";
         case StopReason::Step: return "step";
+        case StopReason::Finished: return "finished";
+        case StopReason::Interrupted: return "interrupted";
+        case StopReason::HistoryStart: return "history-start";
+        case StopReason::Error: return "error";
     }
     return "?";
 }
 
-namespace {
-StopReason reason_of(Machine::Stop s) {
-    switch (s) {
-        case Machine::Stop::Deadline: return StopReason::Deadline;
-        case Machine::Stop::Condition: return StopReason::Condition;
-        case Machine::Stop::Breakpoint: return StopReason::Breakpoint;
-        case Machine::Stop::Watchpoint: return StopReason::Watchpoint;
-        case Machine::Stop::Target: return StopReason::Target;
-    }
-    return StopReason::Deadline;
+Debugger::Debugger(Machine& machine)
+    : m_(machine), monitor_(std::make_unique<Monitor>(*this)), history_(std::make_unique<History>()) {}
+
+Debugger::~Debugger() {
+    if (m_.monitor() == monitor_.get()) m_.set_monitor(nullptr);
 }
-}  // namespace
 
 Stop Debugger::here(StopReason reason) const {
     Stop s;
@@ -39,30 +41,267 @@ Stop Debugger::here(StopReason reason) const {
     return s;
 }
 
+void Debugger::arm() {
+    Monitor& mon = *monitor_;
+    mon.rebuild();
+    const bool needed = mon.replay && !mon.hits ? mon.record != nullptr : mon.needed();
+    m_.set_monitor(needed ? &mon : nullptr);
+}
+
+void Debugger::rebaseline() {
+    m_.tool().advance(m_.now());
+    for (Watchpoint& w : watchpoints_) {
+        switch (w.kind) {
+            case WatchKind::Write:
+                if (w.last - w.first > 1) {
+                    w.shadow.resize(static_cast<std::size_t>(w.last - w.first) + 1);
+                    for (std::uint32_t a = w.first; a <= w.last; ++a) w.shadow[a - w.first] = m_.peek(static_cast<std::uint16_t>(a));
+                } else {
+                    w.last_value = m_.peek(w.first) | (w.last != w.first ? m_.peek(w.last) << 8 : 0);
+                }
+                break;
+            case WatchKind::Tool: w.last_value = tool_value(w.quantity, w.axis); break;
+            case WatchKind::Chip: w.last_value = chip_value(w.reg); break;
+            default: break;
+        }
+    }
+}
+
+Stop Debugger::finish_stop(Stop s) {
+    if (s.reason == StopReason::Breakpoint) {
+        const Breakpoint* b = breakpoint(s.number);
+        if (b && b->temporary) remove(s.number);
+    }
+    return s;
+}
+
+namespace {
+Stop from_hit(Stop s, const Hit& h) {
+    s.number = h.number;
+    s.changes = h.changes;
+    s.data = h.data;
+    s.after = h.after;
+    return s;
+}
+}  // namespace
+
+Stop Debugger::drive(std::uint64_t until, const std::function<bool()>& condition, bool skip_first) {
+    Monitor& mon = *monitor_;
+    mon.skip_at = skip_first ? std::optional<std::uint64_t>(m_.now()) : std::nullopt;
+    mon.stop_hit.reset();
+    mon.pending.clear();
+    mon.error.clear();
+    mon.target_reached = false;
+    rebaseline();
+    arm();
+    const auto stop_condition = [&] { return interrupt_.load() || (condition && condition()); };
+    for (;;) {
+        std::uint64_t chunk = std::min(until, m_.now() + kHistoryInterval);  // Ctrl-C is seen between chunks
+        if (history_on_) {
+            if (history_->due(m_.now())) history_->take(m_);
+            chunk = std::min(until, std::max(history_->next_due(), m_.now() + 1));
+        }
+        switch (m_.run_until(chunk, stop_condition)) {
+            case Machine::Stop::Condition:
+                if (interrupt_.exchange(false)) return here(StopReason::Interrupted);
+                return here(StopReason::Condition);
+            case Machine::Stop::Deadline:
+                if (m_.now() >= until) return here(StopReason::Deadline);
+                continue;
+            case Machine::Stop::Breakpoint: return here(StopReason::Breakpoint);  // the machine's own
+            case Machine::Stop::Watchpoint: return here(StopReason::Watchpoint);
+            case Machine::Stop::Target: return here(StopReason::Target);
+            case Machine::Stop::Monitor: break;
+        }
+        if (!mon.error.empty()) {
+            Stop s = here(StopReason::Error);
+            s.message = mon.error;
+            return s;
+        }
+        if (mon.stop_hit) return finish_stop(from_hit(here(mon.stop_hit->reason), *mon.stop_hit));
+        if (!mon.pending.empty()) {
+            const std::vector<Hit> kept = mon.decide_pending(true);
+            if (!kept.empty()) {
+                Stop s = from_hit(here(StopReason::Watchpoint), kept.front());
+                for (std::size_t i = 1; i < kept.size(); ++i)
+                    s.changes.insert(s.changes.end(), kept[i].changes.begin(), kept[i].changes.end());
+                return s;
+            }
+        }
+        if (mon.target_reached) return here(StopReason::Target);
+        mon.skip_at.reset();  // a watch whose condition was false: on, a breakpoint here still stops
+    }
+}
+
 Stop Debugger::run_until(std::uint64_t until, const std::function<bool()>& condition, const Origin& origin) {
-    const Stop s = here(reason_of(m_.run_until(until, condition)));
-    if (s.reason == StopReason::Breakpoint || s.reason == StopReason::Watchpoint)
+    const Stop s = drive(until, condition, true);
+    if (s.reason == StopReason::Breakpoint || s.reason == StopReason::Watchpoint || s.reason == StopReason::Error)
         emit({Event::Kind::Stopped, s, {}, origin});
     return s;
 }
 
-Stop Debugger::run_to(std::uint16_t pc, std::uint64_t until) { return here(reason_of(m_.run_to(pc, until))); }
+Stop Debugger::run_to(std::uint16_t pc, std::uint64_t until) {
+    for (;;) {
+        std::uint64_t chunk = until;
+        if (history_on_) {
+            if (history_->due(m_.now())) history_->take(m_);
+            chunk = std::min(until, std::max(history_->next_due(), m_.now() + 1));
+        }
+        const Machine::Stop s = m_.run_to(pc, chunk);
+        if (s == Machine::Stop::Target) return here(StopReason::Target);
+        if (m_.now() >= until) return here(StopReason::Deadline);
+    }
+}
 
-Stop Debugger::step() {
+Stop Debugger::cont(std::uint64_t limit) {
+    Stop s = drive(m_.now() + limit, {}, true);
+    if (s.reason == StopReason::Deadline)
+        s.message = fmt::format("no breakpoint or watchpoint stopped the run within {:.0f} s of simulated time",
+                                board::ms_from_tstates(limit) / 1000.0);
+    return s;
+}
+
+namespace {
+bool is_call(std::uint8_t op) { return op == 0xCD || (op & 0xC7) == 0xC4; }  // CALL, Ccc
+bool is_rst(std::uint8_t op) { return (op & 0xC7) == 0xC7; }
+}  // namespace
+
+Stop Debugger::stepi() {
+    if (history_on_ && history_->due(m_.now())) history_->take(m_);
+    Monitor& mon = *monitor_;
+    mon.skip_at = m_.now();
+    mon.stop_hit.reset();
+    mon.pending.clear();
+    mon.error.clear();
+    rebaseline();
+    arm();
     m_.step();
+    mon.check_state(m_.cpu());  // a table that moved during the instruction
+    const std::vector<Hit> kept = mon.decide_pending(true);
+    if (!kept.empty()) return from_hit(here(StopReason::Watchpoint), kept.front());
+    if (mon.stop_hit && mon.stop_hit->reason == StopReason::Watchpoint) {
+        Stop s = from_hit(here(StopReason::Watchpoint), *mon.stop_hit);
+        mon.stop_hit.reset();
+        return s;
+    }
     return here(StopReason::Step);
 }
 
-Debugger::Location Debugger::locate_line(std::string_view file, int line) const {
-    Location loc;
-    const std::optional<SourceLine> next = program_.next_line_with_code(file, line);
-    if (!next) {
-        loc.error = fmt::format("no code at or after {}:{} in the loaded programs", file, line);
-        return loc;
+Stop Debugger::run_with_target(std::function<bool(const I8085&)> target, StopReason reason) {
+    const std::uint64_t start = m_.now();
+    monitor_->target = [start, t = std::move(target)](const I8085& cpu) { return cpu.tstates() != start && t(cpu); };
+    Stop s = drive(m_.now() + kContinueLimit, {}, true);
+    monitor_->target = nullptr;
+    arm();
+    if (s.reason == StopReason::Target) s.reason = reason;
+    return s;
+}
+
+Stop Debugger::step() {
+    const Registers before = m_.cpu().regs();
+    const std::uint8_t op = m_.peek(before.pc);
+    Stop s = stepi();
+    if (s.reason != StopReason::Step) return s;
+    const Registers& now = m_.cpu().regs();
+    // Into a routine without source lines (the monitor's, say) from one with: run it whole.
+    const bool entered = (is_call(op) || is_rst(op)) && now.sp == static_cast<std::uint16_t>(before.sp - 2);
+    if (entered && !program_.line_of(now.pc) && program_.line_of(before.pc)) {
+        s = finish();
+        if (s.reason == StopReason::Finished) s.reason = StopReason::Step;
     }
-    loc.addresses = program_.addresses_of(next->file, next->line);
-    if (next->line != line) loc.bound = next;
-    return loc;
+    return s;
+}
+
+Stop Debugger::next() {
+    const Registers r = m_.cpu().regs();
+    const std::uint8_t op = m_.peek(r.pc);
+    if (!is_call(op) && !is_rst(op)) return stepi();
+    const auto ret = static_cast<std::uint16_t>(r.pc + isa::kOpcodes[op].length);
+    const std::uint16_t sp = r.sp;
+    return run_with_target([ret, sp](const I8085& cpu) { return cpu.regs().pc == ret && cpu.regs().sp >= sp; },
+                           StopReason::Step);
+}
+
+Stop Debugger::finish() {
+    const auto slot = return_slot();
+    if (!slot) {
+        Stop s = here(StopReason::Error);
+        s.message = "\"finish\" not meaningful in the outermost routine (no return address on the stack)";
+        return s;
+    }
+    const std::uint32_t above = *slot + 2u;  // the return address popped: the routine has returned
+    return run_with_target([above](const I8085& cpu) { return cpu.regs().sp >= above; }, StopReason::Finished);
+}
+
+Stop Debugger::advance(std::uint16_t pc) {
+    return run_with_target([pc](const I8085& cpu) { return cpu.regs().pc == pc; }, StopReason::Target);
+}
+
+Stop Debugger::until(std::optional<std::uint16_t> pc) {
+    const auto slot = return_slot();
+    const std::uint32_t above = slot ? *slot + 2u : 0x10000u;
+    if (pc) {
+        const std::uint16_t to = *pc;
+        return run_with_target([to, above](const I8085& cpu) { return cpu.regs().pc == to || cpu.regs().sp >= above; },
+                               StopReason::Target);
+    }
+    // Past the current instruction in this routine: out of a loop whose jump goes back.
+    const Registers r = m_.cpu().regs();
+    const std::uint8_t op = m_.peek(r.pc);
+    if (is_call(op) || is_rst(op)) return next();
+    const std::uint16_t from = r.pc, sp = r.sp;
+    return run_with_target(
+        [from, sp, above](const I8085& cpu) {
+            return (cpu.regs().pc > from && cpu.regs().sp == sp) || cpu.regs().sp >= above;
+        },
+        StopReason::Step);
+}
+
+// ---- looking ---------------------------------------------------------------------------------------
+
+Debugger::Value Debugger::evaluate(std::string_view expression) const {
+    Value v;
+    ExprError err;
+    const auto e = Expr::parse(expression, program_, err);
+    if (!e) {
+        v.error = err.message;
+        v.col = err.col;
+        return v;
+    }
+    try {
+        v.value = e->eval(m_);
+        v.width = e->width();
+    } catch (const ExprError& x) {
+        v.error = x.message;
+        v.col = x.col;
+    }
+    return v;
+}
+
+std::int64_t Debugger::tool_value(ToolQuantity q, periph::MachineTool::Axis axis) const {
+    const periph::MachineTool& t = m_.tool();
+    switch (q) {
+        case ToolQuantity::Steps: return std::llround(t.table_steps(axis));
+        case ToolQuantity::Count: return t.transducer_count(axis);
+        case ToolQuantity::Lost: return t.lost_steps(axis);
+        case ToolQuantity::EndStop: return t.end_stop(axis).at;
+    }
+    return 0;
+}
+
+std::int64_t Debugger::chip_value(ChipRegister r) const {
+    const auto& rio = m_.rio().state();
+    switch (r) {
+        case ChipRegister::PortA: return rio.latch[0];
+        case ChipRegister::PortB: return rio.latch[1];
+        case ChipRegister::PortC: return rio.latch[2];
+        case ChipRegister::Command: return rio.command;
+        case ChipRegister::Timer: return rio.count_length;
+        case ChipRegister::TimerOut: return m_.rio().timer_out() ? 1 : 0;
+        case ChipRegister::Fifo: return m_.kdc().state().fifo_count;
+        case ChipRegister::Status8279: return m_.kdc().peek_status(m_.now());
+    }
+    return 0;
 }
 
 }  // namespace alp85::debug

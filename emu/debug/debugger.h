@@ -1,39 +1,72 @@
-// The debugging API every front end uses (the script session, the debugger's prompt, the GUI,
+// The debugging API every front end uses (the script session, `alp85 debug`'s prompt, the GUI,
 // DAP): runs that end in a Stop value, events to listeners instead of text, the program's symbols
-// and source lines in one table, and the machine's input log for exact replay.
+// and source lines in one table, and the machine's input log for exact replay. On top of that the
+// source-level debugger: numbered breakpoints (address, symbol, FILE:LINE; conditions, ignore
+// counts, temporary) and watchpoints (memory, I/O ports, the machine tool, chip registers),
+// stepping with CALL/RET tracking (step, next, finish, until, advance), and reverse execution
+// (reverse step, next, finish, continue) by periodic snapshots and deterministic re-execution.
 //
-// It wraps one Machine and adds no cost to a plain run: breakpoints and watchpoints are the
-// machine's, armed on the CPU only while some exist.
+// It wraps one Machine and adds no cost to a plain run: while no breakpoint or watchpoint is armed
+// and no step is under way, the CPU runs its plain path (the debugger's RunMonitor is installed only
+// while needed). Reading anything through the debugger never changes a device.
+//
+//   Machine m;  debug::Debugger d(m);
+//   d.program().add_table(fw.symbols);
+//   d.set_history(true);                          // snapshots for reverse execution
+//   int n = d.add_breakpoint("OUT").number;       // or "thesis.asm:629", "0B2CH"
+//   debug::Stop s = d.cont();                     // StopReason::Breakpoint, s.number == n
+//   s = d.step();  s = d.finish();  s = d.reverse_step();
+//   auto v = d.evaluate("word[YAC] + 1");         // value or error with its column
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "emu/board/machine.h"
+#include "emu/debug/expr.h"
 #include "emu/program/symbols.h"
 
 namespace alp85::debug {
 
 enum class StopReason : std::uint8_t {
-    Deadline,    // the requested time was reached
-    Condition,   // the caller's condition became true
-    Breakpoint,  // the PC reached a breakpoint (the instruction there has not run)
-    Watchpoint,  // a watched address was accessed (after the instruction)
-    Target,      // run_to reached its address
-    Step,        // one instruction was executed
+    Deadline,     // the requested time was reached
+    Condition,    // the caller's condition became true
+    Breakpoint,   // the PC reached a breakpoint (the instruction there has not run)
+    Watchpoint,   // a watched thing changed or was accessed (after the instruction)
+    Target,       // run_to / advance / until reached its address
+    Step,         // a step ended (step, stepi, next, reverse-step, ...)
+    Finished,     // finish / reverse-finish: the routine returned (or was entered)
+    Interrupted,  // interrupt() (Ctrl-C) ended the run
+    HistoryStart, // a reverse run reached the oldest snapshot: no more history
+    Error,        // a breakpoint's condition could not be evaluated, or a command could not run
 };
 std::string_view name(StopReason reason);  // "deadline", "breakpoint", ...
+
+// A watched value that changed: old and new.
+struct Change {
+    int number = 0;       // the watchpoint
+    std::string what;     // "word YAC (1B32H)", "port F9H out", "axis Y count"
+    std::int64_t old_value = 0, new_value = 0;
+    int digits = 2;       // hex digits for memory and ports; 0: a signed decimal quantity
+    bool value_only = false;  // an access (read/port) without old/new: new_value is the value
+};
 
 struct Stop {
     StopReason reason = StopReason::Deadline;
     std::uint64_t at = 0;                // T-state
     std::uint16_t pc = 0;                // the next instruction
-    std::optional<std::uint16_t> data;   // Watchpoint: the address accessed
+    std::optional<std::uint16_t> data;   // Watchpoint: the address or port accessed
     std::optional<SourceLine> line;      // the source line of pc, when a loaded program has one
+    int number = 0;                      // the breakpoint or watchpoint that stopped it
+    std::vector<Change> changes;         // watchpoints: what changed
+    std::optional<std::uint16_t> after;  // watchpoints: the instruction that made the change
+    std::string message;                 // Error, HistoryStart: what happened
 };
 
 // Where a command came from (a script's file and line), for front ends that print it.
@@ -54,11 +87,89 @@ struct Event {
     Origin origin;
 };
 
+struct Breakpoint {
+    int number = 0;
+    std::uint16_t address = 0;
+    std::string location;                // as given: "OUT", "thesis.asm:629", "0B2CH"
+    std::optional<SourceLine> line;      // the source line it is on
+    bool temporary = false;              // tbreak: deleted at its first stop
+    bool enabled = true;
+    std::optional<Expr> condition;
+    unsigned ignore = 0;                 // hits still to pass
+    unsigned hits = 0;                   // stops (and ignored passes) so far
+    std::vector<std::string> commands;   // run by the front end at a stop (commands ... end)
+};
+
+enum class WatchKind : std::uint8_t {
+    Write,   // memory written with a new value (gdb's watch)
+    Read,    // memory read (rwatch)
+    Access,  // memory read or written (awatch)
+    Port,    // an I/O port: IN, OUT or either, with an optional value
+    Tool,    // a machine-tool quantity changes
+    Chip,    // a chip register changes
+};
+enum class PortDir : std::uint8_t { In, Out, Any };
+enum class ToolQuantity : std::uint8_t { Steps, Count, Lost, EndStop };
+enum class ChipRegister : std::uint8_t { PortA, PortB, PortC, Command, Timer, TimerOut, Fifo, Status8279 };
+
+struct Watchpoint {
+    int number = 0;
+    WatchKind kind = WatchKind::Write;
+    std::string what;                    // for messages: "word YAC (1B32H)", "port F9H out"
+    std::uint16_t first = 0, last = 0;   // memory range (inclusive), or the port in `first`
+    PortDir dir = PortDir::Any;
+    std::optional<std::uint8_t> value;   // Port: only this value
+    ToolQuantity quantity = ToolQuantity::Steps;
+    periph::MachineTool::Axis axis = periph::MachineTool::Axis::X;
+    ChipRegister reg = ChipRegister::PortA;
+    bool enabled = true;
+    std::optional<Expr> condition;
+    unsigned ignore = 0;
+    unsigned hits = 0;
+    std::vector<std::string> commands;
+    std::int64_t last_value = 0;          // Write, Tool, Chip: the value at the last check
+    std::vector<std::uint8_t> shadow;     // Write over more than a word: the bytes at the last check
+};
+
+// A parsed watchpoint request, for add_watchpoint (the console parses text into one).
+struct WatchSpec {
+    WatchKind kind = WatchKind::Write;
+    std::string what;
+    std::uint16_t first = 0, last = 0;
+    PortDir dir = PortDir::Any;
+    std::optional<std::uint8_t> value;
+    ToolQuantity quantity = ToolQuantity::Steps;
+    periph::MachineTool::Axis axis = periph::MachineTool::Axis::X;
+    ChipRegister reg = ChipRegister::PortA;
+};
+
+// A frame of the call stack (bt): found by reading the stack for return addresses.
+struct Frame {
+    std::uint16_t pc = 0;                // where this frame is (frame 0: the PC)
+    std::uint16_t slot = 0;              // the stack address of its return address (frames > 0)
+    std::optional<std::string> routine;  // the label at or before pc
+    std::optional<SourceLine> line;
+};
+
+// One executed instruction of `history`: where, and the registers it changed.
+struct Executed {
+    std::uint64_t at = 0;
+    std::uint16_t pc = 0;
+    Registers before, after;
+};
+
+struct Boundary;    // emu/debug/monitor.h, the debugger's inside
+struct Hit;
+struct Checkpoint;
+
 class Debugger {
 public:
     using Listener = std::function<void(const Event&)>;
 
-    explicit Debugger(Machine& machine) : m_(machine) {}
+    explicit Debugger(Machine& machine);
+    ~Debugger();
+    Debugger(const Debugger&) = delete;
+    Debugger& operator=(const Debugger&) = delete;
 
     Machine& machine() { return m_; }
     const Machine& machine() const { return m_; }
@@ -72,32 +183,142 @@ public:
         for (const Listener& l : listeners_) l(e);
     }
 
-    // Runs as Machine does; a stop at a breakpoint or watchpoint is also sent as a Stopped event
-    // (with `origin`, the command that ran).
+    // ---- running ---------------------------------------------------------------------------------
+    // Runs as Machine does, with the breakpoints and watchpoints armed; a stop at one is also sent
+    // as a Stopped event (with `origin`, the command that ran).
     Stop run_until(std::uint64_t until, const std::function<bool()>& condition = {}, const Origin& origin = {});
     Stop run_for(std::uint64_t tstates, const std::function<bool()>& condition = {}, const Origin& origin = {}) {
         return run_until(m_.now() + tstates, condition, origin);
     }
+    // Runs until the PC reaches `pc` (Target) or `until` (Deadline); breakpoints do not stop it.
     Stop run_to(std::uint16_t pc, std::uint64_t until);
-    Stop step();
+    // Until a breakpoint, a watchpoint, interrupt(), or `limit` T-states (Deadline).
+    Stop cont(std::uint64_t limit = kContinueLimit);
+    Stop stepi();    // one instruction (into CALL and RST)
+    Stop step();     // one source line: into a CALL or RST, but over routines without source lines
+    Stop next();     // one instruction, a CALL or RST run whole
+    Stop finish();   // until the current routine returns to its caller
+    // advance: until the PC reaches `pc` (or a breakpoint). until: the same, and also stops when the
+    // current routine returns; without `pc`, until the PC passes the current one in this routine
+    // (out of a loop).
+    Stop advance(std::uint16_t pc);
+    Stop until(std::optional<std::uint16_t> pc = {});
     Stop here(StopReason reason) const;  // a Stop describing the machine now
+    // Ends a run from another thread or a signal handler (Ctrl-C); the run returns Interrupted.
+    void interrupt() { interrupt_.store(true); }
+    void interrupt_clear() { interrupt_.store(false); }
+    static constexpr std::uint64_t kContinueLimit = 600ull * 3'072'000;  // 10 minutes simulated
 
-    // A breakpoint location: a symbol, a number, or FILE:LINE through the source lines (a line
-    // without code binds to the next line that has some; `bound` says which).
+    // ---- reverse execution -------------------------------------------------------------------------
+    // Snapshots every `interval` T-states while on; the machine can then be taken back to any
+    // earlier instruction since history began: memory, chips, machine tool and time included.
+    void set_history(bool on, std::uint64_t interval = kHistoryInterval);
+    bool history() const { return history_on_; }
+    // The machine was changed outside its run (set, load, reset, restore): history after now is
+    // no longer this timeline's, and a snapshot is taken now.
+    void state_changed();
+    Stop reverse_stepi();
+    Stop reverse_step();      // as reverse_stepi (asm: a line is an instruction)
+    Stop reverse_next();      // back one instruction of this routine (a routine called is undone whole)
+    Stop reverse_finish();    // back to the CALL that entered this routine
+    Stop reverse_continue();  // back to the previous breakpoint or watchpoint hit
+    // The last `n` instructions before now, oldest first (re-executed from the snapshots: nothing
+    // is traced while running). Fewer when history does not reach back so far.
+    std::vector<Executed> last_instructions(std::size_t n);
+    std::uint64_t history_start() const;  // the oldest T-state reverse execution can reach
+    std::size_t history_snapshots() const;
+    // True while the machine re-executes the past (front ends keep quiet about what it does again).
+    bool replaying() const { return replaying_; }
+    static constexpr std::uint64_t kHistoryInterval = 30'720;  // 10 ms simulated
+
+    // ---- breakpoints and watchpoints -------------------------------------------------------------
+    // A location: a symbol or expression ("OUT", "OUT+3", "0B2CH", "*0B2CH") or FILE:LINE. A line
+    // without code binds to the next line that has some; `bound` says which.
     struct Location {
         std::vector<std::uint16_t> addresses;
         std::optional<SourceLine> bound;
         std::string error;  // empty when found
+        int col = 0;        // of the error, 1-based in the text given
     };
     Location locate_line(std::string_view file, int line) const;
+    Location locate(std::string_view text) const;
+
+    struct Added {
+        int number = 0;        // 0: refused (error says why)
+        std::string error;
+        int col = 0;                      // of the error, in the location or the condition text
+        bool in_condition = false;        // the error is the condition's
+        std::optional<SourceLine> bound;  // FILE:LINE bound to a later line
+    };
+    Added add_breakpoint(std::string_view location, bool temporary = false, std::string_view condition = {});
+    Added add_breakpoint_at(std::uint16_t address, bool temporary = false);
+    Added add_watchpoint(const WatchSpec& spec, std::string_view condition = {});
+    // By number (breakpoints and watchpoints share the numbers). False: no such number.
+    bool remove(int number);
+    void remove_all();
+    bool remove_breakpoints_at(std::uint16_t address);
+    bool enable(int number, bool on);
+    // An empty condition removes it; otherwise the error (with column) or "".
+    std::string set_condition(int number, std::string_view condition, int& col);
+    bool set_ignore(int number, unsigned count);
+    bool set_commands(int number, std::vector<std::string> commands);
+    const std::vector<Breakpoint>& breakpoints() const { return breakpoints_; }
+    const std::vector<Watchpoint>& watchpoints() const { return watchpoints_; }
+    const Breakpoint* breakpoint(int number) const;
+    const Watchpoint* watchpoint(int number) const;
+    // The commands to run for the stop `s` (its breakpoint's or watchpoint's), or none.
+    std::vector<std::string> commands_for(const Stop& s) const;
+
+    // ---- looking --------------------------------------------------------------------------------
+    struct Value {
+        std::int64_t value = 0;
+        int width = 16;
+        std::string error;  // with col
+        int col = 0;
+    };
+    Value evaluate(std::string_view expression) const;
+    // The current value of a machine-tool quantity or chip register (no side effects).
+    std::int64_t tool_value(ToolQuantity q, periph::MachineTool::Axis axis) const;
+    std::int64_t chip_value(ChipRegister r) const;
+    std::vector<Frame> backtrace() const;
 
     // Every outside input applied so far, with its T-state (Machine::input_log).
     const std::vector<InputEvent>& input_log() const { return m_.input_log(); }
 
 private:
+    class Monitor;
+    class History;
+    friend class Monitor;
+    friend class History;
+
+    // The one run loop: chunks up to the next snapshot time, monitor armed as needed.
+    Stop drive(std::uint64_t until, const std::function<bool()>& condition, bool skip_first);
+    Stop run_with_target(std::function<bool(const I8085&)> target, StopReason reason);
+    // Re-execution: the machine back at checkpoint `c`, then run to `t` (a position of this
+    // timeline), recording boundaries and/or hits on the way; nothing stops it.
+    void replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits);
+    Stop reverse_frame(bool finish);
+    Stop no_history(std::string why);
+    void arm();     // installs the monitor iff something needs it
+    void rebaseline();  // watched values as they are now
+    Stop finish_stop(Stop s);  // temporary breakpoints, the line
+    std::optional<std::uint16_t> return_slot() const;  // the current routine's return address slot
+    Stop run_to_frame(std::uint16_t pc, std::uint16_t sp_at_least, StopReason reason);
+    int next_number() { return ++last_number_; }
+    Breakpoint* find_bp(int number);
+    Watchpoint* find_wp(int number);
+
     Machine& m_;
     SymbolTable program_;
     std::vector<Listener> listeners_;
+    std::vector<Breakpoint> breakpoints_;
+    std::vector<Watchpoint> watchpoints_;
+    int last_number_ = 0;
+    std::unique_ptr<Monitor> monitor_;
+    std::unique_ptr<History> history_;
+    bool history_on_ = false;
+    bool replaying_ = false;
+    std::atomic<bool> interrupt_{false};
 };
 
 }  // namespace alp85::debug

@@ -33,6 +33,7 @@ Session::Session(SessionOptions options)
       debugger_(*machine_) {
     // A table reaching an end stop is reported as it happens (the screw stalls the motor there).
     machine_->tool().on_end_stop([this](periph::MachineTool::Axis axis, bool high, std::uint64_t t) {
+        if (debugger_.replaying()) return;  // said the first time
         debugger_.emit({debug::Event::Kind::Output, {},
                         fmt::format("machine tool: the {} table reached its {} end stop at {}", "XYZ"[static_cast<int>(axis)],
                                     high ? "high" : "low", format_time(t - time_origin_)),
@@ -549,6 +550,19 @@ Session::Outcome Session::tool_command(const Command& c) {
 }
 
 Session::Outcome Session::execute(const Command& c) {
+    Outcome o = run_command(c);
+    // The machine changed outside its run: reverse execution's history ends here.
+    switch (c.op) {
+        case Op::Load: case Op::Monitor: case Op::Firmware: case Op::Reset: case Op::Motor: case Op::Feedback:
+        case Op::SetMem: case Op::SetReg: case Op::Restore: case Op::Option:
+            debugger_.state_changed();
+            break;
+        default: break;
+    }
+    return o;
+}
+
+Session::Outcome Session::run_command(const Command& c) {
     Machine& m = *machine_;
     if (options_.verbose) output(c, fmt::format("[{}] {}:{}: {}", format_time(elapsed()), c.where.file, c.where.line, rtrim(c.line)));
     std::string e;
@@ -598,17 +612,18 @@ Session::Outcome Session::execute(const Command& c) {
             const auto a = resolve(*c.address, e);
             if (!a) return fail(c, e);
             const auto target = static_cast<std::uint16_t>(*a);
-            if (m.run_to(target, m.now() + c.time) != Machine::Stop::Target)
+            if (debugger_.run_to(target, m.now() + c.time).reason != debug::StopReason::Target)
                 return fail(c, fmt::format("the PC did not reach {} within {}", hex(target, 4), format_time(c.time)));
             return {};
         }
         case Op::WaitDisplay: {
             const std::string want = rtrim(c.text);
-            const Machine::Stop stop = m.run_for(c.time, [&] { return rtrim(m.display_text()) == want; });
-            if (stop == Machine::Stop::Condition) return {};
-            if (stop == Machine::Stop::Breakpoint)
-                return fail(c, fmt::format("stopped at breakpoint {} before the display showed \"{}\"",
+            const debug::Stop stop = debugger_.run_for(c.time, [&] { return rtrim(m.display_text()) == want; }, origin(c));
+            if (stop.reason == debug::StopReason::Condition) return {};
+            if (stop.reason == debug::StopReason::Breakpoint || stop.reason == debug::StopReason::Watchpoint)
+                return fail(c, fmt::format("stopped at {} {} before the display showed \"{}\"", debug::name(stop.reason),
                                            hex(m.cpu().regs().pc, 4), c.text));
+            if (stop.reason == debug::StopReason::Interrupted) return fail(c, "interrupted");
             return fail(c, fmt::format("the display did not show \"{}\" within {}", c.text, format_time(c.time)));
         }
         case Op::Step:
@@ -618,11 +633,11 @@ Session::Outcome Session::execute(const Command& c) {
         case Op::Delete: {
             const auto a = resolve(*c.address, e);
             if (!a) return fail(c, e);
-            if (c.op == Op::Break) m.add_breakpoint(static_cast<std::uint16_t>(*a));
-            else m.remove_breakpoint(static_cast<std::uint16_t>(*a));
+            if (c.op == Op::Break) debugger_.add_breakpoint_at(static_cast<std::uint16_t>(*a));
+            else debugger_.remove_breakpoints_at(static_cast<std::uint16_t>(*a));
             return {};
         }
-        case Op::DeleteAll: m.clear_breakpoints(); return {};
+        case Op::DeleteAll: debugger_.remove_all(); return {};
         case Op::SetMem: {
             const auto a = resolve(*c.address, e);
             if (!a) return fail(c, e);

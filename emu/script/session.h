@@ -86,6 +86,7 @@ private:
         debugger_.emit({debug::Event::Kind::Output, {}, std::move(text), origin(c)});
     }
     Outcome fail_expect(const Command& c, const std::string& expected, const std::string& actual) const;
+    Outcome run_command(const Command& c);
     Outcome load(const Command& c);
     Outcome press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap);
     Outcome expect(const Command& c);

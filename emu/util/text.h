@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -48,6 +50,40 @@ inline std::string xml_escape(std::string_view s) {
         }
     }
     return out;
+}
+
+// A number as the 8085 world writes it: 12, 12D, 0CH, 0xC, 1100B, 14O/14Q (a hex number starts
+// with a digit). nullopt if it is not one.
+inline std::optional<std::int64_t> parse_int(std::string_view text) {
+    if (text.empty()) return std::nullopt;
+    std::string s = to_upper(text);
+    int base = 10;
+    if (s.size() > 2 && s[0] == '0' && s[1] == 'X') {
+        base = 16;
+        s = s.substr(2);
+    } else if (s.size() > 1 && s.back() == 'H') {
+        base = 16;
+        s.pop_back();
+    } else if (s.size() > 1 && (s.back() == 'O' || s.back() == 'Q')) {
+        base = 8;
+        s.pop_back();
+    } else if (s.size() > 1 && s.back() == 'B') {
+        base = 2;
+        s.pop_back();
+    } else if (s.size() > 1 && s.back() == 'D') {
+        s.pop_back();
+    }
+    if (s.empty() || s.size() > 16 || !std::isdigit(static_cast<unsigned char>(s[0]))) return std::nullopt;
+    std::int64_t v = 0;
+    for (char ch : s) {
+        int d;
+        if (ch >= '0' && ch <= '9') d = ch - '0';
+        else if (ch >= 'A' && ch <= 'F') d = ch - 'A' + 10;
+        else return std::nullopt;
+        if (d >= base) return std::nullopt;
+        v = v * base + d;
+    }
+    return v;
 }
 
 }  // namespace alp85

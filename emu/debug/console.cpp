@@ -1,0 +1,682 @@
+// The console: parsing a line, breakpoints and watchpoints, running, and reporting stops.
+#include "emu/debug/console.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "emu/util/text.h"
+
+namespace alp85::debug {
+
+namespace {
+std::string_view trim(std::string_view s, int* col = nullptr) {
+    std::size_t a = 0;
+    while (a < s.size() && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+    std::size_t b = s.size();
+    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+    if (col) *col += static_cast<int>(a);
+    return s.substr(a, b - a);
+}
+// The first word of `s` (split at blanks or '/'), and the rest after it.
+std::string_view first_word(std::string_view s) {
+    std::size_t i = 0;
+    while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i])) && s[i] != '/') ++i;
+    return s.substr(0, i);
+}
+// Splits "LOCATION if CONDITION" at a whole-word "if" (any case).
+std::pair<std::string_view, std::string_view> split_if(std::string_view s, int& cond_col) {
+    for (std::size_t i = 0; i + 2 <= s.size(); ++i) {
+        const bool start = i == 0 || std::isspace(static_cast<unsigned char>(s[i - 1]));
+        const bool end = i + 2 == s.size() || std::isspace(static_cast<unsigned char>(s[i + 2]));
+        if (start && end && std::tolower(static_cast<unsigned char>(s[i])) == 'i' &&
+            std::tolower(static_cast<unsigned char>(s[i + 1])) == 'f') {
+            cond_col = static_cast<int>(i) + 2;
+            return {s.substr(0, i), s.substr(i + 2)};
+        }
+    }
+    return {s, {}};
+}
+std::string hex4(std::uint16_t v) { return fmt::format("{:04X}H", v); }
+constexpr int kMaxCommandDepth = 64;  // breakpoint commands that continue into breakpoints with commands
+}  // namespace
+
+Console::Console(Debugger& d) : d_(d) {
+    read_source_ = [](const std::string& file) -> std::optional<std::string> {
+        std::ifstream in(file, std::ios::binary);
+        if (!in) return std::nullopt;
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    };
+    // Text and stops of the script commands the fallback runs come as events.
+    d_.listen([this](const Event& e) {
+        if (!in_fallback_) return;
+        switch (e.kind) {
+            case Event::Kind::Output: fallback_out_ += e.text + '\n'; break;
+            case Event::Kind::Stopped: fallback_out_ += describe(e.stop); break;
+            case Event::Kind::ExpectFailed: break;  // the fallback reports the failure
+        }
+    });
+}
+
+const std::vector<Console::CommandDef>& Console::commands() {
+    static const std::vector<CommandDef> defs = {
+        {"break", {"b", "br", "brea"}, &Console::cmd_break, "break [LOCATION] [if EXPR]: stop before the instruction at LOCATION (address, symbol, FILE:LINE)"},
+        {"tbreak", {"tb"}, &Console::cmd_tbreak, "tbreak [LOCATION] [if EXPR]: a breakpoint deleted at its first stop"},
+        {"watch", {"wa"}, &Console::cmd_watch, "watch WHAT [if EXPR]: stop after WHAT changes (memory written with a new value, a port, the machine tool, a chip register)"},
+        {"rwatch", {"rw"}, &Console::cmd_rwatch, "rwatch MEMORY [if EXPR]: stop after MEMORY is read"},
+        {"awatch", {"aw"}, &Console::cmd_awatch, "awatch MEMORY [if EXPR]: stop after MEMORY is read or written"},
+        {"delete", {"d"}, &Console::cmd_delete, "delete [N...|LOCATION|all]: delete breakpoints and watchpoints (all without N)"},
+        {"enable", {"en"}, &Console::cmd_enable, "enable [N...]: enable breakpoints and watchpoints"},
+        {"disable", {"dis", "disa"}, &Console::cmd_disable, "disable [N...]: disable breakpoints and watchpoints"},
+        {"condition", {"cond"}, &Console::cmd_condition, "condition N [EXPR]: stop at N only when EXPR is not 0 (no EXPR: always)"},
+        {"ignore", {}, &Console::cmd_ignore, "ignore N COUNT: pass N the next COUNT times"},
+        {"commands", {"comm"}, &Console::cmd_commands, "commands [N]: lines up to 'end' run when N stops (a log point: print ... then continue)"},
+        {"continue", {"c", "cont", "fg"}, &Console::cmd_continue, "continue [N]: run until a breakpoint or watchpoint (N: ignore this breakpoint N-1 more times)"},
+        {"step", {"s"}, &Console::cmd_step, "step [N]: one source line, into CALL and RST"},
+        {"stepi", {"si"}, &Console::cmd_stepi, "stepi [N]: one instruction, into CALL and RST"},
+        {"next", {"n"}, &Console::cmd_next, "next [N]: one line, a CALL or RST run whole"},
+        {"nexti", {"ni"}, &Console::cmd_nexti, "nexti [N]: one instruction, a CALL or RST run whole"},
+        {"finish", {"fin"}, &Console::cmd_finish, "finish: run until the current routine returns"},
+        {"until", {"u"}, &Console::cmd_until, "until [LOCATION]: run past this instruction in this routine (out of a loop), or to LOCATION"},
+        {"advance", {}, &Console::cmd_advance, "advance LOCATION: run until LOCATION"},
+        {"run", {"r"}, &Console::cmd_run, "run [for] TIME: run for TIME (10ms, 2s, 3070t), stopping at breakpoints; run until ... as in scripts"},
+        {"reverse-step", {"rs"}, &Console::cmd_rs, "reverse-step: back one line (into a routine that just returned)"},
+        {"reverse-stepi", {"rsi"}, &Console::cmd_rsi, "reverse-stepi: back one instruction"},
+        {"reverse-next", {"rn"}, &Console::cmd_rn, "reverse-next: back one line of this routine, a call undone whole"},
+        {"reverse-nexti", {"rni"}, &Console::cmd_rn, "reverse-nexti: as reverse-next"},
+        {"reverse-finish", {"rfin"}, &Console::cmd_rfin, "reverse-finish: back to the CALL that entered this routine"},
+        {"reverse-continue", {"rc"}, &Console::cmd_rc, "reverse-continue: back to the previous breakpoint or watchpoint hit"},
+        {"print", {"p", "inspect"}, &Console::cmd_print, "print[/x|d|t|c] EXPR: registers, flags, [HL], word[1B30H], symbols, arithmetic, comparison"},
+        {"set", {}, &Console::cmd_set, "set [var] LVALUE = EXPR: a register, flag or memory; set history on|off"},
+        {"display", {"disp"}, &Console::cmd_display, "display[/FMT] EXPR: print EXPR after every stop (no EXPR: now)"},
+        {"undisplay", {"undisp"}, &Console::cmd_undisplay, "undisplay [N...]: stop displaying"},
+        {"x", {}, &Console::cmd_x, "x/NFU ADDRESS: memory; F x d u o t c a s i, U b (byte) or w (16-bit word)"},
+        {"list", {"l"}, &Console::cmd_list, "list [LOCATION|FILE:LINE]: source around it (or around the PC)"},
+        {"disassemble", {"disas"}, &Console::cmd_disassemble, "disassemble [LOCATION] [N]: N instructions with symbols and source lines"},
+        {"backtrace", {"bt", "where"}, &Console::cmd_backtrace, "backtrace: the routines called, from the return addresses on the stack"},
+        {"info", {"i"}, &Console::cmd_info, "info registers|breakpoints|displays|display|8155|8279|axis [X|Y|Z]|line|frame"},
+        {"history", {}, &Console::cmd_history, "history [N]: the last N instructions (default 10) with the registers each changed"},
+        {"help", {"h"}, &Console::cmd_help, "help [COMMAND]"},
+        {"quit", {"q", "exit"}, &Console::cmd_quit, "quit"},
+    };
+    return defs;
+}
+
+const Console::CommandDef* Console::find_command(std::string_view word, std::string& error) const {
+    const std::string w = [&] {
+        std::string s(word);
+        std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        return s;
+    }();
+    for (const CommandDef& c : commands()) {
+        if (c.name == w) return &c;
+        for (std::string_view a : c.aliases)
+            if (a == w) return &c;
+    }
+    // gdb: a unique prefix of a command's name
+    const CommandDef* found = nullptr;
+    for (const CommandDef& c : commands()) {
+        if (w.size() >= 2 && c.name.substr(0, w.size()) == w) {
+            if (found) {
+                error = fmt::format("ambiguous command '{}' ({}, {}, ...)", word, found->name, c.name);
+                return nullptr;
+            }
+            found = &c;
+        }
+    }
+    return found;
+}
+
+std::string Console::error(int col, std::string message) {
+    ++errors_;
+    const std::string where = origin_file_.empty() ? fmt::format("column {}", col)
+                                                   : fmt::format("{}:{}:{}", origin_file_, origin_line_, col);
+    return fmt::format("{}: error: {}\n  {}\n  {}^\n", where, message, line_, std::string(static_cast<std::size_t>(std::max(col - 1, 0)), ' '));
+}
+
+std::string Console::execute(std::string_view line) {
+    line_ = std::string(line);
+    d_.interrupt_clear();
+    if (collecting_) {
+        const std::string_view t = trim(line);
+        if (to_upper(t) == "END") {
+            collecting_ = false;
+            d_.set_commands(collect_for_, collected_);
+            return {};
+        }
+        collected_.emplace_back(t);
+        return {};
+    }
+    int col = 1;
+    const std::string_view t = trim(line, &col);
+    if (t.empty() || t.front() == '#') return {};
+    const std::string_view word = first_word(t);
+    std::string err;
+    const CommandDef* c = find_command(word, err);
+    if (!err.empty()) return error(col, err);
+    // Script commands that share a name with a debugger command: print "text", print display,
+    // set mem, set reg, delete all, run until.
+    if (c) {
+        const std::string rest = to_upper(trim(t.substr(word.size())));
+        const std::string next = rest.substr(0, rest.find(' '));
+        const bool script_form = (c->handler == &Console::cmd_print && (rest.starts_with("\"") || next == "DISPLAY" || next == "AXES" || next == "TIME")) ||
+                                 (c->handler == &Console::cmd_set && (next == "MEM" || next == "REG")) ||
+                                 (c->handler == &Console::cmd_run && next == "UNTIL");
+        if (script_form) c = nullptr;
+    }
+    if (!c) return run_fallback(t);
+    int acol = col + static_cast<int>(word.size());
+    const std::string_view args = trim(t.substr(word.size()), &acol);
+    try {
+        return (this->*(c->handler))(args, acol);
+    } catch (const std::exception& e) {  // nothing a command does ends the session
+        return error(col, e.what());
+    }
+}
+
+std::string Console::run_fallback(std::string_view line) {
+    if (!fallback_) return error(1, fmt::format("unknown command '{}' (help lists the commands)", first_word(line)));
+    in_fallback_ = true;
+    fallback_out_.clear();
+    std::string out;
+    const bool ok = fallback_(line, out);
+    in_fallback_ = false;
+    if (!ok) ++errors_;
+    return fallback_out_ + out;
+}
+
+// ---- reporting stops ----------------------------------------------------------------------------
+
+std::optional<std::string> Console::source_line(const SourceLine& l) {
+    auto it = sources_.find(l.file);
+    if (it == sources_.end()) {
+        std::vector<std::string> lines;
+        if (auto text = read_source_(l.file)) {
+            std::istringstream in(*text);
+            for (std::string s; std::getline(in, s);) {
+                if (!s.empty() && s.back() == '\r') s.pop_back();
+                lines.push_back(std::move(s));
+            }
+        }
+        it = sources_.emplace(l.file, std::move(lines)).first;
+    }
+    if (l.line < 1 || static_cast<std::size_t>(l.line) > it->second.size()) return std::nullopt;
+    std::string s = it->second[static_cast<std::size_t>(l.line - 1)];
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+    return s;
+}
+
+std::string Console::location_lines(std::uint16_t pc) {
+    const auto frames = d_.backtrace();
+    const std::string routine = frames.front().routine ? *frames.front().routine : "??";
+    const auto line = d_.program().line_of(pc);
+    std::string out = fmt::format("{} ({})", routine, hex4(pc));
+    if (line) out += fmt::format(" at {}:{}", std::filesystem::path(line->file).filename().string(), line->line);
+    out += '\n';
+    const auto src = line ? source_line(*line) : std::nullopt;
+    if (src)
+        out += fmt::format("{}\t{}\n", line->line, *src);
+    else
+        out += fmt::format("{}\t{}\n", hex4(pc), disassemble(d_.machine().bus(), pc, d_.machine().cpu().variant(), &d_.program()).text);
+    return out;
+}
+
+std::string Console::describe(const Stop& s) {
+    std::string out;
+    switch (s.reason) {
+        case StopReason::Breakpoint:
+            out += s.number ? fmt::format("\nBreakpoint {}, ", s.number) : "\nBreakpoint, ";
+            break;
+        case StopReason::Watchpoint:
+            if (s.number) {
+                for (const Change& c : s.changes) {
+                    out += fmt::format("\nWatchpoint {}: {}\n", c.number, c.what);
+                    if (c.value_only) {
+                        out += fmt::format("Value = {}\n", format_value(c.new_value, 8, 0));
+                    } else if (c.digits == 0) {
+                        out += fmt::format("Old value = {}\nNew value = {}\n", c.old_value, c.new_value);
+                    } else {
+                        const int w = c.digits == 4 ? 16 : 8;
+                        out += fmt::format("Old value = {}\nNew value = {}\n", format_value(c.old_value, w, 0),
+                                           format_value(c.new_value, w, 0));
+                    }
+                }
+                if (s.after)
+                    out += fmt::format("after {}  {}\n", hex4(*s.after),
+                                       disassemble(d_.machine().bus(), *s.after, d_.machine().cpu().variant(), &d_.program()).text);
+            } else {
+                out += fmt::format("\nWatchpoint at {}\n", s.data ? hex4(*s.data) : "?");
+            }
+            break;
+        case StopReason::Finished: out += "Run till exit: returned to "; break;
+        case StopReason::Interrupted: out += "\nInterrupted (Ctrl-C) at "; break;
+        case StopReason::HistoryStart: out += fmt::format("\n{}: at ", s.message); break;
+        case StopReason::Error: out += fmt::format("\nStopped: {}\n", s.message); break;
+        case StopReason::Deadline:
+            if (!s.message.empty()) out += fmt::format("{}: at ", s.message);
+            break;
+        default: break;
+    }
+    out += location_lines(s.pc);
+    out += show_displays();
+    return out;
+}
+
+std::string Console::report(const Stop& s, int depth) {
+    std::string out = describe(s);
+    if (depth >= kMaxCommandDepth) return out + "(breakpoint commands nested too deep: stopped)\n";
+    for (const std::string& c : d_.commands_for(s)) {
+        const std::string_view w = first_word(trim(c));
+        std::string err;
+        const CommandDef* def = find_command(w, err);
+        // A command that runs the machine ends the list, as in gdb; its own stop is reported.
+        if (def && (def->handler == &Console::cmd_continue || def->handler == &Console::cmd_step ||
+                    def->handler == &Console::cmd_next || def->handler == &Console::cmd_stepi ||
+                    def->handler == &Console::cmd_nexti || def->handler == &Console::cmd_finish)) {
+            if (def->handler == &Console::cmd_continue) return out + report(d_.cont(), depth + 1);
+            return out + execute(c);
+        }
+        out += execute(c);
+    }
+    return out;
+}
+
+// ---- breakpoints and watchpoints ------------------------------------------------------------------
+
+namespace {
+// The column in the command line of column `c` (1-based) of the location or the condition.
+int error_column(int col, int ccol, std::string_view cond, const Debugger::Added& r) {
+    if (!r.in_condition) return col + std::max(r.col, 1) - 1;
+    int lead = 0;
+    trim(cond, &lead);
+    return col + ccol + lead + std::max(r.col, 1) - 1;
+}
+}  // namespace
+
+std::string Console::cmd_break(std::string_view a, int col) {
+    int ccol = 0;
+    auto [loc, cond] = split_if(a, ccol);
+    loc = trim(loc);
+    const std::string where = loc.empty() ? hex4(d_.machine().cpu().regs().pc) : std::string(loc);
+    const Debugger::Added r = d_.add_breakpoint(where, false, trim(cond));
+    if (!r.number) return error(error_column(col, ccol, cond, r), r.error);
+    return fmt::format("{}{}", r.bound ? fmt::format("{}:{} has no code: the breakpoint binds to line {}\n",
+                                                    std::filesystem::path(r.bound->file).filename().string(),
+                                                    loc.substr(loc.rfind(':') + 1), r.bound->line)
+                                       : "",
+                       [&] {
+                           const Breakpoint* b = d_.breakpoint(r.number);
+                           std::string s = fmt::format("Breakpoint {} at {}", b->number, hex4(b->address));
+                           if (b->line) s += fmt::format(": file {}, line {}.", std::filesystem::path(b->line->file).filename().string(), b->line->line);
+                           return s + '\n';
+                       }());
+}
+
+std::string Console::cmd_tbreak(std::string_view a, int col) {
+    int ccol = 0;
+    auto [loc, cond] = split_if(a, ccol);
+    loc = trim(loc);
+    const std::string where = loc.empty() ? hex4(d_.machine().cpu().regs().pc) : std::string(loc);
+    const Debugger::Added r = d_.add_breakpoint(where, true, trim(cond));
+    if (!r.number) return error(error_column(col, ccol, cond, r), r.error);
+    const Breakpoint* b = d_.breakpoint(r.number);
+    return fmt::format("Temporary breakpoint {} at {}\n", b->number, hex4(b->address));
+}
+
+std::string Console::cmd_watch(std::string_view a, int col) { return watch(a, col, WatchKind::Write); }
+std::string Console::cmd_rwatch(std::string_view a, int col) { return watch(a, col, WatchKind::Read); }
+std::string Console::cmd_awatch(std::string_view a, int col) { return watch(a, col, WatchKind::Access); }
+
+// watch [byte|word] EXPR | EXPR..EXPR | port N [in|out] [== V] | axis X|Y|Z steps|count|lost|endstop
+//       | 8155 porta|portb|portc|command|timer|timerout | 8279 fifo|status     [if EXPR]
+std::string Console::watch(std::string_view a, int col, WatchKind kind) {
+    int ccol = 0;
+    auto [what_text, cond] = split_if(a, ccol);
+    int wcol = col;
+    std::string_view w = trim(what_text, &wcol);
+    if (w.empty()) return error(col, "expected what to watch: memory (YAC, word YAC, 1B30H..1B35H), port N, axis X count, 8155 porta, 8279 fifo");
+    std::vector<std::string> words;
+    {
+        std::istringstream in{std::string(w)};
+        for (std::string s; in >> s;) words.push_back(to_upper(s));
+    }
+    WatchSpec spec;
+    spec.kind = kind;
+    auto bad = [&](std::string msg) { return error(wcol, std::move(msg)); };
+    const bool memory_only = kind != WatchKind::Write;
+    if (words[0] == "PORT") {
+        if (memory_only) return bad("rwatch and awatch watch memory; 'watch port N [in|out]' watches a port");
+        if (words.size() < 2) return bad("expected a port number: watch port F9H [in|out] [== VALUE]");
+        const auto p = parse_int(words[1]);
+        if (!p || *p < 0 || *p > 255) return bad(fmt::format("bad port '{}' (00H-FFH)", words[1]));
+        spec.kind = WatchKind::Port;
+        spec.first = spec.last = static_cast<std::uint16_t>(*p);
+        std::size_t i = 2;
+        if (i < words.size() && (words[i] == "IN" || words[i] == "OUT")) spec.dir = words[i++] == "IN" ? PortDir::In : PortDir::Out;
+        if (i < words.size() && (words[i] == "==" || words[i] == "=" || words[i] == "VALUE")) {
+            if (i + 1 >= words.size()) return bad("expected a value after ==");
+            const auto v = parse_int(words[i + 1]);
+            if (!v || *v < 0 || *v > 255) return bad(fmt::format("bad value '{}' (00H-FFH)", words[i + 1]));
+            spec.value = static_cast<std::uint8_t>(*v);
+            i += 2;
+        }
+        if (i != words.size()) return bad(fmt::format("unexpected '{}'", words[i]));
+        spec.what = fmt::format("port {:02X}H{}", spec.first, spec.value ? fmt::format(" == {:02X}H", *spec.value) : "");
+    } else if (words[0] == "AXIS") {
+        if (memory_only) return bad("rwatch and awatch watch memory; 'watch axis X count' watches the machine tool");
+        if (words.size() != 3 || words[1].size() != 1 || words[1][0] < 'X' || words[1][0] > 'Z')
+            return bad("expected: watch axis X|Y|Z steps|count|lost|endstop");
+        spec.kind = WatchKind::Tool;
+        spec.axis = static_cast<periph::MachineTool::Axis>(words[1][0] - 'X');
+        static const std::map<std::string, ToolQuantity> q = {
+            {"STEPS", ToolQuantity::Steps}, {"COUNT", ToolQuantity::Count}, {"LOST", ToolQuantity::Lost}, {"ENDSTOP", ToolQuantity::EndStop}};
+        const auto it = q.find(words[2]);
+        if (it == q.end()) return bad(fmt::format("no machine-tool quantity '{}' (steps, count, lost, endstop)", words[2]));
+        spec.quantity = it->second;
+        spec.what = fmt::format("axis {} {}", words[1], to_upper(words[2]) == "ENDSTOP" ? "end stop" : std::string(trim(words[2])));
+        std::transform(spec.what.begin(), spec.what.end(), spec.what.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        spec.what[5] = words[1][0];
+    } else if (words[0] == "8155" || words[0] == "8279") {
+        if (memory_only) return bad("rwatch and awatch watch memory; 'watch 8155 porta' watches a chip register");
+        static const std::map<std::string, ChipRegister> regs8155 = {
+            {"PORTA", ChipRegister::PortA}, {"PORTB", ChipRegister::PortB}, {"PORTC", ChipRegister::PortC},
+            {"COMMAND", ChipRegister::Command}, {"TIMER", ChipRegister::Timer}, {"TIMEROUT", ChipRegister::TimerOut}};
+        static const std::map<std::string, ChipRegister> regs8279 = {{"FIFO", ChipRegister::Fifo}, {"STATUS", ChipRegister::Status8279}};
+        const auto& table = words[0] == "8155" ? regs8155 : regs8279;
+        const auto it = words.size() == 2 ? table.find(words[1]) : table.end();
+        if (it == table.end())
+            return bad(words[0] == "8155" ? "expected: watch 8155 porta|portb|portc|command|timer|timerout"
+                                          : "expected: watch 8279 fifo|status");
+        spec.kind = WatchKind::Chip;
+        spec.reg = it->second;
+        std::string r = words[1];
+        std::transform(r.begin(), r.end(), r.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        spec.what = fmt::format("{} {}", words[0], r);
+    } else {
+        // Memory: [byte|word] EXPR, or EXPR..EXPR
+        std::string_view m = w;
+        int mcol = wcol;
+        std::size_t size = 1;
+        const std::string first = to_upper(first_word(m));
+        if ((first == "BYTE" || first == "WORD") && m.size() > first.size() && std::isspace(static_cast<unsigned char>(m[first.size()]))) {
+            size = first == "WORD" ? 2 : 1;
+            mcol += static_cast<int>(first.size());
+            m = trim(m.substr(first.size()), &mcol);
+        }
+        const auto dots = m.find("..");
+        auto address = [&](std::string_view text, int at, std::int64_t& out) -> std::string {
+            int tcol = at;
+            text = trim(text, &tcol);
+            ExprError err;
+            const auto e = Expr::parse(text, d_.program(), err, Expr::Names::SymbolsFirst, tcol - 1);
+            if (!e) return error(err.col, err.message);
+            out = e->eval(d_.machine());
+            if (out < 0 || out > 0xFFFF) return error(tcol, fmt::format("address {} is outside 0000H-FFFFH", out));
+            return {};
+        };
+        std::int64_t lo = 0, hi = 0;
+        if (dots != std::string_view::npos) {
+            if (std::string e = address(m.substr(0, dots), mcol, lo); !e.empty()) return e;
+            if (std::string e = address(m.substr(dots + 2), mcol + static_cast<int>(dots) + 2, hi); !e.empty()) return e;
+            if (hi < lo) return error(mcol, "a range is FIRST..LAST with FIRST <= LAST");
+        } else {
+            if (std::string e = address(m, mcol, lo); !e.empty()) return e;
+            hi = std::min<std::int64_t>(lo + static_cast<std::int64_t>(size) - 1, 0xFFFF);
+        }
+        spec.first = static_cast<std::uint16_t>(lo);
+        spec.last = static_cast<std::uint16_t>(hi);
+        const auto name = d_.program().name_at(spec.first);
+        const std::string label = name && dots == std::string_view::npos ? fmt::format("{} ", *name) : "";
+        if (spec.first == spec.last) spec.what = fmt::format("byte {}({})", label, hex4(spec.first));
+        else if (spec.last == spec.first + 1) spec.what = fmt::format("word {}({})", label, hex4(spec.first));
+        else spec.what = fmt::format("{}..{}", hex4(spec.first), hex4(spec.last));
+    }
+    const Debugger::Added r = d_.add_watchpoint(spec, trim(cond));
+    if (!r.number) return error(error_column(col, ccol, cond, r), r.error);
+    const char* kind_name = spec.kind == WatchKind::Read ? "Read watchpoint" : spec.kind == WatchKind::Access ? "Access watchpoint" : "Watchpoint";
+    return fmt::format("{} {}: {}\n", kind_name, r.number, spec.what);
+}
+
+std::optional<int> Console::number_arg(std::string_view& args, int& col, std::string& err) {
+    const std::string_view w = first_word(args);
+    const auto n = parse_int(w);
+    if (w.empty() || !n || *n <= 0 || *n > 1'000'000) {
+        err = error(col, w.empty() ? "expected a number" : fmt::format("bad number '{}'", w));
+        return std::nullopt;
+    }
+    col += static_cast<int>(w.size());
+    args = trim(args.substr(w.size()), &col);
+    return static_cast<int>(*n);
+}
+
+std::string Console::cmd_delete(std::string_view a, int col) {
+    if (a.empty() || to_upper(a) == "ALL") {
+        d_.remove_all();
+        return {};
+    }
+    if (!std::isdigit(static_cast<unsigned char>(a.front())) || a.find_first_not_of("0123456789 ") != std::string_view::npos) {
+        // A location, as the script language's delete ADDRESS.
+        const auto loc = d_.locate(a);
+        if (!loc.error.empty()) return error(col + std::max(loc.col, 1) - 1, loc.error);
+        for (std::uint16_t addr : loc.addresses)
+            if (!d_.remove_breakpoints_at(addr)) return error(col, fmt::format("no breakpoint at {}", hex4(addr)));
+        return {};
+    }
+    std::string out;
+    while (!a.empty()) {
+        std::string err;
+        const int at = col;
+        const auto n = number_arg(a, col, err);
+        if (!n) return out + err;
+        if (!d_.remove(*n)) out += error(at, fmt::format("no breakpoint or watchpoint number {}", *n));
+    }
+    return out;
+}
+
+std::string Console::cmd_enable(std::string_view a, int col) {
+    std::string out;
+    if (a.empty()) {
+        for (const auto& b : d_.breakpoints()) d_.enable(b.number, true);
+        for (const auto& w : d_.watchpoints()) d_.enable(w.number, true);
+        return {};
+    }
+    while (!a.empty()) {
+        std::string err;
+        const int at = col;
+        const auto n = number_arg(a, col, err);
+        if (!n) return out + err;
+        if (!d_.enable(*n, true)) out += error(at, fmt::format("no breakpoint or watchpoint number {}", *n));
+    }
+    return out;
+}
+
+std::string Console::cmd_disable(std::string_view a, int col) {
+    std::string out;
+    if (a.empty()) {
+        for (const auto& b : d_.breakpoints()) d_.enable(b.number, false);
+        for (const auto& w : d_.watchpoints()) d_.enable(w.number, false);
+        return {};
+    }
+    while (!a.empty()) {
+        std::string err;
+        const int at = col;
+        const auto n = number_arg(a, col, err);
+        if (!n) return out + err;
+        if (!d_.enable(*n, false)) out += error(at, fmt::format("no breakpoint or watchpoint number {}", *n));
+    }
+    return out;
+}
+
+std::string Console::cmd_condition(std::string_view a, int col) {
+    std::string err;
+    const int at = col;
+    const auto n = number_arg(a, col, err);
+    if (!n) return err;
+    int ecol = 0;
+    const std::string e = d_.set_condition(*n, a, ecol);
+    if (!e.empty()) return error(ecol ? col + ecol - 1 : at, e);
+    return a.empty() ? fmt::format("Breakpoint {} now unconditional.\n", *n) : std::string();
+}
+
+std::string Console::cmd_ignore(std::string_view a, int col) {
+    std::string err;
+    const int at = col;
+    const auto n = number_arg(a, col, err);
+    if (!n) return err;
+    const auto count = parse_int(a);
+    if (!count || *count < 0) return error(col, "expected a count: ignore N COUNT");
+    if (!d_.set_ignore(*n, static_cast<unsigned>(*count))) return error(at, fmt::format("no breakpoint or watchpoint number {}", *n));
+    return fmt::format("Will ignore next {} crossings of breakpoint {}.\n", *count, *n);
+}
+
+std::string Console::cmd_commands(std::string_view a, int col) {
+    int n = 0;
+    if (a.empty()) {
+        n = std::max(d_.breakpoints().empty() ? 0 : d_.breakpoints().back().number,
+                     d_.watchpoints().empty() ? 0 : d_.watchpoints().back().number);
+        if (!n) return error(col, "no breakpoints or watchpoints");
+    } else {
+        std::string err;
+        const auto v = number_arg(a, col, err);
+        if (!v) return err;
+        n = *v;
+    }
+    if (!d_.breakpoint(n) && !d_.watchpoint(n)) return error(col, fmt::format("no breakpoint or watchpoint number {}", n));
+    collecting_ = true;
+    collect_for_ = n;
+    collected_.clear();
+    return {};
+}
+
+// ---- running ------------------------------------------------------------------------------------
+
+std::string Console::cmd_continue(std::string_view a, int col) {
+    if (!a.empty()) {
+        std::string err;
+        const auto n = number_arg(a, col, err);
+        if (!n) return err;
+        // gdb: continue N ignores the breakpoint stopped at N-1 more times.
+        for (const auto& b : d_.breakpoints())
+            if (b.address == d_.machine().cpu().regs().pc) d_.set_ignore(b.number, static_cast<unsigned>(*n - 1));
+    }
+    return report(d_.cont());
+}
+
+std::string Console::repeat(std::string_view a, int col, Stop (Debugger::*op)()) {
+    int n = 1;
+    if (!a.empty()) {
+        std::string err;
+        const auto v = number_arg(a, col, err);
+        if (!v) return err;
+        n = *v;
+    }
+    Stop s;
+    for (int i = 0; i < n; ++i) {
+        s = (d_.*op)();
+        if (s.reason != StopReason::Step && s.reason != StopReason::Finished) break;
+    }
+    return report(s);
+}
+
+std::string Console::cmd_step(std::string_view a, int col) { return repeat(a, col, &Debugger::step); }
+std::string Console::cmd_stepi(std::string_view a, int col) { return repeat(a, col, &Debugger::stepi); }
+std::string Console::cmd_next(std::string_view a, int col) { return repeat(a, col, &Debugger::next); }
+std::string Console::cmd_nexti(std::string_view a, int col) { return repeat(a, col, &Debugger::next); }
+std::string Console::cmd_finish(std::string_view a, int col) {
+    if (!a.empty()) return error(col, "finish takes no argument");
+    const auto frames = d_.backtrace();
+    std::string out;
+    if (frames.size() > 1)
+        out = fmt::format("Run till exit from {} ({})\n", frames[0].routine ? *frames[0].routine : "??", hex4(frames[0].pc));
+    return out + report(d_.finish());
+}
+
+std::string Console::cmd_until(std::string_view a, int col) {
+    if (a.empty()) return report(d_.until());
+    const auto loc = d_.locate(a);
+    if (!loc.error.empty()) return error(col + std::max(loc.col, 1) - 1, loc.error);
+    return report(d_.until(loc.addresses.front()));
+}
+
+std::string Console::cmd_advance(std::string_view a, int col) {
+    if (a.empty()) return error(col, "expected a location: advance LOCATION");
+    const auto loc = d_.locate(a);
+    if (!loc.error.empty()) return error(col + std::max(loc.col, 1) - 1, loc.error);
+    return report(d_.advance(loc.addresses.front()));
+}
+
+std::string Console::cmd_run(std::string_view a, int col) {
+    if (to_upper(first_word(a)) == "FOR") {
+        col += 3;
+        a = trim(a.substr(3), &col);
+    }
+    if (a.empty()) return error(col, "expected a time: run [for] TIME (10ms, 2s, 3070t)");
+    // TIME: a number and a unit (t, us, ms, s).
+    std::size_t i = 0;
+    while (i < a.size() && (std::isdigit(static_cast<unsigned char>(a[i])) || a[i] == '.')) ++i;
+    const std::string unit = to_upper(a.substr(i));
+    const double v = i ? std::strtod(std::string(a.substr(0, i)).c_str(), nullptr) : -1;
+    const double scale = unit == "T" ? 1 : unit == "US" ? 3.072 : unit == "MS" ? 3072 : unit == "S" ? 3'072'000 : -1;
+    if (v < 0 || scale < 0) return error(col, fmt::format("bad time '{}' (a number with a unit: t, us, ms or s)", a));
+    const Stop s = d_.run_for(static_cast<std::uint64_t>(v * scale + 0.5));
+    if (s.reason == StopReason::Deadline) return {};
+    return report(s);
+}
+
+std::string Console::cmd_rs(std::string_view, int) { return report(d_.reverse_step()); }
+std::string Console::cmd_rsi(std::string_view, int) { return report(d_.reverse_stepi()); }
+std::string Console::cmd_rn(std::string_view, int) { return report(d_.reverse_next()); }
+std::string Console::cmd_rfin(std::string_view, int) { return report(d_.reverse_finish()); }
+std::string Console::cmd_rc(std::string_view, int) { return report(d_.reverse_continue()); }
+
+std::string Console::cmd_help(std::string_view a, int col) {
+    std::string out;
+    if (!a.empty()) {
+        std::string err;
+        const CommandDef* c = find_command(a, err);
+        if (!c) return error(col, err.empty() ? fmt::format("no command '{}'", a) : err);
+        return std::string(c->help) + '\n';
+    }
+    out += "Debugger commands (gdb's names; docs/debugging.md):\n";
+    for (const CommandDef& c : commands()) {
+        std::string names(c.name);
+        for (std::string_view al : c.aliases) names += fmt::format(", {}", al);
+        out += fmt::format("  {:<28} {}\n", names, c.help.substr(0, c.help.find(':')));
+    }
+    out += "Every command of the script language works too (docs/scripting.md): firmware, load, press, type,\n"
+           "run until, wait display, expect, save, restore, print display, print axes, ...\n";
+    return out;
+}
+
+std::string Console::cmd_quit(std::string_view, int) {
+    quit_ = true;
+    return {};
+}
+
+std::vector<std::string> Console::complete(std::string_view word, bool first_word) const {
+    std::vector<std::string> out;
+    const std::string up = to_upper(word);
+    if (first_word) {
+        for (const CommandDef& c : commands())
+            if (to_upper(c.name).starts_with(up)) out.emplace_back(c.name);
+        for (std::string_view s : {"firmware", "load", "monitor", "press", "type", "keydown", "keyup", "wait", "expect",
+                                   "save", "restore", "reset", "record", "plot", "motor", "feedback", "mark", "option"})
+            if (to_upper(s).starts_with(up)) out.emplace_back(s);
+    } else {
+        for (const auto& [name, value] : d_.program().names())
+            if (name.starts_with(up)) out.push_back(name);
+        for (std::string_view s : {"registers", "breakpoints", "displays", "display", "8155", "8279", "axis", "port", "word",
+                                   "byte", "porta", "portb", "count", "steps", "lost", "endstop", "fifo", "timer"})
+            if (to_upper(s).starts_with(up)) out.emplace_back(s);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+}  // namespace alp85::debug

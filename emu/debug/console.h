@@ -1,0 +1,156 @@
+// The debugger's command line as a library: one line of text in, the text to show out. `alp85
+// debug` puts it behind a terminal (libedit), the GUI behind its command pane, and a DAP server
+// may pass its REPL input through it. gdb's names and abbreviations where gdb has one (docs/debugging.md):
+//
+//   break/b tbreak/tb watch/wa rwatch awatch delete/d enable disable condition ignore commands...end
+//   continue/c step/s stepi/si next/n nexti/ni finish/fin until/u advance run [for] TIME
+//   reverse-step/rs reverse-stepi/rsi reverse-next/rn reverse-nexti/rni reverse-finish/rfin
+//   reverse-continue/rc  print/p x display/disp undisplay set list/l disassemble/disas
+//   backtrace/bt info/i (registers breakpoints display displays 8155 8279 axis line frame)
+//   history help quit/q
+//
+// A line it does not know goes to the fallback: `alp85 debug` passes it to the script language
+// (docs/scripting.md: load, firmware, press, type, run until, wait display, expect, save,
+// restore, ...), so every script command works at the prompt too.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "emu/debug/debugger.h"
+#include "emu/debug/expr.h"
+
+namespace alp85::debug {
+
+class Console {
+public:
+    // Runs a line the console does not know; appends what to show to `out`. Returns false when the
+    // line failed (an error, a failed expectation): the console counts it as an error.
+    using Fallback = std::function<bool(std::string_view line, std::string& out)>;
+    // The text of a source file (for list and stop reports); default: read from disk.
+    using SourceReader = std::function<std::optional<std::string>(const std::string& file)>;
+
+    explicit Console(Debugger& d);
+
+    void set_fallback(Fallback f) { fallback_ = std::move(f); }
+    void set_source_reader(SourceReader r) { read_source_ = std::move(r); }
+    // Where lines come from, for error messages ("session.gdb:12:5: error: ..."); empty: "column N".
+    void set_origin(std::string file, int line) {
+        origin_file_ = std::move(file);
+        origin_line_ = line;
+    }
+
+    // Runs one line; returns the text to show (each line ending in '\n'), possibly empty.
+    std::string execute(std::string_view line);
+    // The prompt to show before the next line: "(alp85) ", or ">" while reading commands ... end.
+    std::string prompt() const { return collecting_ ? ">" : "(alp85) "; }
+    bool quit_requested() const { return quit_; }
+    // Errors and failed fallback lines so far (batch sessions end with status 1 after one).
+    int errors() const { return errors_; }
+    // Command names and symbols that complete `word` (at the start of the line: commands).
+    std::vector<std::string> complete(std::string_view word, bool first_word) const;
+    // The stop as the console reports it (header, source line, displays); no commands run.
+    std::string describe(const Stop& s);
+
+private:
+    struct Display {
+        int number = 0;
+        char format = 0;
+        Expr expr;
+    };
+    using Handler = std::string (Console::*)(std::string_view args, int col);
+    struct CommandDef {
+        std::string_view name;
+        std::vector<std::string_view> aliases;
+        Handler handler;
+        std::string_view help;
+    };
+    static const std::vector<CommandDef>& commands();
+    const CommandDef* find_command(std::string_view word, std::string& error) const;
+
+    std::string error(int col, std::string message);
+    std::string report(const Stop& s, int depth = 0);  // describe + the breakpoint's commands
+    std::string location_lines(std::uint16_t pc);
+    std::optional<std::string> source_line(const SourceLine& l);
+    std::string run_fallback(std::string_view line);
+    std::string format_value(std::int64_t v, int width, char fmt) const;
+    std::optional<int> number_arg(std::string_view& args, int& col, std::string& err);
+
+    // handlers (console.cpp: control and points; console_view.cpp: looking)
+    std::string cmd_break(std::string_view a, int col);
+    std::string cmd_tbreak(std::string_view a, int col);
+    std::string cmd_watch(std::string_view a, int col);
+    std::string cmd_rwatch(std::string_view a, int col);
+    std::string cmd_awatch(std::string_view a, int col);
+    std::string watch(std::string_view a, int col, WatchKind kind);
+    std::string cmd_delete(std::string_view a, int col);
+    std::string cmd_enable(std::string_view a, int col);
+    std::string cmd_disable(std::string_view a, int col);
+    std::string cmd_condition(std::string_view a, int col);
+    std::string cmd_ignore(std::string_view a, int col);
+    std::string cmd_commands(std::string_view a, int col);
+    std::string cmd_continue(std::string_view a, int col);
+    std::string cmd_step(std::string_view a, int col);
+    std::string cmd_stepi(std::string_view a, int col);
+    std::string cmd_next(std::string_view a, int col);
+    std::string cmd_nexti(std::string_view a, int col);
+    std::string repeat(std::string_view a, int col, Stop (Debugger::*op)());
+    std::string cmd_finish(std::string_view a, int col);
+    std::string cmd_until(std::string_view a, int col);
+    std::string cmd_advance(std::string_view a, int col);
+    std::string cmd_run(std::string_view a, int col);
+    std::string cmd_rs(std::string_view a, int col);
+    std::string cmd_rsi(std::string_view a, int col);
+    std::string cmd_rn(std::string_view a, int col);
+    std::string cmd_rfin(std::string_view a, int col);
+    std::string cmd_rc(std::string_view a, int col);
+    std::string cmd_print(std::string_view a, int col);
+    std::string cmd_set(std::string_view a, int col);
+    std::string cmd_display(std::string_view a, int col);
+    std::string cmd_undisplay(std::string_view a, int col);
+    std::string cmd_x(std::string_view a, int col);
+    std::string cmd_list(std::string_view a, int col);
+    std::string cmd_disassemble(std::string_view a, int col);
+    std::string cmd_backtrace(std::string_view a, int col);
+    std::string cmd_info(std::string_view a, int col);
+    std::string cmd_history(std::string_view a, int col);
+    std::string cmd_help(std::string_view a, int col);
+    std::string cmd_quit(std::string_view a, int col);
+    // info ...
+    std::string info_registers();
+    std::string info_breakpoints();
+    std::string info_displays();
+    std::string info_8155();
+    std::string info_8279();
+    std::string info_axis(std::string_view which, int col);
+    std::string info_display();
+    std::string show_displays();
+
+    Debugger& d_;
+    Fallback fallback_;
+    SourceReader read_source_;
+    std::map<std::string, std::vector<std::string>> sources_;  // file -> lines
+    std::vector<Display> displays_;
+    int last_display_ = 0;
+    int print_count_ = 0;
+    bool quit_ = false;
+    int errors_ = 0;
+    std::string origin_file_;
+    int origin_line_ = 0;
+    std::string line_;  // the line being executed (for carets)
+    bool collecting_ = false;
+    int collect_for_ = 0;
+    std::vector<std::string> collected_;
+    // x and list continue where they stopped.
+    std::uint16_t next_x_ = 0;
+    char x_format_ = 'x', x_unit_ = 'b';
+    std::optional<SourceLine> next_list_;
+    bool in_fallback_ = false;
+    std::string fallback_out_;
+};
+
+}  // namespace alp85::debug

@@ -1,0 +1,498 @@
+// The console's looking commands: print, set, display, x, list, disassemble, backtrace, info,
+// history. Everything reads the machine through side-effect-free views.
+#include <algorithm>
+#include <bitset>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "emu/board/board_map.h"
+#include "emu/debug/console.h"
+#include "emu/util/text.h"
+
+namespace alp85::debug {
+
+namespace {
+std::string_view trim_view(std::string_view s, int* col = nullptr) {
+    std::size_t a = 0;
+    while (a < s.size() && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+    std::size_t b = s.size();
+    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+    if (col) *col += static_cast<int>(a);
+    return s.substr(a, b - a);
+}
+std::string hex4(std::uint16_t v) { return fmt::format("{:04X}H", v); }
+std::string file_name(const std::string& f) { return std::filesystem::path(f).filename().string(); }
+// "/x" after a command: the format letter, and the rest.
+char take_format(std::string_view& a, int& col) {
+    if (a.empty() || a.front() != '/') return 0;
+    const char f = a.size() > 1 ? static_cast<char>(std::tolower(static_cast<unsigned char>(a[1]))) : 0;
+    std::size_t i = 1;
+    while (i < a.size() && !std::isspace(static_cast<unsigned char>(a[i]))) ++i;
+    col += static_cast<int>(i);
+    a = trim_view(a.substr(i), &col);
+    return f;
+}
+}  // namespace
+
+std::string Console::format_value(std::int64_t v, int width, char f) const {
+    const auto u = static_cast<std::uint64_t>(v) & (width == 8 ? 0xFFu : 0xFFFFu);
+    const bool in_range = v >= -(1 << (width - 1)) && v < (1 << width);
+    switch (f) {
+        case 'x': return width == 8 ? fmt::format("{:02X}H", u) : fmt::format("{:04X}H", u);
+        case 'd': return std::to_string(v);
+        case 'u': return std::to_string(u);
+        case 'o': return fmt::format("{:o}Q", u);
+        case 't': return fmt::format("{:0{}b}B", u, width);
+        case 'c': return u >= 0x20 && u < 0x7F ? fmt::format("'{}'", static_cast<char>(u)) : fmt::format("{:02X}H", u);
+        default:
+            if (!in_range) return std::to_string(v);  // arithmetic beyond 16 bits: the number itself
+            return width == 8 ? fmt::format("{:02X}H ({})", u, v) : fmt::format("{:04X}H ({})", u, v);
+    }
+}
+
+std::string Console::cmd_print(std::string_view a, int col) {
+    const char f = take_format(a, col);
+    if (a.empty()) return error(col, "expected an expression");
+    ExprError err;
+    const auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1);
+    if (!e) return error(err.col, err.message);
+    try {
+        const std::int64_t v = e->eval(d_.machine());
+        return fmt::format("${} = {}\n", ++print_count_, format_value(v, e->width(), f));
+    } catch (const ExprError& x) {
+        return error(col + x.col - 1, x.message);
+    }
+}
+
+std::string Console::cmd_set(std::string_view a, int col) {
+    const std::string first = to_upper(a.substr(0, a.find(' ')));
+    if (first == "HISTORY") {
+        const std::string v = to_upper(trim_view(a.substr(7)));
+        if (v != "ON" && v != "OFF") return error(col + 8, "expected: set history on|off");
+        d_.set_history(v == "ON");
+        return fmt::format("History {}.\n", v == "ON" ? "on: reverse execution from here" : "off");
+    }
+    if (first == "VAR") {
+        col += 3;
+        a = trim_view(a.substr(3), &col);
+    }
+    const auto eq = a.find('=');
+    if (eq == std::string_view::npos || (eq + 1 < a.size() && a[eq + 1] == '=') || (eq > 0 && (a[eq - 1] == '!' || a[eq - 1] == '<' || a[eq - 1] == '>')))
+        return error(col, "expected: set LVALUE = EXPR (a register, a flag, [ADDR], byte[ADDR], word[ADDR])");
+    ExprError err;
+    int lcol = col;
+    const std::string_view lhs = trim_view(a.substr(0, eq), &lcol);
+    const auto target = Expr::parse(lhs, d_.program(), err, Expr::Names::RegistersFirst, lcol - 1);
+    if (!target) return error(err.col, err.message);
+    if (!target->assignable()) return error(lcol, fmt::format("'{}' cannot be set (a register, a flag or memory can)", lhs));
+    int rcol = col + static_cast<int>(eq) + 1;
+    const std::string_view rhs = trim_view(a.substr(eq + 1), &rcol);
+    const auto value = Expr::parse(rhs, d_.program(), err, Expr::Names::RegistersFirst, rcol - 1);
+    if (!value) return error(err.col, err.message);
+    try {
+        const std::string e = target->assign(d_.machine(), value->eval(d_.machine()));
+        if (!e.empty()) return error(lcol, e);
+    } catch (const ExprError& x) {
+        return error(rcol + x.col - 1, x.message);
+    }
+    d_.state_changed();
+    return {};
+}
+
+std::string Console::show_displays() {
+    std::string out;
+    for (const Display& d : displays_) {
+        try {
+            out += fmt::format("{}: {} = {}\n", d.number, d.expr.text(), format_value(d.expr.eval(d_.machine()), d.expr.width(), d.format));
+        } catch (const ExprError& x) {
+            out += fmt::format("{}: {} = <{}>\n", d.number, d.expr.text(), x.message);
+        }
+    }
+    return out;
+}
+
+std::string Console::cmd_display(std::string_view a, int col) {
+    const char f = take_format(a, col);
+    if (a.empty()) return show_displays();
+    ExprError err;
+    auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1);
+    if (!e) return error(err.col, err.message);
+    displays_.push_back({++last_display_, f, std::move(*e)});
+    const Display& d = displays_.back();
+    try {
+        return fmt::format("{}: {} = {}\n", d.number, d.expr.text(), format_value(d.expr.eval(d_.machine()), d.expr.width(), f));
+    } catch (const ExprError& x) {
+        return fmt::format("{}: {} = <{}>\n", d.number, d.expr.text(), x.message);
+    }
+}
+
+std::string Console::cmd_undisplay(std::string_view a, int col) {
+    if (a.empty()) {
+        displays_.clear();
+        return {};
+    }
+    std::string out;
+    while (!a.empty()) {
+        std::string err;
+        const int at = col;
+        const auto n = number_arg(a, col, err);
+        if (!n) return out + err;
+        if (!std::erase_if(displays_, [&](const Display& d) { return d.number == *n; }))
+            out += error(at, fmt::format("no display number {}", *n));
+    }
+    return out;
+}
+
+// x/NFU ADDRESS
+std::string Console::cmd_x(std::string_view a, int col) {
+    int count = 1;
+    if (!a.empty() && a.front() == '/') {
+        std::size_t i = 1;
+        std::size_t n0 = i;
+        while (i < a.size() && std::isdigit(static_cast<unsigned char>(a[i]))) ++i;
+        if (i > n0) count = std::stoi(std::string(a.substr(n0, i - n0)));
+        for (; i < a.size() && !std::isspace(static_cast<unsigned char>(a[i])); ++i) {
+            const char c = static_cast<char>(std::tolower(static_cast<unsigned char>(a[i])));
+            if (std::string_view("xduotcasi").find(c) != std::string_view::npos) x_format_ = c;
+            else if (c == 'b' || c == 'h' || c == 'w') x_unit_ = c == 'b' ? 'b' : 'w';
+            else return error(col + static_cast<int>(i), fmt::format("unknown format letter '{}' (x d u o t c a s i; b w)", a[i]));
+        }
+        col += static_cast<int>(i);
+        a = trim_view(a.substr(i), &col);
+    }
+    if (count < 1 || count > 4096) return error(col, "a count from 1 to 4096");
+    std::uint16_t addr = next_x_;
+    if (!a.empty()) {
+        ExprError err;
+        const auto e = Expr::parse(a, d_.program(), err, Expr::Names::SymbolsFirst, col - 1);
+        if (!e) return error(err.col, err.message);
+        addr = static_cast<std::uint16_t>(e->eval(d_.machine()));
+    }
+    const Machine& m = d_.machine();
+    std::string out;
+    auto label = [&](std::uint16_t at) {
+        const auto n = d_.program().name_at(at);
+        return n ? fmt::format("{} <{}>", hex4(at), *n) : hex4(at);
+    };
+    if (x_format_ == 'i') {
+        for (int i = 0; i < count; ++i) {
+            const auto dis = disassemble(m.bus(), addr, m.cpu().variant(), &d_.program());
+            out += fmt::format("{}{}:\t{}\n", addr == m.cpu().regs().pc ? "=> " : "   ", label(addr), dis.text);
+            addr = static_cast<std::uint16_t>(addr + dis.length);
+        }
+    } else if (x_format_ == 's') {
+        for (int i = 0; i < count; ++i) {
+            std::string s;
+            const std::uint16_t start = addr;
+            for (int k = 0; k < 256; ++k) {
+                const std::uint8_t b = m.peek(addr);
+                addr = static_cast<std::uint16_t>(addr + 1);
+                if (b == 0) break;
+                s += b >= 0x20 && b < 0x7F ? static_cast<char>(b) : '.';
+            }
+            out += fmt::format("{}:\t\"{}\"\n", label(start), s);
+        }
+    } else {
+        const int per_line = x_unit_ == 'b' ? 8 : 4;
+        for (int i = 0; i < count;) {
+            const std::uint16_t line_start = addr;
+            std::string vals, ascii;
+            for (int k = 0; k < per_line && i < count; ++k, ++i) {
+                if (x_unit_ == 'b') {
+                    const std::uint8_t b = m.peek(addr);
+                    vals += ' ' + (x_format_ == 'a' ? fmt::format("{:02X}", b) : format_value(b, 8, x_format_ == 'c' ? 'c' : x_format_));
+                    ascii += b >= 0x20 && b < 0x7F ? static_cast<char>(b) : '.';
+                    addr = static_cast<std::uint16_t>(addr + 1);
+                } else {
+                    const auto w = static_cast<std::uint16_t>(m.peek(addr) | m.peek(static_cast<std::uint16_t>(addr + 1)) << 8);
+                    vals += ' ' + format_value(w, 16, x_format_ == 'a' || x_format_ == 'c' ? 'x' : x_format_);
+                    addr = static_cast<std::uint16_t>(addr + 2);
+                }
+            }
+            out += fmt::format("{}:{}{}\n", label(line_start), vals, x_format_ == 'a' && x_unit_ == 'b' ? "  |" + ascii + "|" : "");
+        }
+    }
+    next_x_ = addr;
+    return out;
+}
+
+std::string Console::cmd_list(std::string_view a, int col) {
+    std::optional<SourceLine> center;
+    if (a.empty()) {
+        center = next_list_ ? next_list_ : d_.program().line_of(d_.machine().cpu().regs().pc);
+        if (next_list_) center->line += 5;  // continues after the last listing
+    } else {
+        const auto colon = a.rfind(':');
+        if (colon != std::string_view::npos && colon > 0 && std::isdigit(static_cast<unsigned char>(a[colon + 1]))) {
+            const auto loc = d_.locate(a);  // FILE:LINE names the file as loaded
+            if (!loc.error.empty()) return error(col, loc.error);
+            center = SourceLine{d_.program().line_of(loc.addresses.front())->file, std::stoi(std::string(a.substr(colon + 1)))};
+        } else {
+            const auto loc = d_.locate(a);
+            if (!loc.error.empty()) return error(col + std::max(loc.col, 1) - 1, loc.error);
+            center = d_.program().line_of(loc.addresses.front());
+            if (!center) return error(col, fmt::format("no source line for {}", hex4(loc.addresses.front())));
+        }
+    }
+    if (!center) return error(col, "no source line for the PC (list LOCATION or FILE:LINE)");
+    const auto pc_line = d_.program().line_of(d_.machine().cpu().regs().pc);
+    std::string out;
+    const int first = std::max(1, center->line - 5);
+    for (int l = first; l < first + 10; ++l) {
+        const auto src = source_line({center->file, l});
+        if (!src) {
+            if (l == first) return error(col, fmt::format("cannot read the source {}", center->file));
+            break;
+        }
+        const bool here = pc_line && pc_line->file == center->file && pc_line->line == l;
+        bool bp = false;
+        for (const Breakpoint& b : d_.breakpoints())
+            if (b.line && b.line->file == center->file && b.line->line == l) bp = true;
+        out += fmt::format("{}{}{:>5}\t{}\n", here ? "=>" : "  ", bp ? 'B' : ' ', l, *src);
+    }
+    next_list_ = SourceLine{center->file, first + 5};
+    return out;
+}
+
+std::string Console::cmd_disassemble(std::string_view a, int col) {
+    const Machine& m = d_.machine();
+    std::uint16_t addr = m.cpu().regs().pc;
+    int count = 12;
+    if (!a.empty()) {
+        // LOCATION [N]
+        std::string_view loc_text = a;
+        const auto sp = a.rfind(' ');
+        if (sp != std::string_view::npos) {
+            const auto n = parse_int(trim_view(a.substr(sp + 1)));
+            if (n && *n > 0 && *n <= 4096) {
+                count = static_cast<int>(*n);
+                loc_text = trim_view(a.substr(0, sp));
+            }
+        }
+        const auto loc = d_.locate(loc_text);
+        if (!loc.error.empty()) return error(col + std::max(loc.col, 1) - 1, loc.error);
+        addr = loc.addresses.front();
+    } else {
+        // From the start of the routine the PC is in (its label), as gdb shows a function.
+        for (int back = 0; back < 64 && back <= addr; ++back)
+            if (d_.program().label_at(static_cast<std::uint16_t>(addr - back))) {
+                addr = static_cast<std::uint16_t>(addr - back);
+                break;
+            }
+    }
+    std::string out;
+    for (int i = 0; i < count; ++i) {
+        if (const auto l = d_.program().label_at(addr)) out += fmt::format("{}:\n", *l);
+        const auto dis = disassemble(m.bus(), addr, m.cpu().variant(), &d_.program());
+        std::string bytes;
+        for (int k = 0; k < dis.length; ++k) bytes += fmt::format("{:02X} ", dis.bytes[k]);
+        const auto line = d_.program().line_of(addr);
+        bool bp = false;
+        for (const Breakpoint& b : d_.breakpoints()) bp = bp || b.address == addr;
+        out += fmt::format("{}{} {}  {:<9} {:<20}{}\n", addr == m.cpu().regs().pc ? "=>" : "  ", bp ? 'B' : ' ', hex4(addr), bytes,
+                           dis.text, line ? fmt::format("; {}:{}", file_name(line->file), line->line) : "");
+        addr = static_cast<std::uint16_t>(addr + dis.length);
+    }
+    return out;
+}
+
+std::string Console::cmd_backtrace(std::string_view, int) {
+    std::string out;
+    const auto frames = d_.backtrace();
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const Frame& f = frames[i];
+        out += fmt::format("#{:<2} {} in {}", i, hex4(f.pc), f.routine ? *f.routine : "??");
+        if (i > 0) out += fmt::format(" (return address at {})", hex4(f.slot));
+        if (f.line) out += fmt::format(" at {}:{}", file_name(f.line->file), f.line->line);
+        out += '\n';
+    }
+    return out;
+}
+
+std::string Console::info_registers() {
+    const I8085& cpu = d_.machine().cpu();
+    const Registers& r = cpu.regs();
+    const std::uint8_t rim = cpu.rim_value();
+    auto flag = [&](std::uint8_t bit) { return (r.f & bit) ? 1 : 0; };
+    std::string out;
+    out += fmt::format("A  {:02X}H   F  {:02X}H   S={} Z={} AC={} P={} CY={}  V={} K={}\n", r.a, r.f, flag(0x80), flag(0x40),
+                       flag(0x10), flag(0x04), flag(0x01), flag(0x02), flag(0x20));
+    out += fmt::format("B  {:02X}H   C  {:02X}H   BC {:04X}H\n", r.b, r.c, r.bc());
+    out += fmt::format("D  {:02X}H   E  {:02X}H   DE {:04X}H\n", r.d, r.e, r.de());
+    out += fmt::format("H  {:02X}H   L  {:02X}H   HL {:04X}H   [HL] {:02X}H\n", r.h, r.l, r.hl(), d_.machine().peek(r.hl()));
+    out += fmt::format("SP {:04X}H   PC {:04X}H", r.sp, r.pc);
+    if (const auto line = d_.program().line_of(r.pc)) out += fmt::format("   {}:{}", file_name(line->file), line->line);
+    out += '\n';
+    out += fmt::format("interrupts {}  masks M7.5={} M6.5={} M5.5={}  pending I7.5={} I6.5={} I5.5={} TRAP={}\n",
+                       cpu.interrupts_enabled() ? "enabled" : "disabled", (rim >> 2) & 1, (rim >> 1) & 1, rim & 1, (rim >> 6) & 1,
+                       (rim >> 5) & 1, (rim >> 4) & 1, cpu.trap_latched() ? 1 : 0);
+    out += fmt::format("SID={} SOD={}  {}  T = {} ({:.3f} ms)\n", (rim >> 7) & 1, cpu.sod() ? 1 : 0,
+                       cpu.halted() ? "HALTED" : "running", d_.machine().now(), board::ms_from_tstates(d_.machine().now()));
+    return out;
+}
+
+std::string Console::info_breakpoints() {
+    if (d_.breakpoints().empty() && d_.watchpoints().empty()) return "No breakpoints or watchpoints.\n";
+    std::string out = "Num  Type            Enb  Where\n";
+    struct Row {
+        int number;
+        std::string text;
+    };
+    std::vector<Row> rows;
+    for (const Breakpoint& b : d_.breakpoints()) {
+        std::string s = fmt::format("{:<4} {:<15} {:<4} {}", b.number, b.temporary ? "tbreakpoint" : "breakpoint", b.enabled ? "y" : "n",
+                                    hex4(b.address));
+        if (const auto n = d_.program().name_at(b.address)) s += " in " + *n;
+        if (b.line) s += fmt::format(" at {}:{}", file_name(b.line->file), b.line->line);
+        s += '\n';
+        if (b.condition) s += fmt::format("        stop only if {}\n", b.condition->text());
+        if (b.hits) s += fmt::format("        breakpoint already hit {} time{}\n", b.hits, b.hits == 1 ? "" : "s");
+        if (b.ignore) s += fmt::format("        will ignore next {} crossings\n", b.ignore);
+        for (const std::string& c : b.commands) s += fmt::format("        {}\n", c);
+        rows.push_back({b.number, s});
+    }
+    for (const Watchpoint& w : d_.watchpoints()) {
+        const char* type = w.kind == WatchKind::Read ? "read watchpoint" : w.kind == WatchKind::Access ? "acc watchpoint" : "watchpoint";
+        std::string s = fmt::format("{:<4} {:<15} {:<4} {}\n", w.number, type, w.enabled ? "y" : "n", w.what);
+        if (w.condition) s += fmt::format("        stop only if {}\n", w.condition->text());
+        if (w.hits) s += fmt::format("        watchpoint already hit {} time{}\n", w.hits, w.hits == 1 ? "" : "s");
+        if (w.ignore) s += fmt::format("        will ignore next {} hits\n", w.ignore);
+        for (const std::string& c : w.commands) s += fmt::format("        {}\n", c);
+        rows.push_back({w.number, s});
+    }
+    std::sort(rows.begin(), rows.end(), [](const Row& x, const Row& y) { return x.number < y.number; });
+    for (const Row& r : rows) out += r.text;
+    return out;
+}
+
+std::string Console::info_displays() {
+    if (displays_.empty()) return "There are no auto-display expressions now.\n";
+    std::string out = "Auto-display expressions now in effect:\n";
+    for (const Display& d : displays_) out += fmt::format("{}:   {}\n", d.number, d.expr.text());
+    return out;
+}
+
+std::string Console::info_8155() {
+    const periph::I8155& c = d_.machine().rio();
+    const auto& s = c.state();
+    static const char* kPortC[] = {"ALT1 (input)", "ALT2 (output)", "ALT3 (A strobed)", "ALT4 (A, B strobed)"};
+    static const char* kModes[] = {"single square wave", "continuous square wave", "single pulse", "continuous pulses"};
+    unsigned ram_first = 0, ram_last = 0;
+    for (const auto& r : board::kMemoryMap)
+        if (r.id == board::Memory::Ram8155) ram_first = r.base, ram_last = r.base + r.size - 1;
+    std::string out = fmt::format("8155 (RAM-I/O-timer) at ports {:02X}H-{:02X}H, RAM {:04X}H-{:04X}H\n",
+                                  board::io_region(board::Device::Rio8155).first, board::io_region(board::Device::Rio8155).last,
+                                  ram_first, ram_last);
+    out += fmt::format("command {:02X}H  status {:02X}H (timer flag {}, INTR A {} B {})\n", s.command, c.peek_status(), s.timer_flag ? 1 : 0,
+                       s.intr_ff[0] ? 1 : 0, s.intr_ff[1] ? 1 : 0);
+    out += fmt::format("port A  {}  latch {:02X}H  pins {:02X}H\n", (s.command & 1) ? "output" : "input ", s.latch[0],
+                       c.port_output(periph::I8155::Port::A));
+    out += fmt::format("port B  {}  latch {:02X}H\n", (s.command & 2) ? "output" : "input ", s.latch[1]);
+    out += fmt::format("port C  {}  latch {:02X}H\n", kPortC[static_cast<int>(c.port_c_mode())], s.latch[2]);
+    out += fmt::format("timer   count length {:04X}H ({} T, {}), {}, counter now {:04X}H, TIMER OUT {}\n", s.count_length,
+                       s.count_length & 0x3FFF, kModes[s.count_length >> 14], s.running ? "running" : "stopped",
+                       c.peek_counter(d_.machine().now()), c.timer_out() ? "high" : "low");
+    return out;
+}
+
+std::string Console::info_8279() {
+    const periph::I8279& k = d_.machine().kdc();
+    const auto& s = k.state();
+    static const char* kKeys[] = {"encoded scan, 2-key lockout", "decoded scan, 2-key lockout", "encoded scan, N-key rollover",
+                                  "decoded scan, N-key rollover", "encoded sensor matrix", "decoded sensor matrix",
+                                  "strobed input, encoded", "strobed input, decoded"};
+    std::string out = fmt::format("8279 (keyboard/display) at ports {:02X}H-{:02X}H\n", board::io_region(board::Device::Kdc8279).first,
+                                  board::io_region(board::Device::Kdc8279).last);
+    out += fmt::format("mode {:02X}H: {} digits, {} entry; keyboard {}; prescaler {}\n", s.mode, k.sixteen_digits() ? 16 : 8,
+                       k.right_entry() ? "right" : "left", kKeys[static_cast<int>(k.key_mode())], s.prescaler);
+    out += fmt::format("status {:02X}H  FIFO {} entr{}:", k.peek_status(d_.machine().now()), s.fifo_count, s.fifo_count == 1 ? "y" : "ies");
+    for (int i = 0; i < s.fifo_count; ++i) out += fmt::format(" {:02X}H", s.fifo[static_cast<std::size_t>((s.fifo_head + i) % 8)]);
+    out += fmt::format("{}{}  IRQ {}\n", s.overrun ? "  overrun" : "", s.underrun ? "  underrun" : "", s.irq ? "high" : "low");
+    out += "display RAM:";
+    for (int i = 0; i < 16; ++i) out += fmt::format(" {:02X}", s.display_ram[static_cast<std::size_t>(i)]);
+    out += fmt::format("\nnext data {} {}{:X}H{}  inhibit/blank {:X}H\n", s.read_display ? "read: display RAM" : "read: FIFO",
+                       "write: display RAM ", s.display_address, s.display_ai ? " (auto-increment)" : "", s.inhibit_blank);
+    return out;
+}
+
+std::string Console::info_axis(std::string_view which, int col) {
+    const periph::MachineTool& t = d_.machine().tool();
+    std::string up = to_upper(which);
+    if (!up.empty() && (up.size() != 1 || up[0] < 'X' || up[0] > 'Z')) return error(col, "expected: info axis [X|Y|Z]");
+    std::string out = fmt::format("machine tool: {} motors, transducers read the {}\n",
+                                  t.model() == periph::MachineTool::MotorModel::Ideal ? "ideal" : "physical",
+                                  t.feedback() == periph::MachineTool::Feedback::Scale ? "scale" : "commanded steps");
+    for (int a = 0; a < 3; ++a) {
+        if (!up.empty() && up[0] != "XYZ"[a]) continue;
+        const auto ax = static_cast<periph::MachineTool::Axis>(a);
+        const auto stop = t.end_stop(ax);
+        out += fmt::format("  {}  {:6} steps {:9.3f} mm  count {:6}  commanded {:6}  lost {:3}  phases {:X}H  {:.1f} rad/s{}{}\n", "XYZ"[a],
+                           std::llround(t.table_steps(ax)), t.table_mm(ax), t.transducer_count(ax), t.commanded_steps(ax), t.lost_steps(ax),
+                           t.phase_pattern(ax), t.rotor_speed_rad_s(ax), t.settled(ax) ? "  settled" : "",
+                           stop.at ? (stop.at > 0 ? "  at its high end stop" : "  at its low end stop") : "");
+    }
+    return out;
+}
+
+std::string Console::info_display() {
+    std::string out;
+    for (const std::string& l : d_.machine().display_art()) out += l + '\n';
+    return out + fmt::format("\"{}\"\n", d_.machine().display_text());
+}
+
+std::string Console::cmd_info(std::string_view a, int col) {
+    int wcol = col;
+    const std::string what = to_upper(a.substr(0, a.find(' ')));
+    std::string_view rest = a.size() > what.size() ? trim_view(a.substr(what.size()), &wcol) : std::string_view{};
+    wcol += static_cast<int>(what.size());
+    if (what == "R" || what == "REG" || what == "REGISTERS" || what == "ALL-REGISTERS") return info_registers();
+    if (what == "B" || what == "BR" || what == "BREAK" || what == "BREAKPOINTS" || what == "WAT" || what == "WATCHPOINTS")
+        return info_breakpoints();
+    if (what == "DISPLAYS") return info_displays();
+    if (what == "DISPLAY") return info_display();
+    if (what == "8155") return info_8155();
+    if (what == "8279") return info_8279();
+    if (what == "AXIS" || what == "AXES" || what == "TOOL") return info_axis(rest, wcol);
+    if (what == "LINE" || what == "FRAME" || what == "F") return location_lines(d_.machine().cpu().regs().pc);
+    if (what == "HISTORY") return fmt::format("history {}: {} snapshots from T = {}\n", d_.history() ? "on" : "off",
+                                              d_.history_snapshots(), d_.history_start());
+    return error(col, what.empty() ? "info what? registers, breakpoints, displays, display, 8155, 8279, axis, line, history"
+                                   : fmt::format("no 'info {}' (registers, breakpoints, displays, display, 8155, 8279, axis, line, history)", a));
+}
+
+std::string Console::cmd_history(std::string_view a, int col) {
+    std::size_t n = 10;
+    if (!a.empty()) {
+        std::string err;
+        const auto v = number_arg(a, col, err);
+        if (!v) return err;
+        n = static_cast<std::size_t>(*v);
+    }
+    if (!d_.history()) return error(col, "history needs the snapshots of reverse execution (set history on)");
+    const Machine& m = d_.machine();
+    std::string out;
+    for (const Executed& e : d_.last_instructions(n)) {
+        const auto dis = disassemble(m.bus(), e.pc, m.cpu().variant(), &d_.program());
+        std::string changed;
+        auto reg8 = [&](const char* name, std::uint8_t x, std::uint8_t y) {
+            if (x != y) changed += fmt::format(" {}={:02X}H", name, y);
+        };
+        reg8("A", e.before.a, e.after.a);
+        reg8("F", e.before.f, e.after.f);
+        reg8("B", e.before.b, e.after.b);
+        reg8("C", e.before.c, e.after.c);
+        reg8("D", e.before.d, e.after.d);
+        reg8("E", e.before.e, e.after.e);
+        reg8("H", e.before.h, e.after.h);
+        reg8("L", e.before.l, e.after.l);
+        if (e.before.sp != e.after.sp) changed += fmt::format(" SP={:04X}H", e.after.sp);
+        out += fmt::format("{:>12}  {}  {:<20}{}\n", e.at, hex4(e.pc), dis.text, changed);
+    }
+    if (out.empty()) out = "No instructions in the history.\n";
+    return out;
+}
+
+}  // namespace alp85::debug

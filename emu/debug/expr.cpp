@@ -1,0 +1,355 @@
+#include "emu/debug/expr.h"
+
+#include <array>
+#include <cctype>
+
+#include <fmt/format.h>
+
+#include "asm/isa.h"
+#include "emu/util/text.h"
+
+namespace alp85::debug {
+
+namespace {
+constexpr std::array<std::string_view, 15> kRegNames = {"A", "B", "C", "D", "E", "H", "L", "F",
+                                                        "M", "BC", "DE", "HL", "SP", "PC", "PSW"};
+struct FlagName {
+    std::string_view name;
+    std::uint8_t bit;
+};
+constexpr std::array<FlagName, 7> kFlags = {{{"S", isa::F_S},
+                                             {"Z", isa::F_Z},
+                                             {"AC", isa::F_AC},
+                                             {"P", isa::F_P},
+                                             {"CY", isa::F_CY},
+                                             {"V", isa::F_V},
+                                             {"K", isa::F_K}}};
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '?' || c == '@'; }
+}  // namespace
+
+std::optional<RegId> register_named(std::string_view n) {
+    for (std::size_t i = 0; i < kRegNames.size(); ++i)
+        if (kRegNames[i] == n) return static_cast<RegId>(i);
+    return std::nullopt;
+}
+
+std::optional<std::uint8_t> flag_named(std::string_view n) {
+    for (const FlagName& f : kFlags)
+        if (f.name == n) return f.bit;
+    return std::nullopt;
+}
+
+std::uint16_t read_register(const Machine& m, RegId r) {
+    const Registers& x = m.cpu().regs();
+    switch (r) {
+        case RegId::A: return x.a;
+        case RegId::B: return x.b;
+        case RegId::C: return x.c;
+        case RegId::D: return x.d;
+        case RegId::E: return x.e;
+        case RegId::H: return x.h;
+        case RegId::L: return x.l;
+        case RegId::F: return x.f;
+        case RegId::M: return m.peek(x.hl());
+        case RegId::BC: return x.bc();
+        case RegId::DE: return x.de();
+        case RegId::HL: return x.hl();
+        case RegId::SP: return x.sp;
+        case RegId::PC: return x.pc;
+        case RegId::PSW: return static_cast<std::uint16_t>(x.a << 8 | x.f);
+    }
+    return 0;
+}
+
+// Recursive descent, one level per precedence (C's order).
+class ExprParser {
+public:
+    ExprParser(std::string_view text, const SymbolTable& symbols, Expr::Names names, int col_base, ExprError& error)
+        : s_(text), symbols_(symbols), names_(names), base_(col_base), error_(error) {}
+
+    std::optional<Expr> run() {
+        Expr e;
+        e_ = &e;
+        e.text_ = std::string(s_);
+        const int root = binary(0);
+        if (root < 0) return std::nullopt;
+        skip();
+        if (i_ < s_.size()) return fail(fmt::format("unexpected '{}'", s_.substr(i_, 1))), std::nullopt;
+        e.root_ = root;
+        e.width_ = width_of(root);
+        return e;
+    }
+
+private:
+    using K = Expr::Kind;
+    struct BinOp {
+        std::string_view text;
+        K kind;
+        int level;
+    };
+    static constexpr std::array<BinOp, 18> kBinOps = {{
+        {"||", K::Or, 0}, {"&&", K::And, 1}, {"|", K::BitOr, 2}, {"^", K::BitXor, 3}, {"&", K::BitAnd, 4},
+        {"==", K::Eq, 5}, {"!=", K::Ne, 5}, {"<=", K::Le, 6}, {">=", K::Ge, 6}, {"<<", K::Shl, 7},
+        {">>", K::Shr, 7}, {"<", K::Lt, 6}, {">", K::Gt, 6}, {"+", K::Add, 8}, {"-", K::Sub, 8},
+        {"*", K::Mul, 9}, {"/", K::Div, 9}, {"%", K::Mod, 9},
+    }};
+    static constexpr int kLevels = 10;
+
+    int fail(std::string message, int at = -1) {
+        error_.col = base_ + (at < 0 ? static_cast<int>(i_) : at) + 1;
+        error_.message = std::move(message);
+        return -1;
+    }
+    void skip() {
+        while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
+    }
+    int add(Expr::Node n) {
+        e_->nodes_.push_back(n);
+        return static_cast<int>(e_->nodes_.size()) - 1;
+    }
+    int width_of(int n) const {
+        const Expr::Node& x = e_->nodes_[static_cast<std::size_t>(n)];
+        switch (x.kind) {
+            case K::Reg: return static_cast<RegId>(x.value) <= RegId::M ? 8 : 16;
+            case K::Flag:
+            case K::Mem8: return 8;
+            case K::Number: return x.value >= -128 && x.value <= 255 ? 8 : 16;
+            default: return 16;
+        }
+    }
+
+    const BinOp* binop_here(int level) {
+        skip();
+        for (const BinOp& op : kBinOps) {
+            if (op.level != level || s_.substr(i_, op.text.size()) != op.text) continue;
+            // "&" is not "&&", "|" not "||", "<" not "<<" or "<=": the longer ones come first in
+            // the table only within their level, so check the next character.
+            const std::string_view rest = s_.substr(i_ + op.text.size());
+            if (op.text.size() == 1 && !rest.empty()) {
+                const char c = op.text[0], n = rest[0];
+                if ((c == '&' && n == '&') || (c == '|' && n == '|') || ((c == '<' || c == '>') && (n == c || n == '=')))
+                    continue;
+            }
+            return &op;
+        }
+        return nullptr;
+    }
+
+    int binary(int level) {
+        if (level == kLevels) return unary();
+        int left = binary(level + 1);
+        if (left < 0) return -1;
+        while (const BinOp* op = binop_here(level)) {
+            const int col = static_cast<int>(i_);
+            i_ += op->text.size();
+            const int right = binary(level + 1);
+            if (right < 0) return -1;
+            left = add({op->kind, 0, left, right, col});
+        }
+        return left;
+    }
+
+    int unary() {
+        skip();
+        if (i_ >= s_.size()) return fail("expected a value");
+        const char c = s_[i_];
+        const int col = static_cast<int>(i_);
+        if (c == '-' || c == '!' || c == '~') {
+            ++i_;
+            const int a = unary();
+            if (a < 0) return -1;
+            return add({c == '-' ? K::Neg : c == '!' ? K::Not : K::Compl, 0, a, -1, col});
+        }
+        if (c == '+') {
+            ++i_;
+            return unary();
+        }
+        return primary();
+    }
+
+    int bracket(K kind, int col) {  // after '['
+        const int a = binary(0);
+        if (a < 0) return -1;
+        skip();
+        if (i_ >= s_.size() || s_[i_] != ']') return fail("expected ']'");
+        ++i_;
+        return add({kind, 0, a, -1, col});
+    }
+
+    int primary() {
+        const char c = s_[i_];
+        const int col = static_cast<int>(i_);
+        if (c == '(') {
+            ++i_;
+            const int a = binary(0);
+            if (a < 0) return -1;
+            skip();
+            if (i_ >= s_.size() || s_[i_] != ')') return fail("expected ')'");
+            ++i_;
+            return a;
+        }
+        if (c == '[') {
+            ++i_;
+            return bracket(K::Mem8, col);
+        }
+        if (c == '\'') {
+            if (i_ + 2 < s_.size() && s_[i_ + 2] == '\'') {
+                const auto v = static_cast<unsigned char>(s_[i_ + 1]);
+                i_ += 3;
+                return add({K::Number, v, -1, -1, col});
+            }
+            return fail("a character is written 'A'");
+        }
+        if (std::isdigit(static_cast<unsigned char>(c))) {
+            std::size_t j = i_;
+            while (j < s_.size() && std::isalnum(static_cast<unsigned char>(s_[j]))) ++j;
+            const std::string_view word = s_.substr(i_, j - i_);
+            const auto v = parse_int(word);
+            if (!v) return fail(fmt::format("bad number '{}' (hex needs a leading digit and H: 0FFH)", word));
+            i_ = j;
+            return add({K::Number, *v, -1, -1, col});
+        }
+        const bool dollar = c == '$', amp = c == '&';
+        if (dollar || amp) ++i_;
+        std::size_t j = i_;
+        while (j < s_.size() && is_name_char(s_[j])) ++j;
+        if (j == i_) return fail(i_ < s_.size() ? fmt::format("unexpected '{}'", s_.substr(i_, 1)) : "expected a value");
+        const std::string name = to_upper(s_.substr(i_, j - i_));
+        i_ = j;
+        skip();
+        if (!dollar && !amp && i_ < s_.size() && s_[i_] == '[' && (name == "BYTE" || name == "WORD")) {
+            ++i_;
+            return bracket(name == "BYTE" ? K::Mem8 : K::Mem16, col);
+        }
+        auto machine_name = [&]() -> int {
+            if (const auto r = register_named(name)) return add({K::Reg, static_cast<std::int64_t>(*r), -1, -1, col});
+            if (const auto f = flag_named(name)) return add({K::Flag, *f, -1, -1, col});
+            if (dollar && (name == "T" || name == "TIME")) return add({K::Time, 0, -1, -1, col});
+            return -1;
+        };
+        auto symbol = [&]() -> int {
+            if (const auto v = symbols_.value_of(name)) return add({K::Number, *v, -1, -1, col});
+            return -1;
+        };
+        if (dollar) {
+            const int n = machine_name();
+            return n >= 0 ? n : fail(fmt::format("no register or flag '${}'", name), col);
+        }
+        if (amp) {
+            const int n = symbol();
+            return n >= 0 ? n : fail(fmt::format("unknown symbol '{}'", name), col);
+        }
+        int n = names_ == Expr::Names::SymbolsFirst ? symbol() : machine_name();
+        if (n < 0) n = names_ == Expr::Names::SymbolsFirst ? machine_name() : symbol();
+        return n >= 0 ? n : fail(fmt::format("unknown symbol '{}'", name), col);
+    }
+
+    std::string_view s_;
+    const SymbolTable& symbols_;
+    Expr::Names names_;
+    int base_;
+    ExprError& error_;
+    Expr* e_ = nullptr;
+    std::size_t i_ = 0;
+};
+
+std::optional<Expr> Expr::parse(std::string_view text, const SymbolTable& symbols, ExprError& error, Names names,
+                                int col_base) {
+    return ExprParser(text, symbols, names, col_base, error).run();
+}
+
+std::int64_t Expr::eval(const Machine& m) const { return eval(m, root_); }
+
+std::int64_t Expr::eval(const Machine& m, int i) const {
+    const Node& n = nodes_[static_cast<std::size_t>(i)];
+    auto a = [&] { return eval(m, n.a); };
+    auto b = [&] { return eval(m, n.b); };
+    switch (n.kind) {
+        case Kind::Number: return n.value;
+        case Kind::Reg: return read_register(m, static_cast<RegId>(n.value));
+        case Kind::Flag: return (m.cpu().regs().f & n.value) ? 1 : 0;
+        case Kind::Time: return static_cast<std::int64_t>(m.now());
+        case Kind::Mem8: return m.peek(static_cast<std::uint16_t>(a()));
+        case Kind::Mem16: {
+            const auto addr = static_cast<std::uint16_t>(a());
+            return m.peek(addr) | m.peek(static_cast<std::uint16_t>(addr + 1)) << 8;
+        }
+        case Kind::Neg: return -a();
+        case Kind::Not: return a() == 0;
+        case Kind::Compl: return ~a();
+        case Kind::Mul: return a() * b();
+        case Kind::Div:
+        case Kind::Mod: {
+            const std::int64_t x = a(), y = b();
+            if (y == 0) throw ExprError{n.col + 1, "division by zero"};
+            return n.kind == Kind::Div ? x / y : x % y;
+        }
+        case Kind::Add: return a() + b();
+        case Kind::Sub: return a() - b();
+        case Kind::Shl: return a() << (b() & 63);
+        case Kind::Shr: return a() >> (b() & 63);
+        case Kind::Lt: return a() < b();
+        case Kind::Le: return a() <= b();
+        case Kind::Gt: return a() > b();
+        case Kind::Ge: return a() >= b();
+        case Kind::Eq: return a() == b();
+        case Kind::Ne: return a() != b();
+        case Kind::BitAnd: return a() & b();
+        case Kind::BitXor: return a() ^ b();
+        case Kind::BitOr: return a() | b();
+        case Kind::And: return a() && b();
+        case Kind::Or: return a() || b();
+    }
+    return 0;
+}
+
+bool Expr::assignable() const {
+    const Kind k = nodes_[static_cast<std::size_t>(root_)].kind;
+    return k == Kind::Reg || k == Kind::Flag || k == Kind::Mem8 || k == Kind::Mem16;
+}
+
+std::string Expr::assign(Machine& m, std::int64_t v) const {
+    const Node& n = nodes_[static_cast<std::size_t>(root_)];
+    Registers& x = m.cpu().regs();
+    const auto lo = static_cast<std::uint8_t>(v);
+    const auto word = static_cast<std::uint16_t>(v);
+    auto poke = [&](std::uint16_t addr, std::uint8_t b) {
+        return m.poke(addr, b) ? std::string() : fmt::format("no memory at {:04X}H", addr);
+    };
+    switch (n.kind) {
+        case Kind::Reg:
+            switch (static_cast<RegId>(n.value)) {
+                case RegId::A: x.a = lo; break;
+                case RegId::B: x.b = lo; break;
+                case RegId::C: x.c = lo; break;
+                case RegId::D: x.d = lo; break;
+                case RegId::E: x.e = lo; break;
+                case RegId::H: x.h = lo; break;
+                case RegId::L: x.l = lo; break;
+                case RegId::F: x.f = lo; break;
+                case RegId::M: return poke(x.hl(), lo);
+                case RegId::BC: x.set_bc(word); break;
+                case RegId::DE: x.set_de(word); break;
+                case RegId::HL: x.set_hl(word); break;
+                case RegId::SP: x.sp = word; break;
+                case RegId::PC: x.pc = word; break;
+                case RegId::PSW:
+                    x.a = static_cast<std::uint8_t>(word >> 8);
+                    x.f = lo;
+                    break;
+            }
+            return {};
+        case Kind::Flag:
+            x.f = static_cast<std::uint8_t>(v ? x.f | n.value : x.f & ~n.value);
+            return {};
+        case Kind::Mem8: return poke(static_cast<std::uint16_t>(eval(m, n.a)), lo);
+        case Kind::Mem16: {
+            const auto addr = static_cast<std::uint16_t>(eval(m, n.a));
+            std::string e = poke(addr, lo);
+            return e.empty() ? poke(static_cast<std::uint16_t>(addr + 1), static_cast<std::uint8_t>(word >> 8)) : e;
+        }
+        default: return "not something that can be set (a register, a flag or memory)";
+    }
+}
+
+}  // namespace alp85::debug

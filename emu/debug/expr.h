@@ -1,0 +1,81 @@
+// The debugger's expressions: `print`, `set`, breakpoint and watchpoint conditions, `display`.
+//
+//   numbers   12  0CH  0x0C  1100B  14Q  'A'          (as the command language writes them)
+//   registers A B C D E H L F M(= [HL]) BC DE HL SP PC PSW, or with a $ ($A, $PC)
+//   flags     S Z AC P CY V K (0 or 1), or $S ...     $T: the T-state counter
+//   symbols   OUT  YAC+1  &Z   (a bare name is a register or flag first: &NAME is always the symbol)
+//   memory    [HL]  byte[1B30H]  word[YAC]  (little-endian 16 bits)
+//   operators unary - ! ~; * / %; + -; << >>; < <= > >=; == !=; &; ^; |; &&; ||; parentheses
+//
+// Parsed once (symbols resolved then) and evaluated many times: a breakpoint's condition costs a
+// tree walk at that address only. Evaluation reads the machine through its side-effect-free views.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "emu/board/machine.h"
+#include "emu/program/symbols.h"
+
+namespace alp85::debug {
+
+// A parse or evaluation error; `col` is 1-based within the text given to parse (0: none).
+struct ExprError {
+    int col = 0;
+    std::string message;
+};
+
+class Expr {
+public:
+    // What a bare name means first: the expression's registers and flags, or (for locations:
+    // `break Z` is the routine Z, not the zero flag) the program's symbols.
+    enum class Names : std::uint8_t { RegistersFirst, SymbolsFirst };
+
+    // nullopt and `error` (with its column, plus `col_base`) when `text` is not an expression.
+    static std::optional<Expr> parse(std::string_view text, const SymbolTable& symbols, ExprError& error,
+                                     Names names = Names::RegistersFirst, int col_base = 0);
+
+    // The value now; throws ExprError for a division by zero.
+    std::int64_t eval(const Machine& m) const;
+    // Width of the value in bits, for printing: 8 (a byte register, a flag's byte, byte[...]) or 16.
+    int width() const { return width_; }
+    const std::string& text() const { return text_; }
+
+    // `set LVALUE = VALUE`: registers, flags, memory. False when the expression is not one of these.
+    bool assignable() const;
+    // Writes v (truncated to the target's width); returns an error message or "" (no memory there).
+    std::string assign(Machine& m, std::int64_t v) const;
+
+    enum class Kind : std::uint8_t {
+        Number, Reg, Flag, Time, Mem8, Mem16,
+        Neg, Not, Compl,
+        Mul, Div, Mod, Add, Sub, Shl, Shr, Lt, Le, Gt, Ge, Eq, Ne, BitAnd, BitXor, BitOr, And, Or,
+    };
+    struct Node {
+        Kind kind = Kind::Number;
+        std::int64_t value = 0;  // Number: the value; Reg: the register; Flag: its bit
+        int a = -1, b = -1;      // operands (node indices)
+        int col = 0;
+    };
+
+private:
+    std::int64_t eval(const Machine& m, int node) const;
+
+    std::vector<Node> nodes_;
+    int root_ = -1;
+    int width_ = 16;
+    std::string text_;
+    friend class ExprParser;
+};
+
+// Register numbers of Kind::Reg nodes, in the order of the names above.
+enum class RegId : std::uint8_t { A, B, C, D, E, H, L, F, M, BC, DE, HL, SP, PC, PSW };
+std::optional<RegId> register_named(std::string_view upper_name);
+std::uint16_t read_register(const Machine& m, RegId r);
+// The flag bit of S Z AC P CY V K (isa::Flag), or nullopt.
+std::optional<std::uint8_t> flag_named(std::string_view upper_name);
+
+}  // namespace alp85::debug

@@ -1,0 +1,266 @@
+// Breakpoints and watchpoints: locations, numbers, conditions, ignore counts, commands; frames.
+#include <algorithm>
+#include <cctype>
+
+#include <fmt/format.h>
+
+#include "asm/isa.h"
+#include "emu/debug/debugger.h"
+#include "emu/debug/monitor.h"
+
+namespace alp85::debug {
+
+Debugger::Location Debugger::locate_line(std::string_view file, int line) const {
+    Location loc;
+    const std::optional<SourceLine> next = program_.next_line_with_code(file, line);
+    if (!next) {
+        loc.error = fmt::format("no code at or after {}:{} in the loaded programs", file, line);
+        return loc;
+    }
+    loc.addresses = program_.addresses_of(next->file, next->line);
+    if (next->line != line) loc.bound = next;
+    return loc;
+}
+
+Debugger::Location Debugger::locate(std::string_view text) const {
+    Location loc;
+    std::size_t lead = 0;
+    while (lead < text.size() && std::isspace(static_cast<unsigned char>(text[lead]))) ++lead;
+    std::string_view t = text.substr(lead);
+    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.remove_suffix(1);
+    if (t.empty()) {
+        loc.error = "expected a location (an address, a symbol or FILE:LINE)";
+        loc.col = static_cast<int>(lead) + 1;
+        return loc;
+    }
+    // FILE:LINE (the line a decimal number).
+    const auto colon = t.rfind(':');
+    if (colon != std::string_view::npos && colon > 0) {
+        const std::string_view num = t.substr(colon + 1);
+        if (!num.empty() && std::all_of(num.begin(), num.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+            loc = locate_line(t.substr(0, colon), std::stoi(std::string(num)));
+            if (!loc.error.empty()) loc.col = static_cast<int>(lead) + 1;
+            return loc;
+        }
+        loc.error = "expected FILE:LINE with a line number";
+        loc.col = static_cast<int>(lead + colon) + 2;
+        return loc;
+    }
+    if (t.front() == '*') {  // gdb's *ADDRESS
+        t.remove_prefix(1);
+        ++lead;
+    }
+    ExprError err;
+    const auto e = Expr::parse(t, program_, err, Expr::Names::SymbolsFirst, static_cast<int>(lead));
+    if (!e) {
+        loc.error = err.message;
+        loc.col = err.col;
+        return loc;
+    }
+    try {
+        const std::int64_t v = e->eval(m_);
+        if (v < 0 || v > 0xFFFF) {
+            loc.error = fmt::format("address {} is outside 0000H-FFFFH", v);
+            loc.col = static_cast<int>(lead) + 1;
+            return loc;
+        }
+        loc.addresses.push_back(static_cast<std::uint16_t>(v));
+    } catch (const ExprError& x) {
+        loc.error = x.message;
+        loc.col = static_cast<int>(lead) + x.col;
+    }
+    return loc;
+}
+
+Debugger::Added Debugger::add_breakpoint(std::string_view location, bool temporary, std::string_view condition) {
+    Added a;
+    const Location loc = locate(location);
+    if (!loc.error.empty()) {
+        a.error = loc.error;
+        a.col = loc.col;
+        return a;
+    }
+    std::optional<Expr> cond;
+    if (!condition.empty()) {
+        ExprError err;
+        cond = Expr::parse(condition, program_, err);
+        if (!cond) {
+            a.error = err.message;
+            a.col = err.col;
+            a.in_condition = true;
+            return a;
+        }
+    }
+    for (std::uint16_t addr : loc.addresses) {
+        Breakpoint b;
+        b.number = next_number();
+        b.address = addr;
+        b.location = std::string(location);
+        b.line = program_.line_of(addr);
+        b.temporary = temporary;
+        b.condition = cond;
+        breakpoints_.push_back(std::move(b));
+        if (!a.number) a.number = breakpoints_.back().number;
+    }
+    a.bound = loc.bound;
+    arm();
+    return a;
+}
+
+Debugger::Added Debugger::add_breakpoint_at(std::uint16_t address, bool temporary) {
+    return add_breakpoint(fmt::format("{:04X}H", address), temporary);
+}
+
+Debugger::Added Debugger::add_watchpoint(const WatchSpec& spec, std::string_view condition) {
+    Added a;
+    Watchpoint w;
+    w.kind = spec.kind;
+    w.what = spec.what;
+    w.first = spec.first;
+    w.last = spec.last;
+    w.dir = spec.dir;
+    w.value = spec.value;
+    w.quantity = spec.quantity;
+    w.axis = spec.axis;
+    w.reg = spec.reg;
+    if (w.last < w.first) std::swap(w.first, w.last);
+    if (!condition.empty()) {
+        ExprError err;
+        w.condition = Expr::parse(condition, program_, err);
+        if (!w.condition) {
+            a.error = err.message;
+            a.col = err.col;
+            a.in_condition = true;
+            return a;
+        }
+    }
+    w.number = next_number();
+    a.number = w.number;
+    watchpoints_.push_back(std::move(w));
+    rebaseline();
+    arm();
+    return a;
+}
+
+Breakpoint* Debugger::find_bp(int n) {
+    auto it = std::find_if(breakpoints_.begin(), breakpoints_.end(), [n](const Breakpoint& b) { return b.number == n; });
+    return it == breakpoints_.end() ? nullptr : &*it;
+}
+Watchpoint* Debugger::find_wp(int n) {
+    auto it = std::find_if(watchpoints_.begin(), watchpoints_.end(), [n](const Watchpoint& w) { return w.number == n; });
+    return it == watchpoints_.end() ? nullptr : &*it;
+}
+const Breakpoint* Debugger::breakpoint(int n) const { return const_cast<Debugger*>(this)->find_bp(n); }
+const Watchpoint* Debugger::watchpoint(int n) const { return const_cast<Debugger*>(this)->find_wp(n); }
+
+bool Debugger::remove(int n) {
+    const std::size_t before = breakpoints_.size() + watchpoints_.size();
+    std::erase_if(breakpoints_, [n](const Breakpoint& b) { return b.number == n; });
+    std::erase_if(watchpoints_, [n](const Watchpoint& w) { return w.number == n; });
+    arm();
+    return breakpoints_.size() + watchpoints_.size() != before;
+}
+
+void Debugger::remove_all() {
+    breakpoints_.clear();
+    watchpoints_.clear();
+    arm();
+}
+
+bool Debugger::remove_breakpoints_at(std::uint16_t address) {
+    const std::size_t before = breakpoints_.size();
+    std::erase_if(breakpoints_, [address](const Breakpoint& b) { return b.address == address; });
+    arm();
+    return breakpoints_.size() != before;
+}
+
+bool Debugger::enable(int n, bool on) {
+    if (Breakpoint* b = find_bp(n)) b->enabled = on;
+    else if (Watchpoint* w = find_wp(n)) w->enabled = on;
+    else return false;
+    rebaseline();
+    arm();
+    return true;
+}
+
+std::string Debugger::set_condition(int n, std::string_view condition, int& col) {
+    std::optional<Expr> cond;
+    if (!condition.empty()) {
+        ExprError err;
+        cond = Expr::parse(condition, program_, err);
+        if (!cond) {
+            col = err.col;
+            return err.message;
+        }
+    }
+    if (Breakpoint* b = find_bp(n)) b->condition = std::move(cond);
+    else if (Watchpoint* w = find_wp(n)) w->condition = std::move(cond);
+    else return fmt::format("no breakpoint or watchpoint number {}", n);
+    return {};
+}
+
+bool Debugger::set_ignore(int n, unsigned count) {
+    if (Breakpoint* b = find_bp(n)) b->ignore = count;
+    else if (Watchpoint* w = find_wp(n)) w->ignore = count;
+    else return false;
+    return true;
+}
+
+bool Debugger::set_commands(int n, std::vector<std::string> commands) {
+    if (Breakpoint* b = find_bp(n)) b->commands = std::move(commands);
+    else if (Watchpoint* w = find_wp(n)) w->commands = std::move(commands);
+    else return false;
+    return true;
+}
+
+std::vector<std::string> Debugger::commands_for(const Stop& s) const {
+    if (s.reason == StopReason::Breakpoint)
+        if (const Breakpoint* b = breakpoint(s.number)) return b->commands;
+    if (s.reason == StopReason::Watchpoint)
+        if (const Watchpoint* w = watchpoint(s.number)) return w->commands;
+    return {};
+}
+
+// ---- frames -----------------------------------------------------------------------------------------
+// The stack holds return addresses among pushed data; a word is taken for one when the bytes
+// before it are a CALL (or a conditional call), or an RST in code a loaded program placed there.
+// That finds every frame of CALL/RET code, including code that leaves without RET (the thesis's
+// LEAVE pops its return address); an interrupt's frame has no CALL before it and is not shown.
+
+namespace {
+constexpr int kMaxFrames = 64;
+bool is_return_address(const Machine& m, const SymbolTable& program, std::uint16_t w) {
+    const std::uint8_t call = m.peek(static_cast<std::uint16_t>(w - 3));
+    if (call == 0xCD || (call & 0xC7) == 0xC4) return true;
+    const std::uint8_t rst = m.peek(static_cast<std::uint16_t>(w - 1));
+    return (rst & 0xC7) == 0xC7 && program.line_of(static_cast<std::uint16_t>(w - 1)).has_value();
+}
+std::optional<std::string> routine_of(const SymbolTable& program, std::uint16_t pc) {
+    for (int back = 0; back < 1024 && back <= pc; ++back)
+        if (auto l = program.label_at(static_cast<std::uint16_t>(pc - back))) return back ? fmt::format("{}+{}", *l, back) : *l;
+    return std::nullopt;
+}
+}  // namespace
+
+std::optional<std::uint16_t> Debugger::return_slot() const {
+    const std::vector<Frame> f = backtrace();
+    if (f.size() < 2) return std::nullopt;
+    return f[1].slot;
+}
+
+std::vector<Frame> Debugger::backtrace() const {
+    std::vector<Frame> frames;
+    const Registers& r = m_.cpu().regs();
+    frames.push_back({r.pc, 0, routine_of(program_, r.pc), program_.line_of(r.pc)});
+    std::uint32_t slot = r.sp;
+    for (int i = 0; i < 256 && frames.size() < kMaxFrames && slot + 1 <= 0xFFFF; ++i, slot += 2) {
+        const auto s = static_cast<std::uint16_t>(slot);
+        if (m_.bus().page_kind(s) != Bus::PageKind::Ram) break;  // off the end of the stack's memory
+        const auto w = static_cast<std::uint16_t>(m_.peek(s) | m_.peek(static_cast<std::uint16_t>(s + 1)) << 8);
+        if (!is_return_address(m_, program_, w)) continue;
+        frames.push_back({w, s, routine_of(program_, static_cast<std::uint16_t>(w - 1)), program_.line_of(w)});
+    }
+    return frames;
+}
+
+}  // namespace alp85::debug
