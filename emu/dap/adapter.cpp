@@ -152,8 +152,8 @@ void Adapter::on_debug_event(const debug::Event& e) {
         case debug::Event::Kind::ExpectFailed:
         case debug::Event::Kind::Output:
             if (capturing_) {
-                console_ += e.text;
-                console_ += '\n';
+                captured_ += e.text;
+                captured_ += '\n';
             } else {
                 output(e.kind == debug::Event::Kind::ExpectFailed ? "stderr" : "console", e.text);
             }

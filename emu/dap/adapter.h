@@ -22,6 +22,7 @@
 #include "emu/dap/breakpoints.h"
 #include "emu/dap/launch.h"
 #include "emu/dap/machine_view.h"
+#include "emu/debug/console.h"
 #include "emu/debug/debugger.h"
 #include "emu/script/session.h"
 
@@ -84,11 +85,13 @@ private:
     void arm();  // the machine's breakpoints and watchpoints from the tables below
     void resolve_breakpoints();  // binds every breakpoint to the program now loaded
     void resolve(Breakpoint& b, const std::string& path);
+    bool check_options(Breakpoint& b);  // condition and hit condition; false: unverified, says why
     Json breakpoint_json(const Breakpoint& b, const std::string& path) const;
     // At a breakpoint hit: counts hits, writes log points; true when the run is to stop there
     // (the ids of the breakpoints that stop it in `ids`).
     bool stop_at_breakpoint(std::uint16_t pc, std::vector<int>& ids);
-    bool stop_at_data(std::uint16_t address, std::vector<int>& ids);
+    bool stop_at_data(const debug::Stop& s, std::vector<int>& ids);
+    void report(const debug::Stop& s, std::string_view step_reason);  // a finished step or reverse run
 
     // ---- running (run.cpp) ---------------------------------------------------------------------
     void continue_(const Json& args, Json& body);
@@ -104,7 +107,7 @@ private:
     void stopped(std::string_view reason, const std::string& description = {}, std::vector<int> hit_ids = {},
                  const std::string& text = {});
     void start_run();
-    void end_run();  // the run is over: temporary breakpoints go
+    void end_run();  // the run is over: the step's temporary breakpoint goes
 
     // ---- state (state.cpp) ---------------------------------------------------------------------
     void threads(const Json& args, Json& body);
@@ -121,8 +124,9 @@ private:
     std::string interpolate(const std::string& message);
     // The value of an expression as text (watch, hover, log points); RequestError if it has none.
     std::string value_text(const std::string& expression);
-    // The console: one line of the command language run on the session; its output.
-    std::string run_console_line(const std::string& line);
+    // One line of the command language on the session (the console's fallback); RequestError
+    // with the message when it fails.
+    std::string run_script_line(const std::string& line);
     Json variables_of(std::int64_t ref);
 
     // ---- memory (memory.cpp) -------------------------------------------------------------------
@@ -141,8 +145,11 @@ private:
     std::unique_ptr<script::Session> session_;
     ProgramMap map_;           // what is loaded where, for runaways and sources
     BreakpointTable bps_;      // every kind the client set
-    std::string console_;      // output of the console command being evaluated
-    bool capturing_ = false;   // evaluate: the debugger's output goes to console_
+    std::vector<int> engine_points_;    // the Debugger's breakpoints and watchpoints made for bps_
+    std::map<int, int> engine_to_dap_;  // their numbers -> DAP breakpoint ids
+    std::unique_ptr<debug::Console> console_;  // the debug console's commands (evaluate, repl)
+    std::string captured_;     // the debugger's output while a console command runs
+    bool capturing_ = false;   // evaluate: the debugger's output goes to captured_
     bool in_request_ = false;  // events wait in deferred_ until the response is sent
     std::vector<Json> deferred_;
 
@@ -150,13 +157,17 @@ private:
     struct Run {
         bool active = false;
         enum class Kind : std::uint8_t { Continue, Over, Out } kind = Kind::Continue;
-        std::uint16_t target = 0;   // Over: the return address
-        std::uint16_t sp = 0;       // Over/Out: SP of the frame being left
+        std::uint16_t target = 0;   // Over/Out: the return address
+        std::uint16_t sp = 0;       // Over/Out: SP once returned (at least)
+        int temporary = 0;          // Over/Out: the Debugger's breakpoint at target
         std::uint64_t started_at = 0;  // machine time at the start (real-time pacing)
         double host_start = 0;         // host seconds at the start
     } run_;
+    void run_until_return(std::uint16_t target, std::uint16_t sp, Run::Kind kind);
     std::optional<std::uint16_t> runaway_;  // an instruction fetched where nothing is loaded
     bool runaway_armed_ = true;             // off after a runaway until the PC is back in code
+    std::optional<std::uint16_t> stack_base_;  // SP as the last LXI SP / SPHL left it
+    bool resetting_sp_ = false;                // the instruction about to run sets SP
 };
 
 }  // namespace alp85::dap

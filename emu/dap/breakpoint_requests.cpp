@@ -52,7 +52,10 @@ void Adapter::resolve(Breakpoint& b, const std::string& path) {
 
 void Adapter::resolve_breakpoints() {
     for (auto& [path, list] : bps_.source)
-        for (Breakpoint& b : list) resolve(b, path);
+        for (Breakpoint& b : list) {
+            resolve(b, path);
+            if (b.verified) check_options(b);
+        }
     const SymbolTable* symbols = session_ ? &session_->debugger().program() : nullptr;
     for (Breakpoint& b : bps_.function) {
         b.addresses.clear();
@@ -60,28 +63,47 @@ void Adapter::resolve_breakpoints() {
         b.verified = v.has_value();
         if (v) b.addresses = {*v};
         b.message = v ? "" : fmt::format("no symbol '{}' in the loaded programs", b.name);
+        if (b.verified) check_options(b);
     }
     for (Breakpoint& b : bps_.instruction) b.verified = !b.addresses.empty();
     arm();
 }
 
+// The Debugger's own breakpoints and watchpoints stand for the client's (its conditions are
+// theirs, so reverseContinue stops where continue would); hit conditions and log points are the
+// adapter's, counted at each stop. Points made in the debug console are left alone.
 void Adapter::arm() {
     if (!session_) return;
-    Machine& m = session_->machine();
-    m.clear_breakpoints();
-    m.clear_watchpoints();
-    auto add = [&m](const std::vector<Breakpoint>& list) {
+    debug::Debugger& d = session_->debugger();
+    for (const int n : engine_points_) d.remove(n);
+    engine_points_.clear();
+    engine_to_dap_.clear();
+    auto keep = [&](int number, int id, const std::string& condition) {
+        if (number == 0) return;
+        int col = 0;
+        if (!condition.empty()) d.set_condition(number, condition, col);
+        engine_points_.push_back(number);
+        engine_to_dap_[number] = id;
+    };
+    auto add = [&](const std::vector<Breakpoint>& list) {
         for (const Breakpoint& b : list)
             if (b.verified)
-                for (const std::uint16_t a : b.addresses) m.add_breakpoint(a);
+                for (const std::uint16_t a : b.addresses) keep(d.add_breakpoint_at(a).number, b.id, b.condition);
     };
     for (const auto& [path, list] : bps_.source) add(list);
     add(bps_.function);
     add(bps_.instruction);
-    for (const DataBreakpoint& d : bps_.data)
-        if (d.verified)
-            for (unsigned i = 0; i < d.length; ++i) m.add_watchpoint(static_cast<std::uint16_t>(d.address + i));
-    if (run_.active && run_.kind == Run::Kind::Over) m.add_breakpoint(run_.target);
+    for (const DataBreakpoint& x : bps_.data) {
+        if (!x.verified) continue;
+        debug::WatchSpec spec;
+        spec.kind = x.access == "read" ? debug::WatchKind::Read
+                    : x.access == "write" ? debug::WatchKind::Write
+                                          : debug::WatchKind::Access;
+        spec.first = x.address;
+        spec.last = static_cast<std::uint16_t>(x.address + x.length - 1);
+        spec.what = x.what;
+        keep(d.add_watchpoint(spec).number, x.id, x.condition);
+    }
 }
 
 namespace {
@@ -93,21 +115,29 @@ void read_options(const Json& spec, Breakpoint& b) {
     b.log_message = opt_string(spec, "logMessage").value_or("");
 }
 
-bool check_options(Breakpoint& b) {
-    if (!b.hit_condition.empty() && !hit_condition_met(b.hit_condition, 0)) {
-        b.verified = false;
-        b.message = fmt::format("hit condition '{}' is not N, ==N, >=N, >N, <N, <=N or %N", b.hit_condition);
-        return false;
-    }
-    if (!b.condition.empty()) {
-        b.verified = false;
-        b.message = "conditions need the debugger engine's expressions (issue #15)";
-        return false;
-    }
-    return true;
+// A condition is the debugger's expression (docs/debugging.md): "" or why it is not one.
+std::string condition_error(const SymbolTable& symbols, const std::string& condition) {
+    if (condition.empty()) return {};
+    debug::ExprError err;
+    if (debug::Expr::parse(condition, symbols, err)) return {};
+    return fmt::format("condition '{}': {} (column {})", condition, err.message, err.col);
+}
+
+std::string hit_condition_error(const std::string& hit) {
+    if (hit.empty() || hit_condition_met(hit, 0)) return {};
+    return fmt::format("hit condition '{}' is not N, ==N, >=N, >N, <N, <=N or %N", hit);
 }
 
 }  // namespace
+
+bool Adapter::check_options(Breakpoint& b) {
+    std::string why = hit_condition_error(b.hit_condition);
+    if (why.empty() && session_) why = condition_error(session_->debugger().program(), b.condition);
+    if (why.empty()) return true;
+    b.verified = false;
+    b.message = why;
+    return false;
+}
 
 void Adapter::set_breakpoints(const Json& args, Json& body) {
     const Json& src = opt_object(args, "source");
@@ -202,7 +232,7 @@ void Adapter::data_breakpoint_info(const Json& args, Json& body) {
     body = {{"dataId", data_id(target->first, target->second)},
             {"description", fmt::format("{} ({:04X}H, {} byte{})", name, target->first, target->second,
                                         target->second == 1 ? "" : "s")},
-            {"accessTypes", Json::array({"readWrite"})},
+            {"accessTypes", Json::array({"write", "read", "readWrite"})},
             {"canPersist", true}};
 }
 
@@ -218,10 +248,14 @@ void Adapter::set_data_breakpoints(const Json& args, Json& body) {
         d.condition = opt_string(spec, "condition").value_or("");
         const auto parsed = parse_data_id(d.data_id);
         if (!parsed) d.message = fmt::format("'{}' is not a dataId that dataBreakpointInfo gave", d.data_id);
-        else if (d.access != "readWrite") d.message = "only readWrite (any access) is watched until the debugger engine (issue #15)";
-        else if (!d.condition.empty()) d.message = "conditions need the debugger engine's expressions (issue #15)";
-        else if (!d.hit_condition.empty() && !hit_condition_met(d.hit_condition, 0)) d.message = "a hit condition is N, ==N, >=N, >N, <N, <=N or %N";
+        else if (d.access != "read" && d.access != "write" && d.access != "readWrite")
+            d.message = fmt::format("accessType '{}' is not read, write or readWrite", d.access);
+        else if (!session_) d.message = "no program yet: send 'launch' first";
+        else if (const std::string why = condition_error(session_->debugger().program(), d.condition); !why.empty()) d.message = why;
+        else if (const std::string why2 = hit_condition_error(d.hit_condition); !why2.empty()) d.message = why2;
         else {
+            const auto name = session_->debugger().program().name_at(parsed->first);
+            d.what = fmt::format("{} ({:04X}H)", name.value_or(fmt::format("{:04X}H", parsed->first)), parsed->first);
             d.address = parsed->first;
             d.length = parsed->second;
             d.verified = true;
@@ -253,6 +287,10 @@ void Adapter::breakpoint_locations(const Json& args, Json& body) {
 bool Adapter::stop_at_breakpoint(std::uint16_t pc, std::vector<int>& ids) {
     bool stop = false;
     for (Breakpoint* b : bps_.at(pc)) {
+        if (!b->condition.empty()) {  // the Debugger checked the one that stopped; the others here too
+            const auto v = session_->debugger().evaluate(b->condition);
+            if (v.error.empty() && v.value == 0) continue;
+        }
         ++b->hits;
         if (!b->hit_condition.empty() && !hit_condition_met(b->hit_condition, b->hits).value_or(false)) continue;
         if (!b->log_message.empty()) {
@@ -265,9 +303,11 @@ bool Adapter::stop_at_breakpoint(std::uint16_t pc, std::vector<int>& ids) {
     return stop;
 }
 
-bool Adapter::stop_at_data(std::uint16_t address, std::vector<int>& ids) {
+bool Adapter::stop_at_data(const debug::Stop& s, std::vector<int>& ids) {
+    const auto it = engine_to_dap_.find(s.number);
+    if (it == engine_to_dap_.end()) return true;  // a watchpoint of the console's
     bool stop = false;
-    for (DataBreakpoint* d : bps_.data_at(address)) {
+    for (DataBreakpoint* d : bps_.data_with(it->second)) {
         ++d->hits;
         if (!d->hit_condition.empty() && !hit_condition_met(d->hit_condition, d->hits).value_or(false)) continue;
         stop = true;

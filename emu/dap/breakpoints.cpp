@@ -31,10 +31,10 @@ std::vector<Breakpoint*> BreakpointTable::at(std::uint16_t pc) {
     return out;
 }
 
-std::vector<DataBreakpoint*> BreakpointTable::data_at(std::uint16_t address) {
+std::vector<DataBreakpoint*> BreakpointTable::data_with(int id) {
     std::vector<DataBreakpoint*> out;
     for (DataBreakpoint& d : data)
-        if (d.verified && static_cast<std::uint16_t>(address - d.address) < d.length) out.push_back(&d);
+        if (d.verified && d.id == id) out.push_back(&d);
     return out;
 }
 

@@ -29,7 +29,8 @@ struct DataBreakpoint {
     std::string data_id;          // "1B32H:2": address and length, what dataBreakpointInfo gave
     std::uint16_t address = 0;
     std::uint16_t length = 1;
-    std::string access = "readWrite";
+    std::string access = "readWrite";  // DAP's: read, write (with a new value), readWrite
+    std::string what;                  // "YAC (1B32H)", for the Debugger's messages
     std::string condition, hit_condition;
     std::uint64_t hits = 0;
     bool verified = false;
@@ -44,7 +45,7 @@ struct BreakpointTable {
 
     // Every code breakpoint that covers `pc`.
     std::vector<Breakpoint*> at(std::uint16_t pc);
-    std::vector<DataBreakpoint*> data_at(std::uint16_t address);
+    std::vector<DataBreakpoint*> data_with(int id);
 };
 
 // DAP's hitCondition, as debuggers write it: "5" or "==5" (the fifth hit), ">=5", ">5", "<5",

@@ -282,35 +282,50 @@ std::optional<std::string> expression_value(const debug::Debugger& d, const std:
     std::string t = text;
     while (!t.empty() && t.front() == ' ') t.erase(0, 1);
     while (!t.empty() && t.back() == ' ') t.pop_back();
+    // A firmware variable by its bare name shows what it holds (hovering over YAC); the
+    // expression YAC is its address, as in the debugger's console.
     const std::string u = to_upper(t);
-    for (const auto& f : kFlags)
-        if (u == f.name) return std::string(m.cpu().regs().f & f.bit ? "1" : "0");
-    if (const auto r = reg_value(m.cpu().regs(), u)) {
-        const bool pair = u.size() > 1;
-        return pair ? word_text(*r) : fmt::format("{:02X}H ({})", *r, *r);
-    }
-    if (const auto v = d.program().value_of(u)) {
-        if (in_ram(m, *v)) {
+    if (!reg_value(m.cpu().regs(), u) && std::none_of(std::begin(kFlags), std::end(kFlags), [&](const auto& f) { return u == f.name; }))
+        if (const auto v = d.program().value_of(u); v && in_ram(m, *v)) {
             const std::uint16_t size = variable_size(d.program(), *v);
             return fmt::format("{} at {:04X}H", size == 1 ? h2(m.peek(*v)) : word_text(read_word(m, *v)), *v);
         }
-        return word_text(*v);
+    const debug::Debugger::Value v = d.evaluate(t);
+    if (!v.error.empty()) {
+        error = v.col > 0 ? fmt::format("{} (column {})", v.error, v.col) : v.error;
+        return std::nullopt;
     }
-    if (const auto n = script::parse_number(t)) return fmt::format("{:X}H ({})", *n, *n);
-    error = fmt::format("'{}' is not a register, flag, symbol or number", t);
-    return std::nullopt;
+    if (v.value < 0 || v.value > 0xFFFF) return std::to_string(v.value);
+    return v.width <= 8 ? fmt::format("{:02X}H ({})", v.value, v.value) : fmt::format("{:04X}H ({})", v.value, v.value);
 }
 
-std::vector<CallFrame> call_frames(const debug::Debugger& d) {
+std::vector<debug::Frame> live_frames(const debug::Debugger& d, std::optional<std::uint16_t> stack_base) {
+    std::vector<debug::Frame> frames = d.backtrace();
+    if (stack_base)
+        for (std::size_t i = 1; i < frames.size(); ++i)
+            if (frames[i].slot >= *stack_base) {
+                frames.resize(i);
+                break;
+            }
+    return frames;
+}
+
+std::vector<CallFrame> call_frames(const debug::Debugger& d, std::optional<std::uint16_t> stack_base) {
     const Machine& m = d.machine();
-    const std::uint16_t pc = m.cpu().regs().pc;
-    std::string name = h4(pc);
-    for (unsigned back = 0; back < 0x800 && back <= pc; ++back)
-        if (const auto l = d.program().label_at(static_cast<std::uint16_t>(pc - back))) {
-            name = back ? fmt::format("{}+{} ({:04X}H)", *l, back, pc) : fmt::format("{} ({:04X}H)", *l, pc);
-            break;
+    std::vector<CallFrame> out;
+    for (const debug::Frame& f : live_frames(d, stack_base)) {
+        // A caller is shown at its CALL (or RST), the line the user reads as "called from here".
+        std::uint16_t at = f.pc;
+        if (!out.empty()) {
+            const auto call = static_cast<std::uint16_t>(f.pc - 3);
+            const std::uint8_t op = m.peek(call);
+            at = op == 0xCD || (op & 0xC7) == 0xC4 ? call : static_cast<std::uint16_t>(f.pc - 1);
         }
-    return {{name, pc, d.program().line_of(pc)}};
+        const auto routine = f.routine ? *f.routine : h4(at);
+        out.push_back({out.empty() ? fmt::format("{} ({})", routine, h4(at)) : fmt::format("{} (returns to {})", routine, h4(f.pc)),
+                       at, d.program().line_of(at)});
+    }
+    return out;
 }
 
 }  // namespace alp85::dap

@@ -1,5 +1,6 @@
-// continue, next, stepIn, stepOut, pause, stepBack, reverseContinue, goto: the machine runs in
-// slices between messages (advance), so that pause is answered within one slice.
+// continue, next, stepIn, stepOut, pause, stepBack, reverseContinue, goto. Forward runs that may
+// last (continue, a step over a call, a step out) go in slices between messages (advance), so
+// pause is answered within one slice; single steps and reverse execution are the Debugger's.
 #include <chrono>
 
 #include <fmt/format.h>
@@ -18,6 +19,19 @@ double host_seconds() {
 
 // CALL, Ccc and RST push a return address: `next` runs them whole.
 bool pushes_return(std::uint8_t op) { return op == 0xCD || (op & 0xC7) == 0xC4 || (op & 0xC7) == 0xC7; }
+
+bool by_instruction(const Json& args) { return opt_string(args, "granularity").value_or("") == "instruction"; }
+
+std::string changes_text(const debug::Stop& s) {
+    std::string out;
+    for (const debug::Change& c : s.changes) {
+        if (!out.empty()) out += "; ";
+        if (c.value_only) out += fmt::format("{}: {:0{}X}H", c.what, c.new_value, c.digits);
+        else if (c.digits == 0) out += fmt::format("{}: {} -> {}", c.what, c.old_value, c.new_value);
+        else out += fmt::format("{}: {:0{}X}H -> {:0{}X}H", c.what, c.old_value, c.digits, c.new_value, c.digits);
+    }
+    return out;
+}
 
 }  // namespace
 
@@ -43,7 +57,38 @@ void Adapter::start_run() {
 
 void Adapter::end_run() {
     run_.active = false;
-    arm();  // drops a step's temporary breakpoint
+    if (run_.temporary) session_->debugger().remove(run_.temporary);
+    run_.temporary = 0;
+}
+
+void Adapter::run_until_return(std::uint16_t target, std::uint16_t sp, Run::Kind kind) {
+    run_.kind = kind;
+    run_.target = target;
+    run_.sp = sp;
+    run_.temporary = session_->debugger().add_breakpoint_at(target).number;
+    start_run();
+}
+
+// How a step or a reverse run ended, as a stopped event.
+void Adapter::report(const debug::Stop& s, std::string_view step_reason) {
+    switch (s.reason) {
+        case debug::StopReason::Breakpoint: {
+            const auto it = engine_to_dap_.find(s.number);
+            stopped("breakpoint", {}, it == engine_to_dap_.end() ? std::vector<int>{} : std::vector<int>{it->second});
+            return;
+        }
+        case debug::StopReason::Watchpoint: {
+            const auto it = engine_to_dap_.find(s.number);
+            stopped("data breakpoint", changes_text(s), it == engine_to_dap_.end() ? std::vector<int>{} : std::vector<int>{it->second});
+            return;
+        }
+        case debug::StopReason::Error: stopped("exception", s.message, {}, s.message); return;
+        case debug::StopReason::HistoryStart:
+            output("console", s.message);
+            stopped(step_reason, s.message);
+            return;
+        default: stopped(step_reason); return;
+    }
 }
 
 void Adapter::continue_(const Json&, Json& body) {
@@ -60,10 +105,10 @@ void Adapter::pause(const Json&, Json&) {
     stopped("pause");
 }
 
-void Adapter::step_in(const Json&, Json&) {
+void Adapter::step_in(const Json& args, Json&) {
     require_stopped();
-    session_->debugger().step();
-    stopped("step");
+    debug::Debugger& d = session_->debugger();
+    report(by_instruction(args) ? d.stepi() : d.step(), "step");
 }
 
 void Adapter::next(const Json&, Json&) {
@@ -72,34 +117,52 @@ void Adapter::next(const Json&, Json&) {
     const Registers before = m.cpu().regs();
     const std::uint8_t op = m.peek(before.pc);
     const auto len = alp85::disassemble(m.bus(), before.pc, m.cpu().variant()).length;
-    session_->debugger().step();
+    const debug::Stop s = session_->debugger().stepi();
     const Registers& after = m.cpu().regs();
-    const std::uint16_t ret = static_cast<std::uint16_t>(before.pc + len);
-    if (!pushes_return(op) || after.pc == ret || after.sp != static_cast<std::uint16_t>(before.sp - 2)) {
-        stopped("step");
+    const auto ret = static_cast<std::uint16_t>(before.pc + len);
+    if (s.reason != debug::StopReason::Step || !pushes_return(op) || after.pc == ret ||
+        after.sp != static_cast<std::uint16_t>(before.sp - 2)) {
+        report(s, "step");
         return;
     }
     // The call was taken: run until it returns here with the stack as it was.
-    run_.kind = Run::Kind::Over;
-    run_.target = ret;
-    run_.sp = before.sp;
-    m.add_breakpoint(ret);
-    start_run();
+    run_until_return(ret, before.sp, Run::Kind::Over);
 }
 
 void Adapter::step_out(const Json&, Json&) {
     require_stopped();
-    throw RequestError("stepOut needs CALL/RET tracking from the debugger engine (issue #15), not merged yet");
+    // The caller's frame from the Debugger's CALL/RET view of the stack: its return address and
+    // the slot it sits in; returned when the PC is there with that slot popped.
+    const std::vector<debug::Frame> frames = live_frames(session_->debugger(), stack_base_);
+    if (frames.size() < 2) throw RequestError("no caller to return to: no return address on the stack");
+    run_until_return(frames[1].pc, static_cast<std::uint16_t>(frames[1].slot + 2), Run::Kind::Out);
 }
 
-void Adapter::step_back(const Json&, Json&) {
+void Adapter::step_back(const Json& args, Json&) {
     require_stopped();
-    throw RequestError("stepBack needs reverse execution from the debugger engine (issue #15), not merged yet");
+    debug::Debugger& d = session_->debugger();
+    report(by_instruction(args) ? d.reverse_stepi() : d.reverse_step(), "step");
 }
 
 void Adapter::reverse_continue(const Json&, Json&) {
     require_stopped();
-    throw RequestError("reverseContinue needs reverse execution from the debugger engine (issue #15), not merged yet");
+    debug::Debugger& d = session_->debugger();
+    // Back to the previous hit that a forward run would have stopped at: log points and hit
+    // conditions not met are passed (a bounded number of times).
+    for (int tries = 0; tries < 1000; ++tries) {
+        const debug::Stop s = d.reverse_continue();
+        if (s.reason == debug::StopReason::Breakpoint) {
+            const auto it = engine_to_dap_.find(s.number);
+            bool log_only = false;
+            if (it != engine_to_dap_.end())
+                for (const Breakpoint* b : bps_.at(s.pc))
+                    if (b->id == it->second && !b->log_message.empty()) log_only = true;
+            if (log_only) continue;
+        }
+        report(s, "step");
+        return;
+    }
+    stopped("pause", "reverse-continue passed 1000 log points");
 }
 
 void Adapter::goto_targets(const Json& args, Json& body) {
@@ -126,6 +189,7 @@ void Adapter::goto_(const Json& args, Json&) {
     const std::int64_t id = need_int(args, "targetId");
     if (id < 1 || id > 0x10000) throw RequestError(fmt::format("no goto target {}", id));
     machine().cpu().regs().pc = static_cast<std::uint16_t>(id - 1);
+    session_->debugger().state_changed();
     stopped("goto");
 }
 
@@ -139,18 +203,22 @@ int Adapter::advance() {
             end_run();
             const std::uint16_t at = *runaway_;
             const auto d = alp85::disassemble(m.bus(), at, m.cpu().variant());
-            stopped("exception", "runaway",
-                    {}, fmt::format("the program ran away: it executed {:04X}H ({}), where no program was loaded", at, d.text));
+            const std::string text =
+                fmt::format("the program ran away: it fetched an instruction at {:04X}H ({}), where no program is", at, d.text);
+            output("stderr", text);
+            stopped("exception", "runaway", {}, text);
             return 0;
         }
         case debug::StopReason::Breakpoint: {
-            if (run_.kind == Run::Kind::Over && s.pc == run_.target && m.cpu().regs().sp >= run_.sp) {
-                end_run();
-                stopped("step");
+            if (run_.temporary && s.number == run_.temporary) {
+                if (m.cpu().regs().sp >= run_.sp) {  // returned (not a deeper, recursive visit)
+                    end_run();
+                    stopped("step");
+                }
                 return 0;
             }
             std::vector<int> ids;
-            if (stop_at_breakpoint(s.pc, ids)) {
+            if (!engine_to_dap_.contains(s.number) || stop_at_breakpoint(s.pc, ids)) {
                 end_run();
                 stopped("breakpoint", {}, ids);
             }
@@ -158,13 +226,16 @@ int Adapter::advance() {
         }
         case debug::StopReason::Watchpoint: {
             std::vector<int> ids;
-            if (s.data && stop_at_data(*s.data, ids)) {
+            if (stop_at_data(s, ids)) {
                 end_run();
-                stopped("data breakpoint",
-                        fmt::format("{:04X}H accessed (now {:02X}H)", *s.data, m.peek(*s.data)), ids);
+                stopped("data breakpoint", changes_text(s), ids);
             }
             return 0;
         }
+        case debug::StopReason::Error:
+            end_run();
+            stopped("exception", s.message, {}, s.message);
+            return 0;
         default: break;
     }
     if (!config_.real_time) return 0;

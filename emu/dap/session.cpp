@@ -57,6 +57,8 @@ void Adapter::launch(const Json& args, Json&) {
 void Adapter::start_session() {
     run_ = {};
     runaway_.reset();
+    stack_base_.reset();
+    resetting_sp_ = false;
     script::SessionOptions so;
     so.base_dir = config_.cwd;
     if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
@@ -64,12 +66,34 @@ void Adapter::start_session() {
     s->debugger().listen([this](const debug::Event& e) { on_debug_event(e); });
     std::vector<std::string> warnings;
     load_program(config_, *s, map_, warnings);  // throws: the old session stays
+    engine_points_.clear();  // they belonged to the old session's Debugger
+    engine_to_dap_.clear();
+    console_.reset();
     session_ = std::move(s);
     for (const std::string& w : warnings) output("stderr", w);
-    if (config_.stop_on_runaway) {
+    debug::Debugger& d = session_->debugger();
+    d.set_history(true);  // stepBack and reverseContinue from the first instruction on
+    // The debug console: the debugger's commands, and the command language for the rest.
+    console_ = std::make_unique<debug::Console>(d);
+    console_->set_fallback([this](std::string_view line, std::string& out) {
+        try {
+            out += run_script_line(std::string(line));
+            return true;
+        } catch (const RequestError& e) {
+            out += e.what();
+            return false;
+        }
+    });
+    {
         Machine& m = session_->machine();
-        m.set_trace([this, &m](const I8085& cpu) {
+        m.set_trace([this, &m, &d](const I8085& cpu) {
             const std::uint16_t pc = cpu.regs().pc;
+            // The stack's top as the program set it (LXI SP / SPHL): return addresses above it
+            // are left over from earlier code (the monitor's), not callers.
+            if (resetting_sp_) stack_base_ = cpu.regs().sp;
+            const std::uint8_t op = m.peek(pc);
+            resetting_sp_ = op == 0x31 || op == 0xF9;
+            if (!config_.stop_on_runaway || d.replaying()) return;
             if (map_.code[pc]) runaway_armed_ = true;
             else if (runaway_armed_ && !runaway_) {
                 runaway_ = pc;

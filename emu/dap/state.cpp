@@ -26,7 +26,7 @@ void Adapter::stack_trace(const Json& args, Json& body) {
     require_stopped();
     const std::int64_t start = std::max<std::int64_t>(0, opt_int(args, "startFrame").value_or(0));
     const std::int64_t levels = opt_int(args, "levels").value_or(0);
-    const std::vector<CallFrame> frames = call_frames(session_->debugger());
+    const std::vector<CallFrame> frames = call_frames(session_->debugger(), stack_base_);
     Json out = Json::array();
     for (std::size_t i = static_cast<std::size_t>(start); i < frames.size(); ++i) {
         if (levels > 0 && static_cast<std::int64_t>(out.size()) >= levels) break;
@@ -122,42 +122,56 @@ std::string Adapter::interpolate(const std::string& message) {
     return out;
 }
 
-std::string Adapter::run_console_line(const std::string& line) {
+std::string Adapter::run_script_line(const std::string& line) {
     std::vector<script::ParseError> errors;
     const auto command = script::parse_line(line, "console", 1, errors);
     if (!errors.empty()) throw RequestError(errors.front().message + " (column " + std::to_string(errors.front().where.col) + ")");
     if (!command) return {};
-    console_.clear();
-    capturing_ = true;
     const auto outcome = session_->execute(*command);
-    capturing_ = false;
-    std::string text = std::move(console_);
-    console_.clear();
-    if (outcome.status != script::Session::Status::Ok) throw RequestError(text + outcome.message);
-    while (!text.empty() && text.back() == '\n') text.pop_back();
-    return text;
+    if (outcome.status != script::Session::Status::Ok) throw RequestError(outcome.message);
+    return {};
 }
 
 void Adapter::evaluate(const Json& args, Json& body) {
     session();
     const std::string expression = need_string(args, "expression");
     const std::string context = opt_string(args, "context").value_or("repl");
-    if (context != "repl") {
-        body = {{"result", value_text(expression)}, {"variablesReference", 0}};
-        return;
-    }
-    // The console: a value if the text is one, else a command of the language (press, expect,
-    // print, run ...); a command that ran the machine shows where it is now.
     std::string error;
-    if (const auto v = expression_value(session_->debugger(), expression, error)) {
+    if (context != "repl") {
+        const auto v = expression_value(session_->debugger(), expression, error);
+        if (!v) throw RequestError(error);
         body = {{"result", *v}, {"variablesReference", 0}};
         return;
     }
+    // The debug console: one word that is a value shows it (YAC, HL, word[1B30H]); anything else
+    // is a line for the debugger's console (break, x, info 8279, finish, ...) or the command
+    // language (press, type, expect, print display, ...).
+    std::string word = expression.substr(0, expression.find_first_of(" \t"));
+    const bool one_word = expression.find_first_not_of(" \t", word.size()) == std::string::npos;
+    bool command = !one_word;
+    for (const std::string& c : console_->complete(word, true)) command = command || to_upper(c) == to_upper(word);
+    if (!command)
+        if (const auto v = expression_value(session_->debugger(), expression, error)) {
+            body = {{"result", *v}, {"variablesReference", 0}};
+            return;
+        }
     if (run_.active) throw RequestError("the program is running: pause it before a console command");
     const std::uint64_t before = machine().now();
-    const std::string text = run_console_line(expression);
+    const std::uint16_t pc = machine().cpu().regs().pc;
+    const int errors = console_->errors();
+    capturing_ = true;  // the console gathers the debugger's output itself
+    std::string text = console_->execute(expression);
+    capturing_ = false;
+    captured_.clear();
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    const bool moved = machine().now() != before || machine().cpu().regs().pc != pc;
+    if (console_->errors() > errors) {
+        if (moved) stopped("step", "after the console command");
+        throw RequestError(text);
+    }
     body = {{"result", text.empty() ? "ok" : text}, {"variablesReference", 0}};
-    if (machine().now() != before) stopped("step", "after the console command");
+    // A command that ran the machine: the editor shows where it is now.
+    if (moved) stopped("step", "after the console command");
 }
 
 void Adapter::source(const Json&, Json&) {
