@@ -74,6 +74,7 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
         symbols.add_table(rom.symbols);
         mark(map, rom.segments);
     }
+    std::optional<std::uint16_t> start;  // without the monitor, the program runs from here
     if (!config.firmware.empty()) {
         const auto fw = firmware::find(config.firmware);
         if (!fw) {
@@ -84,6 +85,7 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
         m.load(fw->segments);
         symbols.add_table(fw->symbols);
         mark(map, fw->segments);
+        if (!fw->segments.empty()) start = fw->segments.front().address;
     }
     if (!config.program.empty()) {
         std::filesystem::path path = config.program;
@@ -97,6 +99,8 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
             warnings.insert(warnings.end(), img.warnings.begin(), img.warnings.end());
             if (img.assembly) symbols.add_assembly(*img.assembly);
             mark(map, img.segments);
+            if (img.start) start = img.start;
+            else if (!img.segments.empty()) start = img.segments.front().address;
         } catch (const LoadError& e) {
             throw RequestError(e.what());
         } catch (const std::out_of_range& e) {
@@ -109,6 +113,7 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
         }
     }
     m.reset();
+    if (!config.monitor && start) m.cpu().regs().pc = *start;
     if (!config.keys.empty()) {
         std::string why;
         std::size_t at = 0;

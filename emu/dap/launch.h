@@ -22,7 +22,8 @@ struct LaunchConfig {
     std::string map;                // for a .hex: asm85's map (symbols and lines)
     std::string firmware;           // a built-in one ("thesis-fixed"), instead of or beside program
     std::vector<std::pair<std::string, std::string>> defines;  // for a .asm: NAME=VALUE
-    bool monitor = true;            // the monitor EPROM at 0000H
+    bool monitor = true;            // the monitor EPROM at 0000H; without it the program starts at
+                                    // its END address (or its first byte)
     periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
     std::string keys;               // typed after the boot ("R 7 0800 EXEC 0012")
     std::uint64_t boot = 0;         // T-states from RESET to the first key (default 500 ms)
