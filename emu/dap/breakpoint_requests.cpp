@@ -146,7 +146,7 @@ void Adapter::set_breakpoints(const Json& args, Json& body) {
     for (const Json& spec : opt_array(args, "breakpoints")) {
         Breakpoint b;
         b.id = bps_.next_id++;
-        b.line = static_cast<int>(need_int(spec, "line")) + (lines_start_at_1_ ? 0 : 1);
+        b.line = need_line(spec, "line", lines_start_at_1_);
         read_options(spec, b);
         resolve(b, path);
         if (b.verified) check_options(b);
@@ -273,8 +273,8 @@ void Adapter::set_data_breakpoints(const Json& args, Json& body) {
 void Adapter::breakpoint_locations(const Json& args, Json& body) {
     const std::string path = need_string(opt_object(args, "source"), "path");
     const int base = lines_start_at_1_ ? 0 : 1;
-    const int line = static_cast<int>(need_int(args, "line")) + base;
-    const int end = std::min(static_cast<int>(opt_int(args, "endLine").value_or(line - base)) + base, line + 10000);
+    const int line = need_line(args, "line", lines_start_at_1_);
+    const int end = args.contains("endLine") ? std::min(need_line(args, "endLine", lines_start_at_1_), line + 10000) : line;
     Json out = Json::array();
     if (session_) {
         const SymbolTable& t = session_->debugger().program();

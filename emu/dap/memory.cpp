@@ -61,7 +61,7 @@ void Adapter::disassemble(const Json& args, Json& body) {
     Machine& m = machine();
     const SymbolTable& symbols = session_->debugger().program();
     std::int64_t addr = address_of(need_string(args, "memoryReference")) + opt_int(args, "offset").value_or(0);
-    std::int64_t skip = opt_int(args, "instructionOffset").value_or(0);
+    std::int64_t skip = std::clamp<std::int64_t>(opt_int(args, "instructionOffset").value_or(0), -65536, 65536);
     const std::int64_t count = need_int(args, "instructionCount");
     if (count < 0 || count > 65536) throw RequestError("argument 'instructionCount' must be 0 to 65536");
     const bool resolve = opt_bool(args, "resolveSymbols").value_or(true);

@@ -1,5 +1,7 @@
 #include "emu/dap/protocol.h"
 
+#include <cstdlib>
+
 #include <fmt/format.h>
 
 namespace alp85::dap {
@@ -28,7 +30,18 @@ std::optional<std::int64_t> opt_int(const Json& args, std::string_view key) {
     const Json* v = find(args, key);
     if (!v) return std::nullopt;
     if (!v->is_number_integer()) wrong(key, "an integer");
+    // JSON's safe integers: sums of two arguments cannot overflow.
+    constexpr std::int64_t kSafe = (std::int64_t{1} << 53) - 1;
+    if (v->is_number_unsigned() ? v->get<std::uint64_t>() > static_cast<std::uint64_t>(kSafe)
+                                : std::abs(v->get<std::int64_t>()) > kSafe)
+        wrong(key, "an integer within +-(2^53 - 1)");
     return v->get<std::int64_t>();
+}
+
+int need_line(const Json& args, std::string_view key, bool from_1) {
+    const std::int64_t v = need_int(args, key) + (from_1 ? 0 : 1);
+    if (v < 1 || v > 10'000'000) throw RequestError(fmt::format("argument '{}': no line {}", key, v));
+    return static_cast<int>(v);
 }
 
 std::optional<bool> opt_bool(const Json& args, std::string_view key) {

@@ -27,6 +27,8 @@ std::optional<std::int64_t> opt_int(const Json& args, std::string_view key);
 std::optional<bool> opt_bool(const Json& args, std::string_view key);
 std::string need_string(const Json& args, std::string_view key);
 std::int64_t need_int(const Json& args, std::string_view key);
+// A line number, 1-based inside (the client's counts from 1 when `from_1`).
+int need_line(const Json& args, std::string_view key, bool from_1);
 // args[key] as an array or object (empty when absent); another type is a RequestError.
 const Json& opt_array(const Json& args, std::string_view key);
 const Json& opt_object(const Json& args, std::string_view key);

@@ -169,7 +169,7 @@ void Adapter::goto_targets(const Json& args, Json& body) {
     session();
     const Json& src = opt_object(args, "source");
     const std::string path = need_string(src, "path");
-    const int line = static_cast<int>(need_int(args, "line")) + (lines_start_at_1_ ? 0 : 1);
+    const int line = need_line(args, "line", lines_start_at_1_);
     Json targets = Json::array();
     const auto loc = session_->debugger().locate_line(path, line);
     if (loc.error.empty()) {
