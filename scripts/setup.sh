@@ -28,6 +28,7 @@ packages=(
   libcairo2-dev
   libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri
   xvfb xauth
+  libedit-dev
 )
 # node and npm: Debian's, unless the machine already has both (a nodejs package of another
 # origin brings its own npm, which Debian's npm would conflict with).

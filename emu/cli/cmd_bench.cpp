@@ -3,6 +3,7 @@
 // alp85 bench board [--tstates N]: the board with idle peripherals against the bare core.
 // alp85 bench machine: three axes stepping at 400 steps/s on the board, physical, ideal, no tool.
 // alp85 bench thesis: the thesis firmware's 100 mm diagonal at 1000 mm/min, physical and ideal.
+// alp85 bench debug: a run under the debugger against a plain script run; reverse-step at 60 s.
 #include <algorithm>
 #include <cstdio>
 #include <memory>
@@ -12,6 +13,7 @@
 
 #include "emu/bench/bench_board.h"
 #include "emu/bench/bench_cpu.h"
+#include "emu/bench/bench_debug.h"
 #include "emu/bench/bench_machine.h"
 #include "emu/bench/bench_thesis.h"
 #include "emu/cli/commands.h"
@@ -126,6 +128,37 @@ int run_bench_thesis() {
     }
     return 0;
 }
+int run_bench_debug() {
+    std::printf("workload:     thesis-fixed, (0100, 0100) to (3000, 2000) steps at 300 mm/min, physical motors\n");
+    const std::uint64_t window = 50ull * 3'072'000;
+    // The fastest of three (a busy host slows single runs unevenly).
+    DebugBenchResult r = run_debug_bench(window);
+    for (int i = 1; i < 3 && r.error.empty(); ++i) {
+        const DebugBenchResult again = run_debug_bench(window);
+        r.script_seconds = std::min(r.script_seconds, again.script_seconds);
+        r.debugger_seconds = std::min(r.debugger_seconds, again.debugger_seconds);
+        r.reverse_step_ms = std::min(r.reverse_step_ms, again.reverse_step_ms);
+        r.reverse_continue_ms = std::min(r.reverse_continue_ms, again.reverse_continue_ms);
+        r.exact = r.exact && again.exact;
+    }
+    if (!r.error.empty()) {
+        std::fprintf(stderr, "alp85 bench debug: the walk-through failed: %s\n", r.error.c_str());
+        return 1;
+    }
+    const double machine_s = static_cast<double>(r.tstates) / 3.072e6;
+    std::printf("(the fastest of three runs of each)\n");
+    std::printf("script:       %.1f s machine time in %.3f s CPU time: %.0fx real time\n", machine_s, r.script_seconds,
+                machine_s / r.script_seconds);
+    std::printf("debugger:     %.1f s machine time in %.3f s CPU time: %.0fx real time (history on, nothing armed)\n",
+                machine_s, r.debugger_seconds, machine_s / r.debugger_seconds);
+    std::printf("debugger / script: %.1f %% of the speed (target: at least 90 %%)\n", 100.0 * r.script_seconds / r.debugger_seconds);
+    std::printf("history:      %zu snapshots, %.1f MB, at %.3f s\n", r.snapshots, r.snapshot_bytes / 1e6,
+                static_cast<double>(r.reverse_at) / 3.072e6);
+    std::printf("reverse-step after 60 s: %.2f ms wall time (target: at most 50 ms); %s\n", r.reverse_step_ms,
+                r.exact ? "the state is the one saved before the step" : "NOT the state saved before the step");
+    std::printf("reverse-continue to the last OUT: %.2f ms wall time\n", r.reverse_continue_ms);
+    return r.exact ? 0 : 1;
+}
 }  // namespace
 
 void add_bench_command(CLI::App& app, int& status) {
@@ -146,6 +179,8 @@ void add_bench_command(CLI::App& app, int& status) {
     machine->callback([&status] { status = run_bench_machine(); });
     CLI::App* thesis = bench->add_subcommand("thesis", "The thesis firmware's 100 mm diagonal at 1000 mm/min");
     thesis->callback([&status] { status = run_bench_thesis(); });
+    CLI::App* debug = bench->add_subcommand("debug", "A run under the debugger against a plain script run; reverse-step at 60 s");
+    debug->callback([&status] { status = run_bench_debug(); });
 }
 
 }  // namespace alp85::cli

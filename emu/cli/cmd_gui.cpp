@@ -27,6 +27,13 @@ void add_gui_command(CLI::App& app, int& status) {
     cmd->add_option("--click", args->o.clicks,
                     "Then click these keypad buttons (R, 0-F, EXEC, NEXT, ..., RESET, VECT) with synthesized mouse "
                     "events (a test hook)");
+    cmd->add_flag("--debug", args->o.debug,
+                  "The debugger's panes (source, registers, disassembly, memory, chips, watches, steps and reverse "
+                  "steps, the command line: docs/debugging.md) in place of the machine tool's views");
+    cmd->add_option("--click-line", args->o.click_lines,
+                    "With --debug: then click the source rows of these FILE:LINE (sets breakpoints; a test hook)");
+    cmd->add_option("--debug-command", args->o.debug_commands,
+                    "With --debug: then run these debugger command lines (a test hook)");
     cmd->add_option("--screenshot", args->o.screenshot,
                     "Save the window as PNG when the script and the clicks are done, then quit");
     cmd->add_option("--expect-display", args->o.expect_display, "At exit the display must read this (else status 1)");

@@ -46,6 +46,7 @@ void add_script_command(CLI::App& app, int& status);
 void add_run_command(CLI::App& app, int& status);
 void add_gcode_command(CLI::App& app, int& status);
 void add_gui_command(CLI::App& app, int& status);
+void add_debug_command(CLI::App& app, int& status);
 void add_dap_command(CLI::App& app, int& status);
 
 }  // namespace alp85::cli

@@ -1,6 +1,7 @@
 // The Debug Adapter Protocol over the debugging API: requests (JSON) in, responses and events
-// out through a sink. It owns one script Session (its Machine and Debugger), so the console's
-// `evaluate` runs the command language on the very machine the editor shows.
+// out through a sink. It owns one DebugShell (a script Session - its Machine and Debugger - and
+// the debugger's console), so the debug console runs `alp85 debug`'s commands and the command
+// language on the very machine the editor shows.
 //
 // Single-threaded: a run is cut into slices of simulated time (`advance`), and the server reads
 // messages between slices, so `pause` is answered within a slice. Nothing a client sends can
@@ -22,8 +23,8 @@
 #include "emu/dap/breakpoints.h"
 #include "emu/dap/launch.h"
 #include "emu/dap/machine_view.h"
-#include "emu/debug/console.h"
 #include "emu/debug/debugger.h"
+#include "emu/script/debug_shell.h"
 #include "emu/script/session.h"
 
 namespace alp85::dap {
@@ -124,9 +125,6 @@ private:
     std::string interpolate(const std::string& message);
     // The value of an expression as text (watch, hover, log points); RequestError if it has none.
     std::string value_text(const std::string& expression);
-    // One line of the command language on the session (the console's fallback); RequestError
-    // with the message when it fails.
-    std::string run_script_line(const std::string& line);
     Json variables_of(std::int64_t ref);
 
     // ---- memory (memory.cpp) -------------------------------------------------------------------
@@ -142,12 +140,12 @@ private:
     bool configured_ = false;
     bool lines_start_at_1_ = true;
     LaunchConfig config_;
-    std::unique_ptr<script::Session> session_;
+    std::unique_ptr<script::DebugShell> shell_;
+    script::Session* session_ = nullptr;  // shell_'s
     ProgramMap map_;           // what is loaded where, for runaways and sources
     BreakpointTable bps_;      // every kind the client set
     std::vector<int> engine_points_;    // the Debugger's breakpoints and watchpoints made for bps_
     std::map<int, int> engine_to_dap_;  // their numbers -> DAP breakpoint ids
-    std::unique_ptr<debug::Console> console_;  // the debug console's commands (evaluate, repl)
     std::string captured_;     // the debugger's output while a console command runs
     bool capturing_ = false;   // evaluate: the debugger's output goes to captured_
     bool in_request_ = false;  // events wait in deferred_ until the response is sent

@@ -48,7 +48,7 @@ void Adapter::initialize(const Json& args, Json& body) {
 }
 
 void Adapter::launch(const Json& args, Json&) {
-    if (session_) throw RequestError("already launched (use 'restart')");
+    if (shell_) throw RequestError("already launched (use 'restart')");
     config_ = parse_launch(args);
     start_session();
     event("initialized");
@@ -62,28 +62,17 @@ void Adapter::start_session() {
     script::SessionOptions so;
     so.base_dir = config_.cwd;
     if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
-    auto s = std::make_unique<script::Session>(so);
-    s->debugger().listen([this](const debug::Event& e) { on_debug_event(e); });
+    auto shell = std::make_unique<script::DebugShell>(so);
+    shell->debugger().listen([this](const debug::Event& e) { on_debug_event(e); });
     std::vector<std::string> warnings;
-    load_program(config_, *s, map_, warnings);  // throws: the old session stays
+    load_program(config_, shell->session(), map_, warnings);  // throws: the old session stays
     engine_points_.clear();  // they belonged to the old session's Debugger
     engine_to_dap_.clear();
-    console_.reset();
-    session_ = std::move(s);
+    shell_ = std::move(shell);
+    session_ = &shell_->session();
     for (const std::string& w : warnings) output("stderr", w);
     debug::Debugger& d = session_->debugger();
     d.set_history(true);  // stepBack and reverseContinue from the first instruction on
-    // The debug console: the debugger's commands, and the command language for the rest.
-    console_ = std::make_unique<debug::Console>(d);
-    console_->set_fallback([this](std::string_view line, std::string& out) {
-        try {
-            out += run_script_line(std::string(line));
-            return true;
-        } catch (const RequestError& e) {
-            out += e.what();
-            return false;
-        }
-    });
     {
         Machine& m = session_->machine();
         m.set_trace([this, &m, &d](const I8085& cpu) {

@@ -122,16 +122,6 @@ std::string Adapter::interpolate(const std::string& message) {
     return out;
 }
 
-std::string Adapter::run_script_line(const std::string& line) {
-    std::vector<script::ParseError> errors;
-    const auto command = script::parse_line(line, "console", 1, errors);
-    if (!errors.empty()) throw RequestError(errors.front().message + " (column " + std::to_string(errors.front().where.col) + ")");
-    if (!command) return {};
-    const auto outcome = session_->execute(*command);
-    if (outcome.status != script::Session::Status::Ok) throw RequestError(outcome.message);
-    return {};
-}
-
 void Adapter::evaluate(const Json& args, Json& body) {
     session();
     const std::string expression = need_string(args, "expression");
@@ -149,7 +139,7 @@ void Adapter::evaluate(const Json& args, Json& body) {
     std::string word = expression.substr(0, expression.find_first_of(" \t"));
     const bool one_word = expression.find_first_not_of(" \t", word.size()) == std::string::npos;
     bool command = !one_word;
-    for (const std::string& c : console_->complete(word, true)) command = command || to_upper(c) == to_upper(word);
+    for (const std::string& c : shell_->console().complete(word, true)) command = command || to_upper(c) == to_upper(word);
     if (!command)
         if (const auto v = expression_value(session_->debugger(), expression, error)) {
             body = {{"result", *v}, {"variablesReference", 0}};
@@ -158,14 +148,14 @@ void Adapter::evaluate(const Json& args, Json& body) {
     if (run_.active) throw RequestError("the program is running: pause it before a console command");
     const std::uint64_t before = machine().now();
     const std::uint16_t pc = machine().cpu().regs().pc;
-    const int errors = console_->errors();
+    const int errors = shell_->console().errors();
     capturing_ = true;  // the console gathers the debugger's output itself
-    std::string text = console_->execute(expression);
+    std::string text = shell_->execute(expression);
     capturing_ = false;
     captured_.clear();
     while (!text.empty() && text.back() == '\n') text.pop_back();
     const bool moved = machine().now() != before || machine().cpu().regs().pc != pc;
-    if (console_->errors() > errors) {
+    if (shell_->console().errors() > errors) {
         if (moved) stopped("step", "after the console command");
         throw RequestError(text);
     }

@@ -41,7 +41,6 @@ std::pair<std::string_view, std::string_view> split_if(std::string_view s, int& 
     return {s, {}};
 }
 std::string hex4(std::uint16_t v) { return fmt::format("{:04X}H", v); }
-constexpr int kMaxCommandDepth = 64;  // breakpoint commands that continue into breakpoints with commands
 }  // namespace
 
 Console::Console(Debugger& d) : d_(d) {
@@ -101,6 +100,7 @@ const std::vector<Console::CommandDef>& Console::commands() {
         {"backtrace", {"bt", "where"}, &Console::cmd_backtrace, "backtrace: the routines called, from the return addresses on the stack"},
         {"info", {"i"}, &Console::cmd_info, "info registers|breakpoints|displays|display|8155|8279|axis [X|Y|Z]|line|frame"},
         {"history", {}, &Console::cmd_history, "history [N]: the last N instructions (default 10) with the registers each changed"},
+        {"expect", {}, &Console::cmd_expect, "expect EXPR: an error unless EXPR is not 0 (for batch sessions); the script language's expect forms work too"},
         {"help", {"h"}, &Console::cmd_help, "help [COMMAND]"},
         {"quit", {"q", "exit"}, &Console::cmd_quit, "quit"},
     };
@@ -166,7 +166,11 @@ std::string Console::execute(std::string_view line) {
         const std::string next = rest.substr(0, rest.find(' '));
         const bool script_form = (c->handler == &Console::cmd_print && (rest.starts_with("\"") || next == "DISPLAY" || next == "AXES" || next == "TIME")) ||
                                  (c->handler == &Console::cmd_set && (next == "MEM" || next == "REG")) ||
-                                 (c->handler == &Console::cmd_run && next == "UNTIL");
+                                 (c->handler == &Console::cmd_run && next == "UNTIL") ||
+                                 (c->handler == &Console::cmd_expect &&
+                                  (next == "DISPLAY" || next == "MEM" || next == "WORD" || next == "REG" || next == "FLAG" ||
+                                   next == "PORT" || next == "SYMBOL" || next == "TIME" || next == "HALTED" ||
+                                   next == "RUNNING" || next == "AXIS" || next == "COUNT" || next == "LOST"));
         if (script_form) c = nullptr;
     }
     if (!c) return run_fallback(t);
@@ -267,23 +271,31 @@ std::string Console::describe(const Stop& s) {
     return out;
 }
 
-std::string Console::report(const Stop& s, int depth) {
-    std::string out = describe(s);
-    if (depth >= kMaxCommandDepth) return out + "(breakpoint commands nested too deep: stopped)\n";
-    for (const std::string& c : d_.commands_for(s)) {
-        const std::string_view w = first_word(trim(c));
-        std::string err;
-        const CommandDef* def = find_command(w, err);
-        // A command that runs the machine ends the list, as in gdb; its own stop is reported.
-        if (def && (def->handler == &Console::cmd_continue || def->handler == &Console::cmd_step ||
-                    def->handler == &Console::cmd_next || def->handler == &Console::cmd_stepi ||
-                    def->handler == &Console::cmd_nexti || def->handler == &Console::cmd_finish)) {
-            if (def->handler == &Console::cmd_continue) return out + report(d_.cont(), depth + 1);
-            return out + execute(c);
+std::string Console::report(const Stop& first) {
+    // A breakpoint's commands run after its report. One that runs the machine ends the list, as in
+    // gdb, and reports its own stop; continue goes on in this loop (a log point, hit after hit).
+    std::string out;
+    Stop s = first;
+    for (;;) {
+        out += describe(s);
+        bool again = false;
+        for (const std::string& c : d_.commands_for(s)) {
+            std::string err;
+            const CommandDef* def = find_command(first_word(trim(c)), err);
+            if (def && def->handler == &Console::cmd_continue) {
+                s = d_.cont();
+                again = true;
+                break;
+            }
+            out += execute(c);
+            if (def && (def->handler == &Console::cmd_step || def->handler == &Console::cmd_next ||
+                        def->handler == &Console::cmd_stepi || def->handler == &Console::cmd_nexti ||
+                        def->handler == &Console::cmd_finish || def->handler == &Console::cmd_until ||
+                        def->handler == &Console::cmd_advance))
+                break;
         }
-        out += execute(c);
+        if (!again) return out;
     }
-    return out;
 }
 
 // ---- breakpoints and watchpoints ------------------------------------------------------------------
@@ -341,42 +353,58 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
     std::string_view w = trim(what_text, &wcol);
     if (w.empty()) return error(col, "expected what to watch: memory (YAC, word YAC, 1B30H..1B35H), port N, axis X count, 8155 porta, 8279 fifo");
     std::vector<std::string> words;
-    {
-        std::istringstream in{std::string(w)};
-        for (std::string s; in >> s;) words.push_back(to_upper(s));
+    std::vector<int> cols;  // of each word in the line
+    for (std::size_t i = 0; i < w.size();) {
+        while (i < w.size() && std::isspace(static_cast<unsigned char>(w[i]))) ++i;
+        const std::size_t start = i;
+        while (i < w.size() && !std::isspace(static_cast<unsigned char>(w[i]))) ++i;
+        if (i > start) {
+            words.push_back(to_upper(w.substr(start, i - start)));
+            cols.push_back(wcol + static_cast<int>(start));
+        }
     }
     WatchSpec spec;
     spec.kind = kind;
-    auto bad = [&](std::string msg) { return error(wcol, std::move(msg)); };
+    auto bad = [&](std::string msg, std::size_t word = 0) {
+        return error(word < cols.size() ? cols[word] : wcol + static_cast<int>(w.size()), std::move(msg));
+    };
+    // A port or value: a number, a symbol, or hex without its leading 0 (F9H: no symbol is named so).
+    auto byte_value = [&](const std::string& text) -> std::optional<std::int64_t> {
+        if (auto v = parse_int(text)) return v;
+        if (auto v = d_.program().value_of(text)) return *v;
+        if (text.size() > 1 && text.back() == 'H') return parse_int("0" + text);
+        return std::nullopt;
+    };
     const bool memory_only = kind != WatchKind::Write;
     if (words[0] == "PORT") {
         if (memory_only) return bad("rwatch and awatch watch memory; 'watch port N [in|out]' watches a port");
-        if (words.size() < 2) return bad("expected a port number: watch port F9H [in|out] [== VALUE]");
-        const auto p = parse_int(words[1]);
-        if (!p || *p < 0 || *p > 255) return bad(fmt::format("bad port '{}' (00H-FFH)", words[1]));
+        if (words.size() < 2) return bad("expected a port number: watch port F9H [in|out] [== VALUE]", 1);
+        const auto p = byte_value(words[1]);
+        if (!p || *p < 0 || *p > 255) return bad(fmt::format("bad port '{}' (00H-FFH)", words[1]), 1);
         spec.kind = WatchKind::Port;
         spec.first = spec.last = static_cast<std::uint16_t>(*p);
         std::size_t i = 2;
         if (i < words.size() && (words[i] == "IN" || words[i] == "OUT")) spec.dir = words[i++] == "IN" ? PortDir::In : PortDir::Out;
         if (i < words.size() && (words[i] == "==" || words[i] == "=" || words[i] == "VALUE")) {
-            if (i + 1 >= words.size()) return bad("expected a value after ==");
-            const auto v = parse_int(words[i + 1]);
-            if (!v || *v < 0 || *v > 255) return bad(fmt::format("bad value '{}' (00H-FFH)", words[i + 1]));
+            if (i + 1 >= words.size()) return bad("expected a value after ==", i + 1);
+            const auto v = byte_value(words[i + 1]);
+            if (!v || *v < 0 || *v > 255) return bad(fmt::format("bad value '{}' (00H-FFH)", words[i + 1]), i + 1);
             spec.value = static_cast<std::uint8_t>(*v);
             i += 2;
         }
-        if (i != words.size()) return bad(fmt::format("unexpected '{}'", words[i]));
-        spec.what = fmt::format("port {:02X}H{}", spec.first, spec.value ? fmt::format(" == {:02X}H", *spec.value) : "");
+        if (i != words.size()) return bad(fmt::format("unexpected '{}'", words[i]), i);
+        spec.what = fmt::format("port {:02X}H{}{}", spec.first, spec.dir == PortDir::Out ? " out" : spec.dir == PortDir::In ? " in" : "",
+                                spec.value ? fmt::format(" == {:02X}H", *spec.value) : "");
     } else if (words[0] == "AXIS") {
         if (memory_only) return bad("rwatch and awatch watch memory; 'watch axis X count' watches the machine tool");
         if (words.size() != 3 || words[1].size() != 1 || words[1][0] < 'X' || words[1][0] > 'Z')
-            return bad("expected: watch axis X|Y|Z steps|count|lost|endstop");
+            return bad("expected: watch axis X|Y|Z steps|count|lost|endstop", 1);
         spec.kind = WatchKind::Tool;
         spec.axis = static_cast<periph::MachineTool::Axis>(words[1][0] - 'X');
         static const std::map<std::string, ToolQuantity> q = {
             {"STEPS", ToolQuantity::Steps}, {"COUNT", ToolQuantity::Count}, {"LOST", ToolQuantity::Lost}, {"ENDSTOP", ToolQuantity::EndStop}};
         const auto it = q.find(words[2]);
-        if (it == q.end()) return bad(fmt::format("no machine-tool quantity '{}' (steps, count, lost, endstop)", words[2]));
+        if (it == q.end()) return bad(fmt::format("no machine-tool quantity '{}' (steps, count, lost, endstop)", words[2]), 2);
         spec.quantity = it->second;
         spec.what = fmt::format("axis {} {}", words[1], to_upper(words[2]) == "ENDSTOP" ? "end stop" : std::string(trim(words[2])));
         std::transform(spec.what.begin(), spec.what.end(), spec.what.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -391,7 +419,7 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
         const auto it = words.size() == 2 ? table.find(words[1]) : table.end();
         if (it == table.end())
             return bad(words[0] == "8155" ? "expected: watch 8155 porta|portb|portc|command|timer|timerout"
-                                          : "expected: watch 8279 fifo|status");
+                                          : "expected: watch 8279 fifo|status", 1);
         spec.kind = WatchKind::Chip;
         spec.reg = it->second;
         std::string r = words[1];
@@ -413,7 +441,7 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
             int tcol = at;
             text = trim(text, &tcol);
             ExprError err;
-            const auto e = Expr::parse(text, d_.program(), err, Expr::Names::SymbolsFirst, tcol - 1);
+            const auto e = Expr::parse(text, d_.program(), err, Expr::Names::SymbolsFirst, tcol - 1, &vars_);
             if (!e) return error(err.col, err.message);
             out = e->eval(d_.machine());
             if (out < 0 || out > 0xFFFF) return error(tcol, fmt::format("address {} is outside 0000H-FFFFH", out));

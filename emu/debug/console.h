@@ -55,6 +55,10 @@ public:
     std::vector<std::string> complete(std::string_view word, bool first_word) const;
     // The stop as the console reports it (header, source line, displays); no commands run.
     std::string describe(const Stop& s);
+    // What `info WHAT` shows (registers, 8155, 8279, axis, breakpoints, ...), for panes.
+    std::string info(std::string_view what) { return cmd_info(what, 1); }
+    // A line of a loaded program's source (read once, kept), or nullopt.
+    std::optional<std::string> source_line(const SourceLine& l);
 
 private:
     struct Display {
@@ -73,9 +77,8 @@ private:
     const CommandDef* find_command(std::string_view word, std::string& error) const;
 
     std::string error(int col, std::string message);
-    std::string report(const Stop& s, int depth = 0);  // describe + the breakpoint's commands
+    std::string report(const Stop& s);  // describe, then the breakpoint's commands
     std::string location_lines(std::uint16_t pc);
-    std::optional<std::string> source_line(const SourceLine& l);
     std::string run_fallback(std::string_view line);
     std::string format_value(std::int64_t v, int width, char fmt) const;
     std::optional<int> number_arg(std::string_view& args, int& col, std::string& err);
@@ -118,6 +121,7 @@ private:
     std::string cmd_backtrace(std::string_view a, int col);
     std::string cmd_info(std::string_view a, int col);
     std::string cmd_history(std::string_view a, int col);
+    std::string cmd_expect(std::string_view a, int col);
     std::string cmd_help(std::string_view a, int col);
     std::string cmd_quit(std::string_view a, int col);
     // info ...
@@ -135,6 +139,7 @@ private:
     SourceReader read_source_;
     std::map<std::string, std::vector<std::string>> sources_;  // file -> lines
     std::vector<Display> displays_;
+    Expr::Variables vars_;  // set $NAME = EXPR
     int last_display_ = 0;
     int print_count_ = 0;
     bool quit_ = false;

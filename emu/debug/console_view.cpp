@@ -38,6 +38,7 @@ char take_format(std::string_view& a, int& col) {
 }  // namespace
 
 std::string Console::format_value(std::int64_t v, int width, char f) const {
+    if (width == 8 && (v < -128 || v > 255)) width = 16;  // byte arithmetic that carried beyond a byte
     const auto u = static_cast<std::uint64_t>(v) & (width == 8 ? 0xFFu : 0xFFFFu);
     const bool in_range = v >= -(1 << (width - 1)) && v < (1 << width);
     switch (f) {
@@ -57,7 +58,7 @@ std::string Console::cmd_print(std::string_view a, int col) {
     const char f = take_format(a, col);
     if (a.empty()) return error(col, "expected an expression");
     ExprError err;
-    const auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1);
+    const auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1, &vars_);
     if (!e) return error(err.col, err.message);
     try {
         const std::int64_t v = e->eval(d_.machine());
@@ -85,12 +86,24 @@ std::string Console::cmd_set(std::string_view a, int col) {
     ExprError err;
     int lcol = col;
     const std::string_view lhs = trim_view(a.substr(0, eq), &lcol);
-    const auto target = Expr::parse(lhs, d_.program(), err, Expr::Names::RegistersFirst, lcol - 1);
-    if (!target) return error(err.col, err.message);
-    if (!target->assignable()) return error(lcol, fmt::format("'{}' cannot be set (a register, a flag or memory can)", lhs));
     int rcol = col + static_cast<int>(eq) + 1;
     const std::string_view rhs = trim_view(a.substr(eq + 1), &rcol);
-    const auto value = Expr::parse(rhs, d_.program(), err, Expr::Names::RegistersFirst, rcol - 1);
+    // set $NAME = EXPR: a convenience variable (not a register's or flag's name).
+    if (lhs.size() > 1 && lhs.front() == '$' && !register_named(to_upper(lhs.substr(1))) && !flag_named(to_upper(lhs.substr(1))) &&
+        std::all_of(lhs.begin() + 1, lhs.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; })) {
+        const auto value = Expr::parse(rhs, d_.program(), err, Expr::Names::RegistersFirst, rcol - 1, &vars_);
+        if (!value) return error(err.col, err.message);
+        try {
+            vars_[to_upper(lhs.substr(1))] = value->eval(d_.machine());
+        } catch (const ExprError& x) {
+            return error(rcol + x.col - 1, x.message);
+        }
+        return {};
+    }
+    const auto target = Expr::parse(lhs, d_.program(), err, Expr::Names::RegistersFirst, lcol - 1, &vars_);
+    if (!target) return error(err.col, err.message);
+    if (!target->assignable()) return error(lcol, fmt::format("'{}' cannot be set (a register, a flag or memory can)", lhs));
+    const auto value = Expr::parse(rhs, d_.program(), err, Expr::Names::RegistersFirst, rcol - 1, &vars_);
     if (!value) return error(err.col, err.message);
     try {
         const std::string e = target->assign(d_.machine(), value->eval(d_.machine()));
@@ -100,6 +113,20 @@ std::string Console::cmd_set(std::string_view a, int col) {
     }
     d_.state_changed();
     return {};
+}
+
+std::string Console::cmd_expect(std::string_view a, int col) {
+    if (a.empty()) return error(col, "expected an expression: expect EXPR");
+    ExprError err;
+    const auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1, &vars_);
+    if (!e) return error(err.col, err.message);
+    try {
+        if (e->eval(d_.machine()) != 0) return {};
+    } catch (const ExprError& x) {
+        return error(col + x.col - 1, x.message);
+    }
+    return error(col, fmt::format("expectation failed: {} is 0 (false) at T = {}, PC = {:04X}H", a, d_.machine().now(),
+                                  d_.machine().cpu().regs().pc));
 }
 
 std::string Console::show_displays() {
@@ -118,7 +145,7 @@ std::string Console::cmd_display(std::string_view a, int col) {
     const char f = take_format(a, col);
     if (a.empty()) return show_displays();
     ExprError err;
-    auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1);
+    auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1, &vars_);
     if (!e) return error(err.col, err.message);
     displays_.push_back({++last_display_, f, std::move(*e)});
     const Display& d = displays_.back();
@@ -167,7 +194,7 @@ std::string Console::cmd_x(std::string_view a, int col) {
     std::uint16_t addr = next_x_;
     if (!a.empty()) {
         ExprError err;
-        const auto e = Expr::parse(a, d_.program(), err, Expr::Names::SymbolsFirst, col - 1);
+        const auto e = Expr::parse(a, d_.program(), err, Expr::Names::SymbolsFirst, col - 1, &vars_);
         if (!e) return error(err.col, err.message);
         addr = static_cast<std::uint16_t>(e->eval(d_.machine()));
     }

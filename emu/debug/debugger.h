@@ -214,9 +214,10 @@ public:
     // earlier instruction since history began: memory, chips, machine tool and time included.
     void set_history(bool on, std::uint64_t interval = kHistoryInterval);
     bool history() const { return history_on_; }
-    // The machine was changed outside its run (set, load, reset, restore): history after now is
-    // no longer this timeline's, and a snapshot is taken now.
-    void state_changed();
+    // The machine was changed outside its run (set, load, reset): history after now is no longer
+    // this timeline's, and a snapshot is taken now. `new_timeline` (a snapshot restored: the
+    // machine's past is another run's): all history goes.
+    void state_changed(bool new_timeline = false);
     Stop reverse_stepi();
     Stop reverse_step();      // as reverse_stepi (asm: a line is an instruction)
     Stop reverse_next();      // back one instruction of this routine (a routine called is undone whole)
@@ -229,7 +230,7 @@ public:
     std::size_t history_snapshots() const;
     // True while the machine re-executes the past (front ends keep quiet about what it does again).
     bool replaying() const { return replaying_; }
-    static constexpr std::uint64_t kHistoryInterval = 30'720;  // 10 ms simulated
+    static constexpr std::uint64_t kHistoryInterval = 768'000;  // 250 ms simulated: a few per cent of a run's time
 
     // ---- breakpoints and watchpoints -------------------------------------------------------------
     // A location: a symbol or expression ("OUT", "OUT+3", "0B2CH", "*0B2CH") or FILE:LINE. A line

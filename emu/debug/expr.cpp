@@ -1,5 +1,6 @@
 #include "emu/debug/expr.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 
@@ -64,8 +65,9 @@ std::uint16_t read_register(const Machine& m, RegId r) {
 // Recursive descent, one level per precedence (C's order).
 class ExprParser {
 public:
-    ExprParser(std::string_view text, const SymbolTable& symbols, Expr::Names names, int col_base, ExprError& error)
-        : s_(text), symbols_(symbols), names_(names), base_(col_base), error_(error) {}
+    ExprParser(std::string_view text, const SymbolTable& symbols, Expr::Names names, int col_base, ExprError& error,
+               const Expr::Variables* variables)
+        : s_(text), symbols_(symbols), names_(names), base_(col_base), error_(error), vars_(variables) {}
 
     std::optional<Expr> run() {
         Expr e;
@@ -114,7 +116,11 @@ private:
             case K::Flag:
             case K::Mem8: return 8;
             case K::Number: return x.value >= -128 && x.value <= 255 ? 8 : 16;
-            default: return 16;
+            case K::Time: return 16;
+            case K::Lt: case K::Le: case K::Gt: case K::Ge: case K::Eq: case K::Ne: case K::Not: case K::And: case K::Or:
+                return 8;  // 0 or 1
+            case K::Neg: case K::Compl: return width_of(x.a);
+            default: return std::max(width_of(x.a), x.b >= 0 ? width_of(x.b) : 8);  // arithmetic: its operands' widest
         }
     }
 
@@ -204,6 +210,9 @@ private:
             std::size_t j = i_;
             while (j < s_.size() && std::isalnum(static_cast<unsigned char>(s_[j]))) ++j;
             const std::string_view word = s_.substr(i_, j - i_);
+            // 0800 would be decimal 800 = 0320H: on an 8085 surely meant as hex (the script language's rule).
+            if (word.size() > 1 && word[0] == '0' && std::all_of(word.begin(), word.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); }))
+                return fail(fmt::format("'{}' is ambiguous: write {}H for hex or {} for decimal", word, word, word.substr(word.find_first_not_of('0') == std::string_view::npos ? word.size() - 1 : word.find_first_not_of('0'))));
             const auto v = parse_int(word);
             if (!v) return fail(fmt::format("bad number '{}' (hex needs a leading digit and H: 0FFH)", word));
             i_ = j;
@@ -233,7 +242,10 @@ private:
         };
         if (dollar) {
             const int n = machine_name();
-            return n >= 0 ? n : fail(fmt::format("no register or flag '${}'", name), col);
+            if (n >= 0) return n;
+            if (vars_)
+                if (auto it = vars_->find(name); it != vars_->end()) return add({K::Number, it->second, -1, -1, col});
+            return fail(fmt::format("no register, flag or variable '${}'", name), col);
         }
         if (amp) {
             const int n = symbol();
@@ -249,13 +261,14 @@ private:
     Expr::Names names_;
     int base_;
     ExprError& error_;
+    const Expr::Variables* vars_;
     Expr* e_ = nullptr;
     std::size_t i_ = 0;
 };
 
 std::optional<Expr> Expr::parse(std::string_view text, const SymbolTable& symbols, ExprError& error, Names names,
-                                int col_base) {
-    return ExprParser(text, symbols, names, col_base, error).run();
+                                int col_base, const Variables* variables) {
+    return ExprParser(text, symbols, names, col_base, error, variables).run();
 }
 
 std::int64_t Expr::eval(const Machine& m) const { return eval(m, root_); }

@@ -2,7 +2,7 @@
 //
 //   numbers   12  0CH  0x0C  1100B  14Q  'A'          (as the command language writes them)
 //   registers A B C D E H L F M(= [HL]) BC DE HL SP PC PSW, or with a $ ($A, $PC)
-//   flags     S Z AC P CY V K (0 or 1), or $S ...     $T: the T-state counter
+//   flags     S Z AC P CY V K (0 or 1), or $S ...     $T: the T-state counter; $NAME: a variable
 //   symbols   OUT  YAC+1  &Z   (a bare name is a register or flag first: &NAME is always the symbol)
 //   memory    [HL]  byte[1B30H]  word[YAC]  (little-endian 16 bits)
 //   operators unary - ! ~; * / %; + -; << >>; < <= > >=; == !=; &; ^; |; &&; ||; parentheses
@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,8 +36,11 @@ public:
     enum class Names : std::uint8_t { RegistersFirst, SymbolsFirst };
 
     // nullopt and `error` (with its column, plus `col_base`) when `text` is not an expression.
+    // `variables`: the front end's convenience variables ($t0 = a number), read as constants.
+    using Variables = std::map<std::string, std::int64_t>;
     static std::optional<Expr> parse(std::string_view text, const SymbolTable& symbols, ExprError& error,
-                                     Names names = Names::RegistersFirst, int col_base = 0);
+                                     Names names = Names::RegistersFirst, int col_base = 0,
+                                     const Variables* variables = nullptr);
 
     // The value now; throws ExprError for a division by zero.
     std::int64_t eval(const Machine& m) const;

@@ -188,7 +188,7 @@ bool Debugger::Monitor::on_io(std::uint8_t port, std::uint8_t value, bool is_out
         if (w.dir != PortDir::Any && (w.dir == PortDir::Out) != is_out) continue;
         if (w.value && *w.value != value) continue;
         pending.push_back({0, StopReason::Watchpoint, w.number,
-                           {{w.number, w.what + (is_out ? " OUT" : " IN"), 0, value, 2, true}}, port, last_pc});
+                           {{w.number, w.what + (w.dir != PortDir::Any ? "" : is_out ? " (OUT)" : " (IN)"), 0, value, 2, true}}, port, last_pc});
     }
     return !pending.empty() && !hits;
 }

@@ -229,11 +229,15 @@ std::vector<std::string> Debugger::commands_for(const Stop& s) const {
 
 namespace {
 constexpr int kMaxFrames = 64;
-bool is_return_address(const Machine& m, const SymbolTable& program, std::uint16_t w) {
+// The routine a return address `w` came from: the target of the CALL (or RST) just before it;
+// nullopt when no call instruction is there. RST 7 (FFH) is what erased EPROM reads: not a call.
+std::optional<std::uint16_t> called_from(const Machine& m, const SymbolTable& program, std::uint16_t w) {
     const std::uint8_t call = m.peek(static_cast<std::uint16_t>(w - 3));
-    if (call == 0xCD || (call & 0xC7) == 0xC4) return true;
+    if (call == 0xCD || (call & 0xC7) == 0xC4)
+        return static_cast<std::uint16_t>(m.peek(static_cast<std::uint16_t>(w - 2)) | m.peek(static_cast<std::uint16_t>(w - 1)) << 8);
     const std::uint8_t rst = m.peek(static_cast<std::uint16_t>(w - 1));
-    return (rst & 0xC7) == 0xC7 && program.line_of(static_cast<std::uint16_t>(w - 1)).has_value();
+    if ((rst & 0xC7) == 0xC7 && rst != 0xFF && program.line_of(static_cast<std::uint16_t>(w - 1))) return rst & 0x38;
+    return std::nullopt;
 }
 std::optional<std::string> routine_of(const SymbolTable& program, std::uint16_t pc) {
     for (int back = 0; back < 1024 && back <= pc; ++back)
@@ -252,13 +256,26 @@ std::vector<Frame> Debugger::backtrace() const {
     std::vector<Frame> frames;
     const Registers& r = m_.cpu().regs();
     frames.push_back({r.pc, 0, routine_of(program_, r.pc), program_.line_of(r.pc)});
+    // A frame is accepted when its call's target is at or a little before the frame inside it
+    // (a routine's code follows its entry); the first call-like word that does not chain ends the
+    // stack: above it lie words of an older stack (the monitor's, before LXI SP). So does a gap of
+    // more than 16 words without a return address (no routine here keeps that much on the stack).
+    constexpr std::uint16_t kRoutineReach = 0x800;
+    constexpr std::uint32_t kMaxGap = 32;
+    std::uint32_t last_slot = r.sp;
+    std::uint16_t inner = r.pc;
     std::uint32_t slot = r.sp;
     for (int i = 0; i < 256 && frames.size() < kMaxFrames && slot + 1 <= 0xFFFF; ++i, slot += 2) {
         const auto s = static_cast<std::uint16_t>(slot);
         if (m_.bus().page_kind(s) != Bus::PageKind::Ram) break;  // off the end of the stack's memory
+        if (slot - last_slot > kMaxGap) break;
         const auto w = static_cast<std::uint16_t>(m_.peek(s) | m_.peek(static_cast<std::uint16_t>(s + 1)) << 8);
-        if (!is_return_address(m_, program_, w)) continue;
+        const auto target = called_from(m_, program_, w);
+        if (!target) continue;  // pushed data
+        if (*target > inner || inner - *target >= kRoutineReach) break;
         frames.push_back({w, s, routine_of(program_, static_cast<std::uint16_t>(w - 1)), program_.line_of(w)});
+        inner = w;
+        last_slot = slot + 2;
     }
     return frames;
 }

@@ -16,9 +16,10 @@ void Debugger::set_history(bool on, std::uint64_t interval) {
     if (on) history_->take(m_);
 }
 
-void Debugger::state_changed() {
+void Debugger::state_changed(bool new_timeline) {
     rebaseline();
     if (!history_on_) return;
+    if (new_timeline) history_->points.clear();
     history_->drop_from(m_.now());
     history_->take(m_);
 }

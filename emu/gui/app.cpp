@@ -21,6 +21,7 @@
 #include "emu/gui/board_view.h"
 #include "emu/gui/canvas.h"
 #include "emu/gui/controls.h"
+#include "emu/gui/debug_panes.h"
 #include "emu/gui/input.h"
 #include "emu/gui/pacer.h"
 #include "emu/gui/screenshot.h"
@@ -29,6 +30,7 @@
 #include "emu/program/firmware.h"
 #include "emu/script/parser.h"
 #include "emu/script/runner.h"
+#include "emu/script/debug_shell.h"
 #include "emu/script/session.h"
 
 namespace alp85::gui {
@@ -64,7 +66,8 @@ script::SessionOptions session_options(const GuiOptions& o) {
 
 class App {
 public:
-    App(const GuiOptions& o, SDL_Window* w) : o_(o), window_(w), session_(session_options(o)) {
+    App(const GuiOptions& o, SDL_Window* w)
+        : o_(o), window_(w), shell_(session_options(o)), session_(shell_.session()) {
         if (!o.out_dir.empty()) session_.set_out_dir(o.out_dir);
         machine().tool().set_model(o.motor);
         session_.debugger().listen([this](const debug::Event& e) { ui_.add_log(e.text); });
@@ -74,6 +77,10 @@ public:
         ui_.speed = o.speed;
         pacer_.set_speed(kSpeeds[static_cast<std::size_t>(o.speed)].factor, machine().now(), HostClock::now());
         clicks_ = o.clicks;
+        if (o.debug) {
+            shell_.debugger().set_history(true);
+            ui_.running = false;  // the debugger starts paused: Continue (or the prompt) runs it
+        }
     }
 
     int start();
@@ -95,7 +102,14 @@ private:
 
     const GuiOptions& o_;
     SDL_Window* window_;
-    script::Session session_;
+    script::DebugShell shell_;
+    script::Session& session_;
+    DebugPanes panes_;
+    std::size_t line_click_pos_ = 0, command_pos_ = 0;
+    bool debug_hooks_done() const {
+        return line_click_pos_ >= o_.click_lines.size() && command_pos_ >= o_.debug_commands.size();
+    }
+    void drive_debug_hooks();
     Toolpath path_;
     Backdrop backdrop_;
     Presser presser_;
@@ -205,6 +219,12 @@ void App::handle(const SDL_Event& e) {
             if (e.window.event == SDL_WINDOWEVENT_EXPOSED) expose_ = true, canvas_.expose();
             break;
         case SDL_MOUSEBUTTONDOWN:
+            if (o_.debug && e.button.button == SDL_BUTTON_LEFT) {
+                if (const auto row = source_row_at(static_cast<float>(e.button.x), static_cast<float>(e.button.y))) {
+                    toggle_breakpoint(panes_, shell_, *row);
+                    break;
+                }
+            }
             if (e.button.button == SDL_BUTTON_LEFT) {
                 mouse_key_ = key_at(static_cast<float>(e.button.x), static_cast<float>(e.button.y));
                 if (mouse_key_) presser_.down(*mouse_key_, machine());
@@ -268,6 +288,7 @@ void App::run_machine(HostClock::time_point until) {
         if (s.reason == debug::StopReason::Breakpoint || s.reason == debug::StopReason::Watchpoint) {
             ui_.running = false;
             ui_.add_log(fmt::format("stopped: {} at {:04X}H", debug::name(s.reason), m.cpu().regs().pc));
+            if (o_.debug) panes_.add_log(shell_.console().describe(s));
             break;
         }
         // Slices of about 2 ms of host time, so the budget is kept.
@@ -345,6 +366,49 @@ void App::drive_clicks() {
     click_down_ = !click_down_;
 }
 
+// The --debug test hooks, one a frame after the script and the keypad clicks: a click on the source
+// row of each FILE:LINE (a synthesized left-button press at the row's centre, hit-tested as a
+// user's), then each command line, as typed at the command pane.
+void App::drive_debug_hooks() {
+    if (!o_.debug) return;
+    if (line_click_pos_ < o_.click_lines.size()) {
+        const std::string& spec = o_.click_lines[line_click_pos_++];
+        const auto colon = spec.rfind(':');
+        const auto loc = colon == std::string::npos ? debug::Debugger::Location{{}, {}, "expected FILE:LINE", 0}
+                                                    : shell_.debugger().locate_line(spec.substr(0, colon), std::atoi(spec.c_str() + colon + 1));
+        if (!loc.error.empty()) {
+            std::cerr << "alp85 gui: --click-line " << spec << ": " << loc.error << '\n';
+            status_ = 2;
+            return;
+        }
+        const SourceLine l{shell_.debugger().program().line_of(loc.addresses.front())->file, std::atoi(spec.c_str() + colon + 1)};
+        panes_.show(l);
+        panes_.last_pc = machine().cpu().regs().pc;  // the pane stays on this line until the PC moves
+        const Vec2 c = source_row(l.line - panes_.first).centre();
+        for (const bool down : {true, false}) {
+            SDL_Event e{};
+            e.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
+            e.button.windowID = SDL_GetWindowID(window_);
+            e.button.button = SDL_BUTTON_LEFT;
+            e.button.state = down ? SDL_PRESSED : SDL_RELEASED;
+            e.button.clicks = 1;
+            e.button.x = static_cast<int>(c.x);
+            e.button.y = static_cast<int>(c.y);
+            SDL_PushEvent(&e);
+        }
+        return;
+    }
+    if (command_pos_ < o_.debug_commands.size()) {
+        const std::string& line = o_.debug_commands[command_pos_++];
+        const std::string out = shell_.execute(line);
+        panes_.add_log("(alp85) " + line);
+        panes_.add_log(out);
+        std::cout << "(alp85) " << line << '\n' << out << std::flush;
+        panes_.last_t = ~0ull;
+        if (shell_.console().errors()) status_ = 1;
+    }
+}
+
 // A borderless, transparent window over `r` that takes no input (the keypad's clicks are
 // hit-tested on the SDL events): one draw list per view. Layers are stacked in the order they are
 // first made (not NoBringToFrontOnFocus: ImGui puts such a new window behind all the others).
@@ -369,6 +433,19 @@ void App::draw() {
     ImGui::End();
     draw_display(begin_layer("##display", kDisplayRect), backdrop_, machine().display());
     ImGui::End();
+    if (o_.debug) {
+        draw_debug_panes(panes_, shell_, ui_.running);
+        if (panes_.run_requested != ui_.running) {
+            ui_.running = panes_.run_requested;
+            pacer_.rebase(machine().now(), HostClock::now());
+        }
+        panes_.run_requested = ui_.running;
+        if (frames_ % 15 == 0)
+            ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
+                                     script::Session::format_time(machine().now()), fps_);
+        for (const Action& a : controls_panel(ui_)) act(a);
+        return;
+    }
     const TableView view = table_view(machine(), path_);
     draw_table(begin_layer("##table", kTableRect), backdrop_, machine(), path_, view);
     ImGui::End();
@@ -403,8 +480,9 @@ int App::loop() {
         else if (ui_.running) run_machine(budget);
         const auto machine_end = HostClock::now();
         machine_s_ += std::chrono::duration<double>(machine_end - frame_start).count();
-        const bool done = !script_active_ && click_pos_ >= clicks_.size();
+        const bool done = !script_active_ && click_pos_ >= clicks_.size() && debug_hooks_done();
         if (!script_active_) drive_clicks();
+        if (!script_active_ && click_pos_ >= clicks_.size()) drive_debug_hooks();
         if (done) ++idle_frames_;
 
         ImGui_ImplOpenGL3_NewFrame();

@@ -22,6 +22,9 @@ struct GuiOptions {
     int speed = 1;                      // index into kSpeeds (controls.h)
     periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
     std::string out_dir;                // where the script's files go (as alp85 script --out-dir)
+    bool debug = false;                 // the debugger's panes in place of the machine tool's views
+    std::vector<std::string> click_lines;     // --debug test hook: click these FILE:LINE source rows
+    std::vector<std::string> debug_commands;  // then run these debugger command lines
 };
 
 // Opens the window and runs until it is closed or an exit condition of `o` is met. Returns the

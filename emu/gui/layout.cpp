@@ -113,4 +113,14 @@ Vec2 TableView::to_px(double x_mm, double y_mm, const Rect& r) const {
     return {static_cast<float>(r.x + r.w / 2 + (x_mm - cx) * scale), static_cast<float>(r.y + r.h / 2 - (y_mm - cy) * scale)};
 }
 
+Rect source_row(int i) {
+    return {kSourceRect.x + 4, kSourceRect.y + kSourceTop + static_cast<float>(i) * kSourceRowH, kSourceRect.w - 8, kSourceRowH};
+}
+
+std::optional<int> source_row_at(float x, float y) {
+    for (int i = 0; i < kSourceRows; ++i)
+        if (source_row(i).contains(x, y)) return i;
+    return std::nullopt;
+}
+
 }  // namespace alp85::gui

@@ -49,6 +49,8 @@ inline constexpr Rgb kPanel{36, 38, 44};
 inline constexpr Rgb kToolpath{80, 200, 255};
 inline constexpr Rgb kIdealLine{120, 255, 120};
 inline constexpr Rgb kTool{255, 0, 200};           // magenta: nothing else is drawn in it
+inline constexpr Rgb kCurrentLine{90, 80, 20};     // the debugger's source pane: the PC's line
+inline constexpr Rgb kBreakpoint{230, 40, 40};     // its breakpoint dots
 }  // namespace colour
 
 inline constexpr int kWindowWidth = 1280;
@@ -96,6 +98,21 @@ inline constexpr Rect kStripRect{528, 474, 744, 76};  // the whole X-Y travel (1
 inline constexpr Rect kAxesRect{520, 556, 760, 244};  // the axis panel (ImGui)
 inline constexpr Rect kControlsRect{0, 484, 520, 316};  // the controls (ImGui)
 inline constexpr float kTableMargin = 24;  // pixels kept free inside kTableRect
+
+// ---- the debugger's panes (alp85 gui --debug: in place of the machine tool's views) -----------------
+inline constexpr Rect kSourceRect{528, 8, 470, 400};
+inline constexpr Rect kRegistersRect{1006, 8, 266, 150};
+inline constexpr Rect kDisasmRect{1006, 166, 266, 242};
+inline constexpr Rect kMemoryRect{528, 416, 470, 120};
+inline constexpr Rect kChipsRect{1006, 416, 266, 120};
+inline constexpr Rect kWatchRect{528, 544, 300, 110};
+inline constexpr Rect kStepButtonsRect{836, 544, 436, 110};
+inline constexpr Rect kCommandRect{528, 662, 744, 130};
+inline constexpr float kSourceTop = 26, kSourceRowH = 16, kSourceDotX = 10, kSourceTextX = 64;
+inline constexpr int kSourceRows = 23;
+// Row `i` (0 = the first shown) of the source pane, and the row at a point.
+Rect source_row(int i);
+std::optional<int> source_row_at(float x, float y);
 
 struct Bounds {
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // mm

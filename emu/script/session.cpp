@@ -555,7 +555,7 @@ Session::Outcome Session::execute(const Command& c) {
     switch (c.op) {
         case Op::Load: case Op::Monitor: case Op::Firmware: case Op::Reset: case Op::Motor: case Op::Feedback:
         case Op::SetMem: case Op::SetReg: case Op::Restore: case Op::Option:
-            debugger_.state_changed();
+            debugger_.state_changed(c.op == Op::Restore);
             break;
         default: break;
     }

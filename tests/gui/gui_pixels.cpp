@@ -2,6 +2,10 @@
 //   gui_pixels SHOT.png --digits B1,B2,...,B8     each digit's segments (hex byte: bit0 = a ...
 //                                                  bit6 = g, bit7 = dp; "--" skips a digit): every
 //                                                  segment's centre is the lit or the unlit colour
+//   gui_pixels SHOT.png --current-row N --breakpoint-row M --text-in X,Y,W,H
+//                                                  the debugger's source pane (--debug): row N has
+//                                                  the current line's colour, row M a breakpoint dot
+//                                                  and not that colour; a pane's rect has text drawn
 //   gui_pixels SHOT.png --tool X,Y --bounds X0,Y0,X1,Y1 [--not-tool X,Y]
 //                                                  the tool's colour where the table view (fitted to
 //                                                  the bounds, mm) draws the table position X,Y
@@ -86,6 +90,34 @@ int main(int argc, char** argv) {
                                ((bits >> s & 1) ? " lit" : " unlit"));
                 expect(img, dp_centre(d), (bits & 0x80) ? colour::kSegmentLit : colour::kSegmentUnlit,
                        "digit " + std::to_string(d + 1) + " dp" + ((bits & 0x80) ? " lit" : " unlit"));
+            }
+        } else if (opt == "--current-row" || opt == "--breakpoint-row") {
+            const int row = std::stoi(items[0]);
+            const Rect r = source_row(row);
+            const Vec2 edge{r.x + 2, r.y + r.h / 2};
+            if (opt == "--current-row") {
+                expect(img, edge, colour::kCurrentLine, "source row " + items[0] + " is the current line");
+            } else {
+                expect(img, {r.x + kSourceDotX, r.y + r.h / 2}, colour::kBreakpoint, "source row " + items[0] + " has a breakpoint dot");
+                if (near(img.at(static_cast<int>(edge.x), static_cast<int>(edge.y)), colour::kCurrentLine)) {
+                    std::printf("FAIL source row %s is highlighted as the current line too\n", items[0].c_str());
+                    ++failures;
+                }
+            }
+        } else if (opt == "--text-in") {
+            // Text drawn: enough light pixels (ImGui's text is near white on the dark panes).
+            const int x0 = std::stoi(items[0]), y0 = std::stoi(items[1]), w = std::stoi(items[2]), h = std::stoi(items[3]);
+            int light = 0;
+            for (int y = y0; y < y0 + h; ++y)
+                for (int x = x0; x < x0 + w; ++x) {
+                    const Rgb c = img.at(x, y);
+                    light += c.r > 180 && c.g > 180 && c.b > 180;
+                }
+            if (light < 50) {
+                std::printf("FAIL no text in %d,%d %dx%d (%d light pixels)\n", x0, y0, w, h, light);
+                ++failures;
+            } else {
+                std::printf("ok   text in %d,%d %dx%d (%d light pixels)\n", x0, y0, w, h, light);
             }
         } else {
             std::vector<double>& v = opt == "--tool" ? tool : opt == "--not-tool" ? not_tool : bounds;

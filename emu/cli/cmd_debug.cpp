@@ -1,0 +1,193 @@
+// alp85 debug [FIRMWARE...] [--script FILE] [--batch]: the source-level debugger (docs/debugging.md)
+// on the script session's machine. Interactive with line editing, history and completion through
+// libedit; --script runs a file of commands first (echoed after the prompt, so a batch log reads as
+// a session), --batch ends there. Exit status: 0, 1 a command failed in a batch session, 2 usage.
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include <editline/readline.h>
+#include <fmt/format.h>
+
+#include "emu/cli/commands.h"
+#include "emu/program/firmware.h"
+#include "emu/script/debug_shell.h"
+
+namespace alp85::cli {
+
+namespace {
+debug::Debugger* g_debugger = nullptr;       // for the Ctrl-C handler
+script::DebugShell* g_completing = nullptr;  // for libedit's completion callbacks
+
+volatile std::sig_atomic_t g_sigints = 0;  // Ctrl-C presses so far
+
+extern "C" void on_sigint(int) {
+    g_sigints = g_sigints + 1;
+    if (g_debugger) g_debugger->interrupt();
+}
+
+std::vector<std::string> g_matches;
+char* next_match(const char*, int state) {
+    static std::size_t i = 0;
+    if (state == 0) i = 0;
+    return i < g_matches.size() ? strdup(g_matches[i++].c_str()) : nullptr;
+}
+char** complete(const char* text, int start, int) {
+    rl_attempted_completion_over = 1;
+    if (!g_completing) return nullptr;
+    g_matches = g_completing->console().complete(text, start == 0);
+    return rl_completion_matches(text, next_match);
+}
+
+// Runs lines until quit or the end; true when no line failed.
+bool run_lines(script::DebugShell& shell, std::istream& in, const std::string& file, bool echo) {
+    int n = 0;
+    for (std::string line; std::getline(in, line);) {
+        ++n;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        shell.set_origin(file, n);
+        if (echo) std::cout << shell.console().prompt() << line << '\n';
+        std::cout << shell.execute(line) << std::flush;
+        if (shell.console().quit_requested()) break;
+    }
+    shell.set_origin("", 0);
+    return shell.console().errors() == 0;
+}
+
+void interactive(script::DebugShell& shell) {
+    g_completing = &shell;
+    rl_attempted_completion_function = complete;
+    const std::string history_file = [] {
+        const char* home = std::getenv("HOME");
+        return home ? std::string(home) + "/.alp85_debug_history" : std::string();
+    }();
+    using_history();
+    if (!history_file.empty()) read_history(history_file.c_str());
+    std::string last;
+    while (!shell.console().quit_requested()) {
+        const std::string prompt = shell.console().prompt();
+        const std::sig_atomic_t sigints = g_sigints;
+        char* raw = readline(prompt.c_str());
+        if (!raw && g_sigints != sigints) {  // Ctrl-C at the prompt: a fresh line, as gdb does
+            std::cout << "^C\n" << std::flush;
+            continue;
+        }
+        if (!raw) {  // Ctrl-D
+            std::cout << "quit\n";
+            break;
+        }
+        std::string line(raw);
+        std::free(raw);
+        if (line.empty()) line = last;  // gdb: an empty line repeats the last command
+        else add_history(line.c_str());
+        last = line;
+        std::cout << shell.execute(line) << std::flush;
+    }
+    if (!history_file.empty()) write_history(history_file.c_str());
+    g_completing = nullptr;
+}
+}  // namespace
+
+void add_debug_command(CLI::App& app, int& status) {
+    struct Args {
+        std::vector<std::string> firmware;
+        std::string script;
+        bool batch = false;
+        bool no_history = false;
+        std::string out_dir;
+        std::string motor = "physical";
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("debug", "The source-level debugger (docs/debugging.md)");
+    cmd->add_option("firmware", args->firmware,
+                    "Built-in firmware (thesis-fixed, thesis) or program files (.asm, .hex) to load after the monitor");
+    cmd->add_option("--script", args->script, "Run the commands of FILE first (echoed as a session)");
+    cmd->add_flag("--batch", args->batch, "End after --script (or after standard input); status 1 if a command failed");
+    cmd->add_flag("--no-history", args->no_history, "No snapshots for reverse execution");
+    add_motor_option(cmd, args->motor);
+    cmd->add_option("--out-dir", args->out_dir, "Folder for the files save, restore, record and plot write");
+    cmd->footer(
+        "Examples:\n"
+        "  alp85 debug thesis-fixed\n"
+        "  alp85 debug thesis-fixed --script session.gdb --batch\n"
+        "Exit status: 0, 1 a command failed in a batch session, 2 a usage error.");
+    cmd->callback([args, &status] {
+        if (!args->script.empty() && !std::filesystem::is_regular_file(args->script)) {
+            std::cerr << fmt::format("alp85 debug:{}: error: no such script '{}'\n", column_of(args->script), args->script);
+            status = kUsageError;
+            return;
+        }
+        script::SessionOptions o;
+        o.base_dir = args->script.empty() ? std::filesystem::current_path()
+                                          : std::filesystem::absolute(args->script).parent_path();
+        if (firmware::have_monitor()) o.monitor_rom = firmware::monitor;
+        script::DebugShell shell(o);
+        if (!args->out_dir.empty()) {
+            std::error_code ec;
+            std::filesystem::create_directories(args->out_dir, ec);
+            shell.session().set_out_dir(std::filesystem::absolute(args->out_dir));
+        }
+        shell.session().machine().tool().set_model(motor_model_of(args->motor));
+        // The monitor first (the thesis firmware calls its routines), then the programs, then RESET.
+        std::vector<std::string> setup;
+        if (firmware::have_monitor()) setup.push_back("monitor");
+        for (const std::string& f : args->firmware) {
+            if (firmware::find(f)) {
+                setup.push_back("firmware " + f);
+                continue;
+            }
+            if (!std::filesystem::is_regular_file(f)) {
+                std::cerr << fmt::format("alp85 debug:{}: error: '{}' is neither built-in firmware (thesis-fixed, thesis) "
+                                         "nor a file\n",
+                                         column_of(f), f);
+                status = kUsageError;
+                return;
+            }
+            setup.push_back(fmt::format("load \"{}\"", std::filesystem::absolute(f).string()));
+        }
+        setup.push_back("reset");
+        for (const std::string& line : setup) {
+            const std::string out = shell.execute(line);
+            if (shell.console().errors()) {
+                std::cerr << out;
+                status = kUsageError;
+                return;
+            }
+        }
+        shell.debugger().set_history(!args->no_history);
+
+        debug::Debugger* previous = g_debugger;
+        g_debugger = &shell.debugger();
+        struct sigaction sa {};
+        sa.sa_handler = on_sigint;
+        sigemptyset(&sa.sa_mask);
+        struct sigaction old {};
+        sigaction(SIGINT, &sa, &old);
+
+        bool ok = true;
+        if (!args->script.empty()) {
+            std::ifstream in(args->script);
+            ok = run_lines(shell, in, args->script, true);
+        }
+        if (args->batch) {
+            if (args->script.empty()) ok = run_lines(shell, std::cin, "<stdin>", true);
+        } else if (!shell.console().quit_requested()) {
+            if (isatty(STDIN_FILENO)) {
+                interactive(shell);
+            } else {
+                run_lines(shell, std::cin, "", true);
+            }
+        }
+        sigaction(SIGINT, &old, nullptr);
+        g_debugger = previous;
+        status = args->batch && !ok ? 1 : 0;
+    });
+}
+
+}  // namespace alp85::cli

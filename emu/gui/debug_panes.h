@@ -1,0 +1,43 @@
+// The debugger's panes (`alp85 gui --debug`), in place of the machine tool's views: source with the
+// current line and breakpoints (a click on a line sets or clears one), registers and flags,
+// disassembly, memory, the 8155 and 8279, a watch list, step/next/finish and their reverse
+// buttons, and the debugger's command line. They drive the same script::DebugShell (and so the same
+// Machine and debug::Debugger) as `alp85 debug`: every button is a command line of its own.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "emu/program/symbols.h"
+#include "emu/script/debug_shell.h"
+
+namespace alp85::gui {
+
+struct DebugPanes {
+    std::string file;         // the source shown
+    int first = 1;            // its first line shown
+    std::uint16_t last_pc = 0xFFFF;
+    std::uint64_t last_t = ~0ull;
+    std::string command;      // the command line being typed
+    std::deque<std::string> log;
+    std::vector<std::string> watches{"word[YAC]", "word[XAC]", "word[1B30H]"};
+    std::string new_watch;
+    std::string memory = "1B00H";
+    std::string registers, chips;  // texts, refreshed when the machine moved
+    bool run_requested = false;    // Continue: the app runs the machine paced until a stop
+
+    // The source line shown in row i, or nullopt.
+    std::optional<SourceLine> line_in_row(int row) const;
+    // Shows `l` (the PC's line, or a line to click).
+    void show(const SourceLine& l);
+    void add_log(const std::string& text);
+};
+
+// Draws the panes; lines the user asked for (buttons, the command line) are run on `shell`.
+void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running);
+// A click on source row `row`: sets a breakpoint on that line, or deletes the one there.
+void toggle_breakpoint(DebugPanes& p, script::DebugShell& shell, int row);
+
+}  // namespace alp85::gui
