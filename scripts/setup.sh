@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 install_dap_client() {
   local want have
   want=$(sed -n 's/.*"@vscode\/debugadapter-testsupport": "\([^"]*\)".*/\1/p' tests/dap/package.json)
-  have=$(sed -n 's/.*"version": "\([^"]*\)".*/\1/p' tests/dap/node_modules/@vscode/debugadapter-testsupport/package.json 2>/dev/null | head -1)
+  have=$(sed -n 's/.*"version": "\([^"]*\)".*/\1/p' tests/dap/node_modules/@vscode/debugadapter-testsupport/package.json 2>/dev/null | head -1 || true)
   if [ -n "$have" ] && [ "$have" = "$want" ]; then
     echo "setup: @vscode/debugadapter-testsupport $have present"
     return
