@@ -86,6 +86,7 @@ Stop from_hit(Stop s, const Hit& h) {
 }  // namespace
 
 Stop Debugger::drive(std::uint64_t until, const std::function<bool()>& condition, bool skip_first) {
+    check_inputs();
     Monitor& mon = *monitor_;
     mon.skip_at = skip_first ? std::optional<std::uint64_t>(m_.now()) : std::nullopt;
     mon.stop_hit.reset();
@@ -141,6 +142,7 @@ Stop Debugger::run_until(std::uint64_t until, const std::function<bool()>& condi
 }
 
 Stop Debugger::run_to(std::uint16_t pc, std::uint64_t until) {
+    check_inputs();
     for (;;) {
         std::uint64_t chunk = until;
         if (history_on_) {
@@ -167,6 +169,7 @@ bool is_rst(std::uint8_t op) { return (op & 0xC7) == 0xC7; }
 }  // namespace
 
 Stop Debugger::stepi() {
+    check_inputs();
     if (history_on_ && history_->due(m_.now())) history_->take(m_);
     Monitor& mon = *monitor_;
     mon.skip_at = m_.now();

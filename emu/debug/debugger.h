@@ -299,6 +299,9 @@ private:
     // timeline), recording boundaries and/or hits on the way; nothing stops it.
     void replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits);
     Stop reverse_frame(bool finish);
+    // Inputs scheduled since the last run (a key pressed after going back): snapshots later than
+    // now belong to the old future and go.
+    void check_inputs();
     Stop no_history(std::string why);
     void arm();     // installs the monitor iff something needs it
     void rebaseline();  // watched values as they are now
@@ -319,6 +322,7 @@ private:
     std::unique_ptr<History> history_;
     bool history_on_ = false;
     bool replaying_ = false;
+    std::uint64_t seen_seq_ = 0;  // the input queue's numbering at the last run
     std::atomic<bool> interrupt_{false};
 };
 

@@ -53,9 +53,10 @@ bool Debugger::Monitor::before_instruction(const I8085& cpu) {
     const Registers& r = cpu.regs();
     if (!pending.empty() && hits) flush_pending(t);
     if (record) record->push_back({t, r, d_.m_.peek(r.pc)});
-    last_pc = r.pc;
     if (replay && !hits) return false;
+    // The machine tool and the chips changed during the instruction at last_pc (stop after it).
     if (state_watches_ && check_state(cpu)) return true;
+    last_pc = r.pc;
     if (any_bp_ && bp_[r.pc] && check_breakpoint(cpu)) return true;
     if (target && target(cpu)) {
         target_reached = true;

@@ -24,6 +24,13 @@ void Debugger::state_changed(bool new_timeline) {
     history_->take(m_);
 }
 
+void Debugger::check_inputs() {
+    const std::uint64_t seq = m_.inputs().next_seq();
+    if (seq == seen_seq_) return;
+    seen_seq_ = seq;
+    if (history_on_) history_->drop_from(m_.now() + 1);
+}
+
 std::uint64_t Debugger::history_start() const {
     return history_->points.empty() ? m_.now() : history_->points.front().t;
 }

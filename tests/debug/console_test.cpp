@@ -94,6 +94,30 @@ TEST_F(Thesis, ReverseContinueReturnsToThePreviousHitExactly) {
     EXPECT_EQ(m().now(), shell.debugger().history_start());
 }
 
+// Going back and pressing a key makes a new future: a later reverse-step lands in that future, not
+// in the first one (whose snapshots no longer hold).
+TEST_F(Thesis, AKeyPressedInThePastMakesANewFuture) {
+    run("break OUT");
+    run("press EXEC");
+    run("delete");
+    run("run 50ms");
+    run("reverse-continue");  // no breakpoints: back to the start of history
+    run("break OUT");
+    run("continue");
+    const std::uint64_t t_out = m().now();
+    run("delete");
+    run("press 5");  // during the motion: the key waits in the FIFO
+    run("run 50ms");
+    ASSERT_EQ(m().kdc().state().fifo_count, 1);
+    run("stepi");
+    const auto after = snap();
+    run("reverse-stepi");
+    run("stepi");
+    EXPECT_EQ(snap(), after);
+    EXPECT_EQ(m().kdc().state().fifo_count, 1);  // the key is in this future's past
+    EXPECT_GT(m().now(), t_out);
+}
+
 TEST_F(Thesis, ReverseFinishAndReverseNextGoBackOverWholeCalls) {
     run("break DELAY");
     run("press EXEC");
