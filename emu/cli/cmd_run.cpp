@@ -33,33 +33,16 @@ ParseError argument_error(std::string_view argument, int offset, std::string mes
     return {{"alp85 run", 1, column_of(argument) + offset}, std::move(message), command_line()};
 }
 
-// "R 7 0800 EXEC" -> R 7 0 8 0 0 EXEC: a word that is not a key name but is all hex digits is
-// typed digit by digit.
+// "R 7 0800 EXEC" -> R 7 0 8 0 0 EXEC (script::parse_key_list), a bad word pointed at.
 std::vector<script::KeyRef> expand_keys(const std::string& text, std::vector<ParseError>& errors) {
-    std::vector<script::KeyRef> keys;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && text[i] == ' ') ++i;
-        std::size_t j = i;
-        while (j < text.size() && text[j] != ' ') ++j;
-        if (j == i) break;
-        const std::string w = text.substr(i, j - i);
-        if (const auto k = script::parse_key(w)) {
-            keys.push_back(*k);
-        } else {
-            for (char ch : w) {
-                const auto digit = std::isxdigit(static_cast<unsigned char>(ch)) ? script::parse_key(std::string(1, ch))
-                                                                                : std::nullopt;
-                if (!digit) {
-                    errors.push_back(argument_error(text, static_cast<int>(i), fmt::format("unknown key '{}' in --keys", w)));
-                    return {};
-                }
-                keys.push_back(*digit);
-            }
-        }
-        i = j;
+    std::string why;
+    std::size_t at = 0;
+    auto keys = script::parse_key_list(text, why, at);
+    if (!keys) {
+        errors.push_back(argument_error(text, static_cast<int>(at), why + " in --keys"));
+        return {};
     }
-    return keys;
+    return *keys;
 }
 
 std::optional<std::uint64_t> time_argument(const std::string& text, const char* option, std::vector<ParseError>& errors) {

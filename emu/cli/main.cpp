@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     alp85::cli::add_script_command(app, status);
     alp85::cli::add_gui_command(app, status);
     alp85::cli::add_debug_command(app, status);
+    alp85::cli::add_dap_command(app, status);
 
     alp85::cli::set_command_line(argc, argv);
     try {

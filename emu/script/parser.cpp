@@ -769,6 +769,33 @@ std::optional<KeyRef> parse_key(std::string_view text) {
     return std::nullopt;
 }
 
+std::optional<std::vector<KeyRef>> parse_key_list(std::string_view text, std::string& error, std::size_t& offset) {
+    std::vector<KeyRef> keys;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        while (i < text.size() && text[i] == ' ') ++i;
+        std::size_t j = i;
+        while (j < text.size() && text[j] != ' ') ++j;
+        if (j == i) break;
+        const std::string_view w = text.substr(i, j - i);
+        if (const auto k = parse_key(w)) {
+            keys.push_back(*k);
+        } else {
+            for (char ch : w) {
+                const auto digit = std::isxdigit(static_cast<unsigned char>(ch)) ? parse_key(std::string(1, ch)) : std::nullopt;
+                if (!digit) {
+                    error = "unknown key '" + std::string(w) + "'";
+                    offset = i;
+                    return std::nullopt;
+                }
+                keys.push_back(*digit);
+            }
+        }
+        i = j;
+    }
+    return keys;
+}
+
 std::optional<Reg> parse_reg(std::string_view text) {
     static const std::map<std::string, Reg> regs = {
         {"A", Reg::A},   {"B", Reg::B},   {"C", Reg::C},   {"D", Reg::D},   {"E", Reg::E},

@@ -37,6 +37,10 @@ std::string ambiguous_address(std::string_view text);
 std::optional<Value> parse_value(std::string_view text, std::string_view what, bool address, std::string& error,
                                  int& error_col);
 std::optional<KeyRef> parse_key(std::string_view text);
+// Keys separated by spaces, as typed on the keypad: "R 7 0800 EXEC" is R 7 0 8 0 0 EXEC (a word
+// that is not a key name but is all hex digits is typed digit by digit). On error: nullopt, the
+// message, and the 0-based offset of the word in `text`.
+std::optional<std::vector<KeyRef>> parse_key_list(std::string_view text, std::string& error, std::size_t& offset);
 std::optional<Reg> parse_reg(std::string_view text);
 std::string_view reg_name(Reg r);
 

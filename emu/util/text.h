@@ -18,6 +18,13 @@ inline std::string to_upper(std::string_view s) {
     return u;
 }
 
+// ASCII lower case: protocol header names, file names compared without case.
+inline std::string to_lower(std::string_view s) {
+    std::string u(s);
+    std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return u;
+}
+
 // A file's extension in lower case, with its dot (".asm"): what decides how an image is read.
 inline std::string lower_extension(const std::filesystem::path& p) {
     std::string e = p.extension().string();

@@ -1,0 +1,171 @@
+// The Debug Adapter Protocol over the debugging API: requests (JSON) in, responses and events
+// out through a sink. It owns one DebugShell (a script Session - its Machine and Debugger - and
+// the debugger's console), so the debug console runs `alp85 debug`'s commands and the command
+// language on the very machine the editor shows.
+//
+// Single-threaded: a run is cut into slices of simulated time (`advance`), and the server reads
+// messages between slices, so `pause` is answered within a slice. Nothing a client sends can
+// end the session: malformed JSON, unknown commands, wrong argument types and requests out of
+// order all get an error response.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "emu/dap/breakpoints.h"
+#include "emu/dap/launch.h"
+#include "emu/dap/machine_view.h"
+#include "emu/debug/debugger.h"
+#include "emu/script/debug_shell.h"
+#include "emu/script/session.h"
+
+namespace alp85::dap {
+
+using Json = nlohmann::json;
+
+class Adapter {
+public:
+    using Sink = std::function<void(const Json&)>;
+
+    explicit Adapter(Sink sink);
+    ~Adapter();
+    Adapter(const Adapter&) = delete;
+    Adapter& operator=(const Adapter&) = delete;
+
+    // One message body from the client, answered whatever it holds.
+    void receive(std::string_view body);
+    // A frame whose header could not be read: an error response (request_seq 0).
+    void refuse_frame(const std::string& why);
+    // While a run is in progress: runs one slice. Returns how long (ms) the caller may wait for
+    // messages before the next slice: 0 to go on at once, more when pacing to real time.
+    int advance();
+    bool running() const { return run_.active; }
+    // The client said disconnect (answered): the server may close.
+    bool finished() const { return finished_; }
+
+private:
+    using Handler = void (Adapter::*)(const Json& args, Json& body);
+    static const std::map<std::string, Handler, std::less<>>& handlers();
+
+    // ---- messages (adapter.cpp) --------------------------------------------------------------
+    void dispatch(const Json& request);
+    void respond(const Json& request, Json body);
+    void error_response(std::int64_t request_seq, std::string_view command, const std::string& message);
+    void event(std::string_view name, Json body = Json::object());
+    void output(std::string_view category, const std::string& text);
+    void on_debug_event(const debug::Event& e);
+
+    // ---- session (session.cpp) ---------------------------------------------------------------
+    void initialize(const Json& args, Json& body);
+    void launch(const Json& args, Json& body);
+    void configuration_done(const Json& args, Json& body);
+    void restart(const Json& args, Json& body);
+    void disconnect(const Json& args, Json& body);
+    void terminate(const Json& args, Json& body);
+    void start_session();  // builds the machine from config_ (launch and restart)
+    void begin();          // after configurationDone: stop on entry or run
+    script::Session& session();  // throws RequestError before launch
+    Machine& machine() { return session().machine(); }
+
+    // ---- breakpoints (breakpoint_requests.cpp) -----------------------------------------------------
+    void set_breakpoints(const Json& args, Json& body);
+    void set_function_breakpoints(const Json& args, Json& body);
+    void set_instruction_breakpoints(const Json& args, Json& body);
+    void set_exception_breakpoints(const Json& args, Json& body);
+    void data_breakpoint_info(const Json& args, Json& body);
+    void set_data_breakpoints(const Json& args, Json& body);
+    void breakpoint_locations(const Json& args, Json& body);
+    void arm();  // the machine's breakpoints and watchpoints from the tables below
+    void resolve_breakpoints();  // binds every breakpoint to the program now loaded
+    void resolve(Breakpoint& b, const std::string& path);
+    bool check_options(Breakpoint& b);  // condition and hit condition; false: unverified, says why
+    Json breakpoint_json(const Breakpoint& b, const std::string& path) const;
+    // At a breakpoint hit: counts hits, writes log points; true when the run is to stop there
+    // (the ids of the breakpoints that stop it in `ids`).
+    bool stop_at_breakpoint(std::uint16_t pc, std::vector<int>& ids);
+    bool stop_at_data(const debug::Stop& s, std::vector<int>& ids);
+    void report(const debug::Stop& s, std::string_view step_reason);  // a finished step or reverse run
+
+    // ---- running (run.cpp) ---------------------------------------------------------------------
+    void continue_(const Json& args, Json& body);
+    void next(const Json& args, Json& body);
+    void step_in(const Json& args, Json& body);
+    void step_out(const Json& args, Json& body);
+    void pause(const Json& args, Json& body);
+    void step_back(const Json& args, Json& body);
+    void reverse_continue(const Json& args, Json& body);
+    void goto_targets(const Json& args, Json& body);
+    void goto_(const Json& args, Json& body);
+    void require_stopped();
+    void stopped(std::string_view reason, const std::string& description = {}, std::vector<int> hit_ids = {},
+                 const std::string& text = {});
+    void start_run();
+    void end_run();  // the run is over: the step's temporary breakpoint goes
+
+    // ---- state (state.cpp) ---------------------------------------------------------------------
+    void threads(const Json& args, Json& body);
+    void stack_trace(const Json& args, Json& body);
+    void scopes(const Json& args, Json& body);
+    void variables(const Json& args, Json& body);
+    void set_variable(const Json& args, Json& body);
+    void evaluate(const Json& args, Json& body);
+    void source(const Json& args, Json& body);
+    Json source_of(const std::string& file) const;  // a DAP Source for a file of the map
+    // A name the client may watch (a firmware variable, a symbol, an address): address and size.
+    std::optional<std::pair<std::uint16_t, std::uint16_t>> data_target(const std::string& name, std::int64_t ref);
+    // A log point's message with each {expression} replaced by its value.
+    std::string interpolate(const std::string& message);
+    // The value of an expression as text (watch, hover, log points); RequestError if it has none.
+    std::string value_text(const std::string& expression);
+    Json variables_of(std::int64_t ref);
+
+    // ---- memory (memory.cpp) -------------------------------------------------------------------
+    void read_memory(const Json& args, Json& body);
+    void write_memory(const Json& args, Json& body);
+    void disassemble(const Json& args, Json& body);
+    std::uint16_t address_of(const std::string& reference) const;  // "0x1B32", "1B32H", a symbol
+
+    Sink sink_;
+    std::int64_t seq_ = 1;
+    bool initialized_ = false;
+    bool finished_ = false;
+    bool configured_ = false;
+    bool lines_start_at_1_ = true;
+    LaunchConfig config_;
+    std::unique_ptr<script::DebugShell> shell_;
+    script::Session* session_ = nullptr;  // shell_'s
+    ProgramMap map_;           // what is loaded where, for runaways and sources
+    BreakpointTable bps_;      // every kind the client set
+    std::vector<int> engine_points_;    // the Debugger's breakpoints and watchpoints made for bps_
+    std::map<int, int> engine_to_dap_;  // their numbers -> DAP breakpoint ids
+    std::string captured_;     // the debugger's output while a console command runs
+    bool capturing_ = false;   // evaluate: the debugger's output goes to captured_
+    bool in_request_ = false;  // events wait in deferred_ until the response is sent
+    std::vector<Json> deferred_;
+
+    // A run in progress (continue, or a step over a call, or a step out).
+    struct Run {
+        bool active = false;
+        enum class Kind : std::uint8_t { Continue, Over, Out } kind = Kind::Continue;
+        std::uint16_t target = 0;   // Over/Out: the return address
+        std::uint16_t sp = 0;       // Over/Out: SP once returned (at least)
+        int temporary = 0;          // Over/Out: the Debugger's breakpoint at target
+        std::uint64_t started_at = 0;  // machine time at the start (real-time pacing)
+        double host_start = 0;         // host seconds at the start
+    } run_;
+    void run_until_return(std::uint16_t target, std::uint16_t sp, Run::Kind kind);
+    std::optional<std::uint16_t> runaway_;  // an instruction fetched where nothing is loaded
+    bool runaway_armed_ = true;             // off after a runaway until the PC is back in code
+    std::optional<std::uint16_t> stack_base_;  // SP as the last LXI SP / SPHL left it
+    bool resetting_sp_ = false;                // the instruction about to run sets SP
+};
+
+}  // namespace alp85::dap

@@ -1,0 +1,142 @@
+#include "emu/dap/launch.h"
+
+#include <fmt/format.h>
+
+#include "emu/board/key_press.h"
+#include "emu/program/firmware.h"
+#include "emu/program/image_loader.h"
+#include "emu/script/parser.h"
+#include "emu/util/text.h"
+
+namespace alp85::dap {
+namespace {
+
+std::uint64_t time_arg(const Json& args, std::string_view key, std::uint64_t fallback) {
+    const auto text = opt_string(args, key);
+    if (!text) return fallback;
+    const auto t = script::parse_time(*text);
+    if (!t) throw RequestError(fmt::format("argument '{}': bad time '{}' (a number with a unit: t, us, ms or s)", key, *text));
+    return *t;
+}
+
+void mark(ProgramMap& map, const std::vector<ImageSegment>& segments) {
+    for (const ImageSegment& s : segments)
+        for (std::size_t i = 0; i < s.bytes.size(); ++i) map.code.set((s.address + i) & 0xFFFF);
+}
+
+}  // namespace
+
+LaunchConfig parse_launch(const Json& args) {
+    if (!args.is_object()) throw RequestError("launch needs its arguments (an object)");
+    LaunchConfig c;
+    c.cwd = opt_string(args, "cwd").value_or(std::filesystem::current_path().string());
+    c.program = opt_string(args, "program").value_or("");
+    c.map = opt_string(args, "map").value_or("");
+    c.firmware = opt_string(args, "firmware").value_or("");
+    if (c.program.empty() && c.firmware.empty())
+        throw RequestError("launch needs 'program' (a .asm or .hex file) or 'firmware' (one built in, e.g. thesis-fixed)");
+    for (const auto& [name, value] : opt_object(args, "defines").items()) {
+        if (value.is_number_integer()) c.defines.emplace_back(name, std::to_string(value.get<std::int64_t>()));
+        else if (value.is_string()) c.defines.emplace_back(name, value.get<std::string>());
+        else throw RequestError(fmt::format("defines: '{}' must be a number or a string", name));
+    }
+    c.monitor = opt_bool(args, "monitor").value_or(true);
+    const std::string motor = opt_string(args, "motor").value_or("physical");
+    if (motor != "ideal" && motor != "physical") throw RequestError("argument 'motor' must be \"ideal\" or \"physical\"");
+    c.motor = motor == "ideal" ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical;
+    c.keys = opt_string(args, "keys").value_or("");
+    if (!c.keys.empty()) {
+        std::string why;
+        std::size_t at = 0;
+        if (!script::parse_key_list(c.keys, why, at)) throw RequestError(fmt::format("argument 'keys': {} at column {}", why, at + 1));
+    }
+    c.boot = time_arg(args, "bootTime", board::tstates_from_ms(500));
+    c.script = opt_string(args, "script").value_or("");
+    c.stop_on_entry = opt_bool(args, "stopOnEntry").value_or(false);
+    c.real_time = opt_bool(args, "realTime").value_or(true);
+    c.stop_on_runaway = opt_bool(args, "stopOnRunaway").value_or(true);
+    return c;
+}
+
+void load_program(const LaunchConfig& config, script::Session& session, ProgramMap& map,
+                  std::vector<std::string>& warnings) {
+    Machine& m = session.machine();
+    SymbolTable& symbols = session.debugger().program();
+    m.tool().set_model(config.motor);
+    map = {};
+    for (const board::MemoryRegion& r : m.memory_map())
+        if (r.kind == board::MemoryKind::Ram)
+            for (unsigned a = r.base; a < r.base + r.size; ++a) map.code.set(a);
+    if (config.monitor) {
+        if (!firmware::have_monitor()) throw RequestError("this alp85 was built without the monitor ROM (set \"monitor\": false)");
+        const firmware::Firmware rom = firmware::monitor();
+        m.load(rom.segments);
+        symbols.add_table(rom.symbols);
+        mark(map, rom.segments);
+    }
+    std::optional<std::uint16_t> start;  // without the monitor, the program runs from here
+    if (!config.firmware.empty()) {
+        const auto fw = firmware::find(config.firmware);
+        if (!fw) {
+            std::string names;
+            for (const auto& e : firmware::builtin()) names += (names.empty() ? "" : ", ") + std::string(e.name);
+            throw RequestError(fmt::format("no firmware '{}' in this alp85 (built in: {})", config.firmware, names));
+        }
+        m.load(fw->segments);
+        symbols.add_table(fw->symbols);
+        mark(map, fw->segments);
+        if (!fw->segments.empty()) start = fw->segments.front().address;
+    }
+    if (!config.program.empty()) {
+        std::filesystem::path path = config.program;
+        if (path.is_relative()) path = config.cwd / path;
+        map.program_path = path.string();
+        if (!std::filesystem::is_regular_file(path)) throw RequestError(fmt::format("no such file '{}'", path.string()));
+        LoadOptions lo;
+        lo.assembler.defines = config.defines;
+        try {
+            LoadedImage img = load_image(m, path, lo);
+            warnings.insert(warnings.end(), img.warnings.begin(), img.warnings.end());
+            if (img.assembly) symbols.add_assembly(*img.assembly);
+            mark(map, img.segments);
+            if (img.start) start = img.start;
+            else if (!img.segments.empty()) start = img.segments.front().address;
+        } catch (const LoadError& e) {
+            throw RequestError(e.what());
+        } catch (const std::out_of_range& e) {
+            throw RequestError(fmt::format("{}: {}", path.string(), e.what()));
+        }
+        if (!config.map.empty()) {
+            std::filesystem::path mp = config.map;
+            if (mp.is_relative()) mp = config.cwd / mp;
+            if (const std::string err = symbols.load_map_file(mp.string()); !err.empty()) throw RequestError(err);
+        }
+    }
+    m.reset();
+    if (!config.monitor && start) m.cpu().regs().pc = *start;
+    if (!config.keys.empty()) {
+        std::string why;
+        std::size_t at = 0;
+        std::uint64_t t = m.now() + config.boot;
+        const auto keys = script::parse_key_list(config.keys, why, at).value_or(std::vector<script::KeyRef>{});
+        for (const script::KeyRef& k : keys) {
+            switch (k.kind) {
+                case script::KeyRef::Kind::Matrix:
+                    m.key_at(k.key, true, t);
+                    m.key_at(k.key, false, t + kKeyHold);
+                    break;
+                case script::KeyRef::Kind::Reset:
+                    m.reset_key_at(true, t);
+                    m.reset_key_at(false, t + kKeyHold);
+                    break;
+                case script::KeyRef::Kind::Vect:
+                    m.vect_intr_at(true, t);
+                    m.vect_intr_at(false, t + kKeyHold);
+                    break;
+            }
+            t += kKeyHold + kKeyGap;
+        }
+    }
+}
+
+}  // namespace alp85::dap

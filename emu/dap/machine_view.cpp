@@ -1,0 +1,332 @@
+#include "emu/dap/machine_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "asm/isa.h"
+#include "emu/script/parser.h"
+#include "emu/util/text.h"
+#include "peripherals/seven_segment.h"
+
+namespace alp85::dap {
+namespace {
+
+using Tool = periph::MachineTool;
+
+constexpr struct {
+    const char* name;
+    std::uint8_t bit;
+} kFlags[] = {{"S", isa::F_S}, {"Z", isa::F_Z}, {"K", isa::F_K}, {"AC", isa::F_AC},
+              {"P", isa::F_P}, {"V", isa::F_V}, {"CY", isa::F_CY}};
+
+std::string h2(std::uint8_t v) { return fmt::format("{:02X}H", v); }
+std::string h4(std::uint16_t v) { return fmt::format("{:04X}H", v); }
+std::string word_text(std::uint16_t v) { return fmt::format("{:04X}H ({})", v, v); }
+
+bool in_ram(const Machine& m, std::uint16_t a) {
+    for (const board::MemoryRegion& r : m.memory_map())
+        if (r.kind == board::MemoryKind::Ram && a >= r.base && a - r.base < r.size) return true;
+    return false;
+}
+
+// RAM symbols by address (the first name defined wins among equals, as SymbolTable::name_at).
+std::map<std::uint16_t, std::string> ram_symbols(const Machine& m, const SymbolTable& t) {
+    std::map<std::uint16_t, std::string> out;
+    for (const auto& [name, value] : t.names())
+        if (in_ram(m, value) && !out.contains(value)) out[value] = t.name_at(value).value_or(name);
+    return out;
+}
+
+std::uint16_t read_word(const Machine& m, std::uint16_t a) {
+    return static_cast<std::uint16_t>(m.peek(a) | m.peek(static_cast<std::uint16_t>(a + 1)) << 8);
+}
+
+std::string flags_text(std::uint8_t f) {
+    std::string s;
+    for (const auto& fl : kFlags)
+        if (f & fl.bit) s += std::string(s.empty() ? "" : " ") + fl.name;
+    return fmt::format("{:02X}H [{}]", f, s);
+}
+
+std::optional<std::uint16_t> reg_value(const Registers& r, std::string_view name) {
+    const auto reg = script::parse_reg(name);
+    if (!reg) return std::nullopt;
+    switch (*reg) {
+        case script::Reg::A: return r.a;
+        case script::Reg::B: return r.b;
+        case script::Reg::C: return r.c;
+        case script::Reg::D: return r.d;
+        case script::Reg::E: return r.e;
+        case script::Reg::H: return r.h;
+        case script::Reg::L: return r.l;
+        case script::Reg::F: return r.f;
+        case script::Reg::BC: return r.bc();
+        case script::Reg::DE: return r.de();
+        case script::Reg::HL: return r.hl();
+        case script::Reg::SP: return r.sp;
+        case script::Reg::PC: return r.pc;
+        case script::Reg::PSW: return static_cast<std::uint16_t>(r.a << 8 | r.f);
+    }
+    return std::nullopt;
+}
+
+Variable ro(std::string name, std::string value) { return {std::move(name), std::move(value), {}, 0, {}, true}; }
+
+std::vector<Variable> registers(const Machine& m) {
+    const Registers& r = m.cpu().regs();
+    std::vector<Variable> v;
+    for (const char* n : {"A", "B", "C", "D", "E", "H", "L"}) v.push_back({n, h2(static_cast<std::uint8_t>(*reg_value(r, n))), "byte", 0, {}, false});
+    v.push_back({"F", flags_text(r.f), "flags", kFlagScope, {}, false});
+    for (const char* n : {"BC", "DE", "HL"}) v.push_back({n, word_text(*reg_value(r, n)), "word", 0, *reg_value(r, n), false});
+    v.push_back({"SP", h4(r.sp), "word", 0, r.sp, false});
+    v.push_back({"PC", h4(r.pc), "word", 0, r.pc, false});
+    v.push_back({"interrupts", fmt::format("{} masks {:03b}{}", m.cpu().interrupts_enabled() ? "EI" : "DI",
+                                           m.cpu().masks(), m.cpu().halted() ? " HALTED" : ""),
+                 "", kInterruptScope, {}, true});
+    return v;
+}
+
+std::vector<Variable> interrupts(const Machine& m) {
+    const I8085& c = m.cpu();
+    return {ro("IE", c.interrupts_enabled() ? "1" : "0"),
+            ro("M7.5", c.masks() & 4 ? "1 (masked)" : "0"),
+            ro("M6.5", c.masks() & 2 ? "1 (masked)" : "0"),
+            ro("M5.5", c.masks() & 1 ? "1 (masked)" : "0"),
+            ro("RST 7.5 latch", c.rst75_latched() ? "1" : "0"),
+            ro("TRAP latch", c.trap_latched() ? "1" : "0"),
+            ro("SOD", c.sod() ? "1" : "0"),
+            ro("halted", c.halted() ? "yes" : "no"),
+            ro("T-states", std::to_string(m.now()))};
+}
+
+std::vector<Variable> firmware_variables(const Machine& m, const SymbolTable& t) {
+    std::vector<Variable> v;
+    for (const auto& [addr, name] : ram_symbols(m, t)) {
+        const std::uint16_t size = variable_size(t, addr);
+        Variable x{name, size == 1 ? h2(m.peek(addr)) : word_text(read_word(m, addr)), size == 1 ? "byte" : "word", 0, addr, false};
+        x.type += " at " + h4(addr);
+        v.push_back(std::move(x));
+    }
+    return v;
+}
+
+std::vector<Variable> rio(const Machine& m) {
+    const auto& s = m.rio().state();
+    static constexpr const char* kPortC[] = {"ALT1 (input)", "ALT4 (A strobed, B output)", "ALT3 (A strobed)", "ALT2 (output)"};
+    static constexpr const char* kTimer[] = {"single square", "square wave", "single pulse", "pulses"};
+    return {ro("command", fmt::format("{:02X}H: port A {}, port B {}, port C {}", s.command, s.command & 1 ? "out" : "in",
+                                      s.command & 2 ? "out" : "in", kPortC[(s.command >> 2) & 3])),
+            ro("port A latch", h2(s.latch[0])),
+            ro("port A pins", h2(s.pins[0])),
+            ro("port B latch", h2(s.latch[1])),
+            ro("port B pins", h2(s.pins[1])),
+            ro("port C latch", h2(s.latch[2])),
+            ro("port C pins", h2(s.pins[2])),
+            ro("timer", fmt::format("{} count {} ({}){}", s.running ? "running," : "stopped,", s.count, kTimer[static_cast<int>(s.mode)],
+                                    s.timer_flag ? ", TC reached" : "")),
+            ro("count length register", h4(s.count_length))};
+}
+
+std::vector<Variable> kdc(const Machine& m) {
+    const auto& s = m.kdc().state();
+    std::string fifo;
+    for (unsigned i = 0; i < s.fifo_count; ++i) fifo += (i ? " " : "") + h2(s.fifo[(s.fifo_head + i) % 8]);
+    return {ro("mode", fmt::format("{:02X}H (display {}, keyboard mode {})", s.mode, (s.mode >> 3) & 3, s.mode & 7)),
+            ro("FIFO count", std::to_string(s.fifo_count)),
+            {"FIFO", fifo.empty() ? "empty" : fifo, "", k8279Fifo, {}, true},
+            ro("display address", fmt::format("{}{}", s.display_address, s.display_ai ? " (auto-increment)" : "")),
+            {"display RAM", "16 bytes", "", k8279DisplayRam, {}, true},
+            ro("overrun", s.overrun ? "1" : "0"),
+            ro("underrun", s.underrun ? "1" : "0"),
+            ro("IRQ", s.irq ? "1" : "0")};
+}
+
+std::vector<Variable> display(const Machine& m) {
+    const auto digits = m.display();
+    std::vector<Variable> v = {ro("text", "\"" + m.display_text() + "\"")};
+    for (std::size_t i = 0; i < digits.size(); ++i) v.push_back(ro(fmt::format("digit {}", i), h2(digits[i])));
+    return v;
+}
+
+std::vector<Variable> tool(const Machine& m) {
+    const Tool& t = m.tool();
+    std::vector<Variable> v = {ro("motors", t.model() == Tool::MotorModel::Ideal ? "ideal" : "physical"),
+                               ro("feedback", t.feedback() == Tool::Feedback::Scale ? "scale" : "commanded steps")};
+    for (int a = 0; a < 3; ++a) {
+        const auto axis = static_cast<Tool::Axis>(a);
+        v.push_back({std::string(1, "XYZ"[a]), fmt::format("{} steps, {:.3f} mm", std::llround(t.table_steps(axis)), t.table_mm(axis)),
+                     "axis", kAxisScope + a, {}, true});
+    }
+    return v;
+}
+
+std::vector<Variable> axis(const Machine& m, int a) {
+    const Tool& t = m.tool();
+    const auto axis = static_cast<Tool::Axis>(a);
+    const auto stop = t.end_stop(axis);
+    return {ro("steps", std::to_string(std::llround(t.table_steps(axis)))),
+            ro("mm", fmt::format("{:.4f}", t.table_mm(axis))),
+            ro("transducer count", std::to_string(t.transducer_count(axis))),
+            ro("commanded steps", std::to_string(t.commanded_steps(axis))),
+            ro("lost steps", std::to_string(t.lost_steps(axis))),
+            ro("end stop", stop.at > 0 ? "high" : stop.at < 0 ? "low" : "free")};
+}
+
+}  // namespace
+
+std::vector<ScopeInfo> scope_list() {
+    return {{"Registers", kRegisterScope, "registers"},
+            {"Firmware variables", kFirmwareScope, "locals"},
+            {"8155", k8155Scope, ""},
+            {"8279", k8279Scope, ""},
+            {"Display", kDisplayScope, ""},
+            {"Machine tool", kToolScope, ""}};
+}
+
+std::vector<Variable> list_variables(const debug::Debugger& d, std::int64_t ref) {
+    const Machine& m = d.machine();
+    switch (ref) {
+        case kRegisterScope: return registers(m);
+        case kFlagScope: {
+            std::vector<Variable> v;
+            for (const auto& f : kFlags) v.push_back({f.name, m.cpu().regs().f & f.bit ? "1" : "0", "flag", 0, {}, false});
+            return v;
+        }
+        case kInterruptScope: return interrupts(m);
+        case kFirmwareScope: return firmware_variables(m, d.program());
+        case k8155Scope: return rio(m);
+        case k8279Scope: return kdc(m);
+        case k8279DisplayRam: {
+            std::vector<Variable> v;
+            for (int i = 0; i < 16; ++i) v.push_back(ro(std::to_string(i), h2(m.kdc().state().display_ram[i])));
+            return v;
+        }
+        case k8279Fifo: {
+            const auto& s = m.kdc().state();
+            std::vector<Variable> v;
+            for (unsigned i = 0; i < s.fifo_count; ++i) v.push_back(ro(std::to_string(i), h2(s.fifo[(s.fifo_head + i) % 8])));
+            return v;
+        }
+        case kDisplayScope: return display(m);
+        case kToolScope: return tool(m);
+        case kAxisScope:
+        case kAxisScope + 1:
+        case kAxisScope + 2: return axis(m, static_cast<int>(ref - kAxisScope));
+        default: return {};
+    }
+}
+
+std::string assign_variable(debug::Debugger& d, std::int64_t ref, const std::string& name, std::int64_t value) {
+    Machine& m = d.machine();
+    Registers& r = m.cpu().regs();
+    if (ref == kFlagScope) {
+        for (const auto& f : kFlags)
+            if (name == f.name) {
+                if (value != 0 && value != 1) return "a flag is 0 or 1";
+                r.f = static_cast<std::uint8_t>(value ? r.f | f.bit : r.f & ~f.bit);
+                return {};
+            }
+        return fmt::format("no flag '{}'", name);
+    }
+    if (ref == kRegisterScope) {
+        const auto reg = script::parse_reg(name);
+        if (!reg) return fmt::format("'{}' cannot be set", name);
+        const bool pair = *reg >= script::Reg::BC;
+        if (value < (pair ? -32768 : -128) || value > (pair ? 0xFFFF : 0xFF))
+            return fmt::format("{} does not fit in {}", value, pair ? "16 bits" : "8 bits");
+        const auto v8 = static_cast<std::uint8_t>(value);
+        const auto v16 = static_cast<std::uint16_t>(value);
+        switch (*reg) {
+            case script::Reg::A: r.a = v8; break;
+            case script::Reg::B: r.b = v8; break;
+            case script::Reg::C: r.c = v8; break;
+            case script::Reg::D: r.d = v8; break;
+            case script::Reg::E: r.e = v8; break;
+            case script::Reg::H: r.h = v8; break;
+            case script::Reg::L: r.l = v8; break;
+            case script::Reg::F: r.f = v8; break;
+            case script::Reg::BC: r.set_bc(v16); break;
+            case script::Reg::DE: r.set_de(v16); break;
+            case script::Reg::HL: r.set_hl(v16); break;
+            case script::Reg::SP: r.sp = v16; break;
+            case script::Reg::PC: r.pc = v16; break;
+            case script::Reg::PSW: r.a = v16 >> 8, r.f = v16 & 0xFF; break;
+        }
+        return {};
+    }
+    if (ref == kFirmwareScope) {
+        const auto addr = d.program().value_of(name);
+        if (!addr) return fmt::format("no variable '{}'", name);
+        const std::uint16_t size = variable_size(d.program(), *addr);
+        if (value < (size == 1 ? -128 : -32768) || value > (size == 1 ? 0xFF : 0xFFFF))
+            return fmt::format("{} does not fit in {}", value, size == 1 ? "a byte" : "a word");
+        if (!m.poke(*addr, static_cast<std::uint8_t>(value))) return fmt::format("nothing at {:04X}H to write", *addr);
+        if (size == 2) m.poke(static_cast<std::uint16_t>(*addr + 1), static_cast<std::uint8_t>(value >> 8));
+        return {};
+    }
+    return "this value is read-only here (the console's commands change the devices)";
+}
+
+std::uint16_t variable_size(const SymbolTable& symbols, std::uint16_t address) {
+    std::optional<std::uint16_t> next;
+    for (const auto& [name, value] : symbols.names())
+        if (value > address && (!next || value < *next)) next = value;
+    return next && *next - address == 1 ? 1 : 2;
+}
+
+std::optional<std::string> expression_value(const debug::Debugger& d, const std::string& text, std::string& error) {
+    const Machine& m = d.machine();
+    std::string t = text;
+    while (!t.empty() && t.front() == ' ') t.erase(0, 1);
+    while (!t.empty() && t.back() == ' ') t.pop_back();
+    // A firmware variable by its bare name shows what it holds (hovering over YAC); the
+    // expression YAC is its address, as in the debugger's console.
+    const std::string u = to_upper(t);
+    if (!reg_value(m.cpu().regs(), u) && std::none_of(std::begin(kFlags), std::end(kFlags), [&](const auto& f) { return u == f.name; }))
+        if (const auto v = d.program().value_of(u); v && in_ram(m, *v)) {
+            const std::uint16_t size = variable_size(d.program(), *v);
+            return fmt::format("{} at {:04X}H", size == 1 ? h2(m.peek(*v)) : word_text(read_word(m, *v)), *v);
+        }
+    const debug::Debugger::Value v = d.evaluate(t);
+    if (!v.error.empty()) {
+        error = v.col > 0 ? fmt::format("{} (column {})", v.error, v.col) : v.error;
+        return std::nullopt;
+    }
+    if (v.value < 0 || v.value > 0xFFFF) return std::to_string(v.value);
+    return v.width <= 8 ? fmt::format("{:02X}H ({})", v.value, v.value) : fmt::format("{:04X}H ({})", v.value, v.value);
+}
+
+std::vector<debug::Frame> live_frames(const debug::Debugger& d, std::optional<std::uint16_t> stack_base) {
+    std::vector<debug::Frame> frames = d.backtrace();
+    if (stack_base)
+        for (std::size_t i = 1; i < frames.size(); ++i)
+            if (frames[i].slot >= *stack_base) {
+                frames.resize(i);
+                break;
+            }
+    return frames;
+}
+
+std::vector<CallFrame> call_frames(const debug::Debugger& d, std::optional<std::uint16_t> stack_base) {
+    const Machine& m = d.machine();
+    std::vector<CallFrame> out;
+    for (const debug::Frame& f : live_frames(d, stack_base)) {
+        // A caller is shown at its CALL (or RST), the line the user reads as "called from here".
+        std::uint16_t at = f.pc;
+        if (!out.empty()) {
+            const auto call = static_cast<std::uint16_t>(f.pc - 3);
+            const std::uint8_t op = m.peek(call);
+            at = op == 0xCD || (op & 0xC7) == 0xC4 ? call : static_cast<std::uint16_t>(f.pc - 1);
+        }
+        // The routine by its label (a caller's without the offset of its return address).
+        std::string routine = f.routine ? *f.routine : h4(at);
+        if (!out.empty()) routine = routine.substr(0, routine.find('+'));
+        out.push_back({fmt::format("{} ({})", routine, h4(at)), at, d.program().line_of(at)});
+    }
+    return out;
+}
+
+}  // namespace alp85::dap

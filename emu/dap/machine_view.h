@@ -1,0 +1,57 @@
+// The machine as a debug client sees it: scopes of named values (registers and flags, the
+// firmware's variables, the 8155, the 8279 and the display, the machine tool), the call stack,
+// and the values of expressions. Plain functions of the Debugger, no protocol.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "emu/debug/debugger.h"
+
+namespace alp85::dap {
+
+// variablesReference numbers: fixed, since the views are computed afresh at each request.
+inline constexpr std::int64_t kRegisterScope = 1, kFlagScope = 2, kInterruptScope = 3, kFirmwareScope = 10,
+                              k8155Scope = 20, k8279Scope = 30, k8279DisplayRam = 31, k8279Fifo = 32,
+                              kDisplayScope = 40, kToolScope = 50, kAxisScope = 51;  // 51, 52, 53: X, Y, Z
+
+struct ScopeInfo {
+    std::string name;
+    std::int64_t ref;
+    std::string hint;  // DAP presentationHint: "registers", "locals", ""
+};
+std::vector<ScopeInfo> scope_list();
+
+struct Variable {
+    std::string name, value, type;
+    std::int64_t children = 0;            // a variablesReference to expand, or 0
+    std::optional<std::uint16_t> memory;  // where it lives, for the client's memory view
+    bool read_only = false;
+};
+// The variables under `ref` (empty for an unknown reference).
+std::vector<Variable> list_variables(const debug::Debugger& d, std::int64_t ref);
+// setVariable: registers, flags, firmware variables. Returns "" or why not.
+std::string assign_variable(debug::Debugger& d, std::int64_t ref, const std::string& name, std::int64_t value);
+
+// A firmware variable's size: the distance to the next RAM symbol, at most a word (the thesis's
+// variables are words and bytes; 3-byte slots hold 16-bit values).
+std::uint16_t variable_size(const SymbolTable& symbols, std::uint16_t address);
+
+// A register, pair, flag, symbol (a RAM variable shows its contents) or number, as text;
+// nullopt with `error` when the text is none of these.
+std::optional<std::string> expression_value(const debug::Debugger& d, const std::string& text, std::string& error);
+
+struct CallFrame {
+    std::string name;                 // the routine (label at or before pc) and address
+    std::uint16_t pc = 0;
+    std::optional<SourceLine> line;
+};
+// Innermost first: the Debugger's backtrace, callers whose return address lies at or above
+// `stack_base` (the top the program gave its stack) left out as stale.
+std::vector<CallFrame> call_frames(const debug::Debugger& d, std::optional<std::uint16_t> stack_base);
+// The same frames as the Debugger gives them (return address and its slot).
+std::vector<debug::Frame> live_frames(const debug::Debugger& d, std::optional<std::uint16_t> stack_base);
+
+}  // namespace alp85::dap

@@ -1,0 +1,153 @@
+// initialize, launch, configurationDone, restart, disconnect, terminate: the adapter's life.
+#include <fstream>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "emu/dap/adapter.h"
+#include "emu/program/firmware.h"
+#include "emu/script/parser.h"
+
+namespace alp85::dap {
+
+script::Session& Adapter::session() {
+    if (!session_) throw RequestError("no program yet: send 'launch' first");
+    return *session_;
+}
+
+void Adapter::initialize(const Json& args, Json& body) {
+    if (initialized_) throw RequestError("'initialize' twice");
+    initialized_ = true;
+    lines_start_at_1_ = opt_bool(args, "linesStartAt1").value_or(true);
+    body = {
+        {"supportsConfigurationDoneRequest", true},
+        {"supportsFunctionBreakpoints", true},
+        {"supportsConditionalBreakpoints", true},
+        {"supportsHitConditionalBreakpoints", true},
+        {"supportsLogPoints", true},
+        {"supportsEvaluateForHovers", true},
+        {"supportsStepBack", true},
+        {"supportsSetVariable", true},
+        {"supportsRestartRequest", true},
+        {"supportsGotoTargetsRequest", true},
+        {"supportsReadMemoryRequest", true},
+        {"supportsWriteMemoryRequest", true},
+        {"supportsDisassembleRequest", true},
+        {"supportsInstructionBreakpoints", true},
+        {"supportsDataBreakpoints", true},
+        {"supportsTerminateRequest", true},
+        {"supportsSteppingGranularity", true},
+        {"supportsBreakpointLocationsRequest", true},
+        {"supportTerminateDebuggee", true},
+        {"exceptionBreakpointFilters",
+         Json::array({{{"filter", "runaway"},
+                       {"label", "Runaway program"},
+                       {"description", "Stop when the CPU fetches an instruction where no program was loaded"},
+                       {"default", true}}})},
+    };
+}
+
+void Adapter::launch(const Json& args, Json&) {
+    if (shell_) throw RequestError("already launched (use 'restart')");
+    config_ = parse_launch(args);
+    start_session();
+    event("initialized");
+}
+
+void Adapter::start_session() {
+    run_ = {};
+    runaway_.reset();
+    stack_base_.reset();
+    resetting_sp_ = false;
+    script::SessionOptions so;
+    so.base_dir = config_.cwd;
+    if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
+    auto shell = std::make_unique<script::DebugShell>(so);
+    shell->debugger().listen([this](const debug::Event& e) { on_debug_event(e); });
+    std::vector<std::string> warnings;
+    load_program(config_, shell->session(), map_, warnings);  // throws: the old session stays
+    engine_points_.clear();  // they belonged to the old session's Debugger
+    engine_to_dap_.clear();
+    shell_ = std::move(shell);
+    session_ = &shell_->session();
+    for (const std::string& w : warnings) output("stderr", w);
+    debug::Debugger& d = session_->debugger();
+    d.set_history(true);  // stepBack and reverseContinue from the first instruction on
+    {
+        Machine& m = session_->machine();
+        m.set_trace([this, &m, &d](const I8085& cpu) {
+            const std::uint16_t pc = cpu.regs().pc;
+            // The stack's top as the program set it (LXI SP / SPHL): return addresses above it
+            // are left over from earlier code (the monitor's), not callers.
+            if (resetting_sp_) stack_base_ = cpu.regs().sp;
+            const std::uint8_t op = m.peek(pc);
+            resetting_sp_ = op == 0x31 || op == 0xF9;
+            if (!config_.stop_on_runaway || d.replaying()) return;
+            if (map_.code[pc]) runaway_armed_ = true;
+            else if (runaway_armed_ && !runaway_) {
+                runaway_ = pc;
+                m.cpu().request_stop();
+            }
+        });
+    }
+    resolve_breakpoints();
+}
+
+void Adapter::configuration_done(const Json&, Json&) {
+    if (!session_) throw RequestError("'configurationDone' before 'launch'");
+    if (configured_) throw RequestError("'configurationDone' twice");
+    configured_ = true;
+    begin();
+}
+
+void Adapter::begin() {
+    if (!config_.script.empty()) {
+        std::filesystem::path path = config_.script;
+        if (path.is_relative()) path = config_.cwd / path;
+        std::ifstream in(path, std::ios::binary);
+        if (!in) {
+            output("stderr", fmt::format("launch script: cannot read '{}'", path.string()));
+            stopped("entry", "the launch script could not be read");
+            return;
+        }
+        const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        std::vector<script::ParseError> errors;
+        const auto commands = script::parse_script(text, path.string(), errors);
+        for (const auto& e : errors) output("stderr", e.format());
+        if (!errors.empty()) {
+            stopped("entry", "the launch script has errors");
+            return;
+        }
+        for (const script::Command& c : commands) {
+            const auto o = session_->execute(c);
+            if (o.status != script::Session::Status::Ok) {
+                output("stderr", o.message);
+                stopped("entry", "the launch script failed");
+                return;
+            }
+        }
+    }
+    if (config_.stop_on_entry) stopped("entry");
+    else start_run();
+}
+
+void Adapter::restart(const Json& args, Json&) {
+    if (!session_) throw RequestError("'restart' before 'launch'");
+    if (args.is_object() && args.contains("arguments")) config_ = parse_launch(args["arguments"]);
+    start_session();
+    for (auto& [path, list] : bps_.source)
+        for (Breakpoint& b : list) event("breakpoint", {{"reason", "changed"}, {"breakpoint", breakpoint_json(b, path)}});
+    begin();
+}
+
+void Adapter::disconnect(const Json&, Json&) {
+    run_.active = false;
+    finished_ = true;
+}
+
+void Adapter::terminate(const Json&, Json&) {
+    run_.active = false;
+    event("terminated");
+}
+
+}  // namespace alp85::dap
