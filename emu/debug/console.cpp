@@ -13,14 +13,6 @@
 namespace alp85::debug {
 
 namespace {
-std::string_view trim(std::string_view s, int* col = nullptr) {
-    std::size_t a = 0;
-    while (a < s.size() && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
-    std::size_t b = s.size();
-    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
-    if (col) *col += static_cast<int>(a);
-    return s.substr(a, b - a);
-}
 // The first word of `s` (split at blanks or '/'), and the rest after it.
 std::string_view first_word(std::string_view s) {
     std::size_t i = 0;
@@ -40,7 +32,6 @@ std::pair<std::string_view, std::string_view> split_if(std::string_view s, int& 
     }
     return {s, {}};
 }
-std::string hex4(std::uint16_t v) { return fmt::format("{:04X}H", v); }
 }  // namespace
 
 Console::Console(Debugger& d) : d_(d) {
@@ -143,7 +134,7 @@ std::string Console::execute(std::string_view line) {
     line_ = std::string(line);
     d_.interrupt_clear();
     if (collecting_) {
-        const std::string_view t = trim(line);
+        const std::string_view t = trim_blanks(line);
         if (to_upper(t) == "END") {
             collecting_ = false;
             d_.set_commands(collect_for_, collected_);
@@ -153,7 +144,7 @@ std::string Console::execute(std::string_view line) {
         return {};
     }
     int col = 1;
-    const std::string_view t = trim(line, &col);
+    const std::string_view t = trim_blanks(line, &col);
     if (t.empty() || t.front() == '#') return {};
     const std::string_view word = first_word(t);
     std::string err;
@@ -162,7 +153,7 @@ std::string Console::execute(std::string_view line) {
     // Script commands that share a name with a debugger command: print "text", print display,
     // set mem, set reg, delete all, run until.
     if (c) {
-        const std::string rest = to_upper(trim(t.substr(word.size())));
+        const std::string rest = to_upper(trim_blanks(t.substr(word.size())));
         const std::string next = rest.substr(0, rest.find(' '));
         const bool script_form = (c->handler == &Console::cmd_print && (rest.starts_with("\"") || next == "DISPLAY" || next == "AXES" || next == "TIME")) ||
                                  (c->handler == &Console::cmd_set && (next == "MEM" || next == "REG")) ||
@@ -175,7 +166,7 @@ std::string Console::execute(std::string_view line) {
     }
     if (!c) return run_fallback(t);
     int acol = col + static_cast<int>(word.size());
-    const std::string_view args = trim(t.substr(word.size()), &acol);
+    const std::string_view args = trim_blanks(t.substr(word.size()), &acol);
     try {
         return (this->*(c->handler))(args, acol);
     } catch (const std::exception& e) {  // nothing a command does ends the session
@@ -219,14 +210,14 @@ std::string Console::location_lines(std::uint16_t pc) {
     const auto frames = d_.backtrace();
     const std::string routine = frames.front().routine ? *frames.front().routine : "??";
     const auto line = d_.program().line_of(pc);
-    std::string out = fmt::format("{} ({})", routine, hex4(pc));
+    std::string out = fmt::format("{} ({})", routine, hex4h(pc));
     if (line) out += fmt::format(" at {}:{}", std::filesystem::path(line->file).filename().string(), line->line);
     out += '\n';
     const auto src = line ? source_line(*line) : std::nullopt;
     if (src)
         out += fmt::format("{}\t{}\n", line->line, *src);
     else
-        out += fmt::format("{}\t{}\n", hex4(pc), disassemble(d_.machine().bus(), pc, d_.machine().cpu().variant(), &d_.program()).text);
+        out += fmt::format("{}\t{}\n", hex4h(pc), disassemble(d_.machine().bus(), pc, d_.machine().cpu().variant(), &d_.program()).text);
     return out;
 }
 
@@ -251,10 +242,10 @@ std::string Console::describe(const Stop& s) {
                     }
                 }
                 if (s.after)
-                    out += fmt::format("after {}  {}\n", hex4(*s.after),
+                    out += fmt::format("after {}  {}\n", hex4h(*s.after),
                                        disassemble(d_.machine().bus(), *s.after, d_.machine().cpu().variant(), &d_.program()).text);
             } else {
-                out += fmt::format("\nWatchpoint at {}\n", s.data ? hex4(*s.data) : "?");
+                out += fmt::format("\nWatchpoint at {}\n", s.data ? hex4h(*s.data) : "?");
             }
             break;
         case StopReason::Finished: out += "Run till exit: returned to "; break;
@@ -281,7 +272,7 @@ std::string Console::report(const Stop& first) {
         bool again = false;
         for (const std::string& c : d_.commands_for(s)) {
             std::string err;
-            const CommandDef* def = find_command(first_word(trim(c)), err);
+            const CommandDef* def = find_command(first_word(trim_blanks(c)), err);
             if (def && def->handler == &Console::cmd_continue) {
                 s = d_.cont();
                 again = true;
@@ -305,7 +296,7 @@ namespace {
 int error_column(int col, int ccol, std::string_view cond, const Debugger::Added& r) {
     if (!r.in_condition) return col + std::max(r.col, 1) - 1;
     int lead = 0;
-    trim(cond, &lead);
+    trim_blanks(cond, &lead);
     return col + ccol + lead + std::max(r.col, 1) - 1;
 }
 }  // namespace
@@ -313,9 +304,9 @@ int error_column(int col, int ccol, std::string_view cond, const Debugger::Added
 std::string Console::cmd_break(std::string_view a, int col) {
     int ccol = 0;
     auto [loc, cond] = split_if(a, ccol);
-    loc = trim(loc);
-    const std::string where = loc.empty() ? hex4(d_.machine().cpu().regs().pc) : std::string(loc);
-    const Debugger::Added r = d_.add_breakpoint(where, false, trim(cond));
+    loc = trim_blanks(loc);
+    const std::string where = loc.empty() ? hex4h(d_.machine().cpu().regs().pc) : std::string(loc);
+    const Debugger::Added r = d_.add_breakpoint(where, false, trim_blanks(cond));
     if (!r.number) return error(error_column(col, ccol, cond, r), r.error);
     return fmt::format("{}{}", r.bound ? fmt::format("{}:{} has no code: the breakpoint binds to line {}\n",
                                                     std::filesystem::path(r.bound->file).filename().string(),
@@ -323,7 +314,7 @@ std::string Console::cmd_break(std::string_view a, int col) {
                                        : "",
                        [&] {
                            const Breakpoint* b = d_.breakpoint(r.number);
-                           std::string s = fmt::format("Breakpoint {} at {}", b->number, hex4(b->address));
+                           std::string s = fmt::format("Breakpoint {} at {}", b->number, hex4h(b->address));
                            if (b->line) s += fmt::format(": file {}, line {}.", std::filesystem::path(b->line->file).filename().string(), b->line->line);
                            return s + '\n';
                        }());
@@ -332,12 +323,12 @@ std::string Console::cmd_break(std::string_view a, int col) {
 std::string Console::cmd_tbreak(std::string_view a, int col) {
     int ccol = 0;
     auto [loc, cond] = split_if(a, ccol);
-    loc = trim(loc);
-    const std::string where = loc.empty() ? hex4(d_.machine().cpu().regs().pc) : std::string(loc);
-    const Debugger::Added r = d_.add_breakpoint(where, true, trim(cond));
+    loc = trim_blanks(loc);
+    const std::string where = loc.empty() ? hex4h(d_.machine().cpu().regs().pc) : std::string(loc);
+    const Debugger::Added r = d_.add_breakpoint(where, true, trim_blanks(cond));
     if (!r.number) return error(error_column(col, ccol, cond, r), r.error);
     const Breakpoint* b = d_.breakpoint(r.number);
-    return fmt::format("Temporary breakpoint {} at {}\n", b->number, hex4(b->address));
+    return fmt::format("Temporary breakpoint {} at {}\n", b->number, hex4h(b->address));
 }
 
 std::string Console::cmd_watch(std::string_view a, int col) { return watch(a, col, WatchKind::Write); }
@@ -350,7 +341,7 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
     int ccol = 0;
     auto [what_text, cond] = split_if(a, ccol);
     int wcol = col;
-    std::string_view w = trim(what_text, &wcol);
+    std::string_view w = trim_blanks(what_text, &wcol);
     if (w.empty()) return error(col, "expected what to watch: memory (YAC, word YAC, 1B30H..1B35H), port N, axis X count, 8155 porta, 8279 fifo");
     std::vector<std::string> words;
     std::vector<int> cols;  // of each word in the line
@@ -406,7 +397,7 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
         const auto it = q.find(words[2]);
         if (it == q.end()) return bad(fmt::format("no machine-tool quantity '{}' (steps, count, lost, endstop)", words[2]), 2);
         spec.quantity = it->second;
-        spec.what = fmt::format("axis {} {}", words[1], to_upper(words[2]) == "ENDSTOP" ? "end stop" : std::string(trim(words[2])));
+        spec.what = fmt::format("axis {} {}", words[1], to_upper(words[2]) == "ENDSTOP" ? "end stop" : std::string(trim_blanks(words[2])));
         std::transform(spec.what.begin(), spec.what.end(), spec.what.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
         spec.what[5] = words[1][0];
     } else if (words[0] == "8155" || words[0] == "8279") {
@@ -434,12 +425,12 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
         if ((first == "BYTE" || first == "WORD") && m.size() > first.size() && std::isspace(static_cast<unsigned char>(m[first.size()]))) {
             size = first == "WORD" ? 2 : 1;
             mcol += static_cast<int>(first.size());
-            m = trim(m.substr(first.size()), &mcol);
+            m = trim_blanks(m.substr(first.size()), &mcol);
         }
         const auto dots = m.find("..");
         auto address = [&](std::string_view text, int at, std::int64_t& out) -> std::string {
             int tcol = at;
-            text = trim(text, &tcol);
+            text = trim_blanks(text, &tcol);
             ExprError err;
             const auto e = Expr::parse(text, d_.program(), err, Expr::Names::SymbolsFirst, tcol - 1, &vars_);
             if (!e) return error(err.col, err.message);
@@ -460,11 +451,11 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
         spec.last = static_cast<std::uint16_t>(hi);
         const auto name = d_.program().name_at(spec.first);
         const std::string label = name && dots == std::string_view::npos ? fmt::format("{} ", *name) : "";
-        if (spec.first == spec.last) spec.what = fmt::format("byte {}({})", label, hex4(spec.first));
-        else if (spec.last == spec.first + 1) spec.what = fmt::format("word {}({})", label, hex4(spec.first));
-        else spec.what = fmt::format("{}..{}", hex4(spec.first), hex4(spec.last));
+        if (spec.first == spec.last) spec.what = fmt::format("byte {}({})", label, hex4h(spec.first));
+        else if (spec.last == spec.first + 1) spec.what = fmt::format("word {}({})", label, hex4h(spec.first));
+        else spec.what = fmt::format("{}..{}", hex4h(spec.first), hex4h(spec.last));
     }
-    const Debugger::Added r = d_.add_watchpoint(spec, trim(cond));
+    const Debugger::Added r = d_.add_watchpoint(spec, trim_blanks(cond));
     if (!r.number) return error(error_column(col, ccol, cond, r), r.error);
     const char* kind_name = spec.kind == WatchKind::Read ? "Read watchpoint" : spec.kind == WatchKind::Access ? "Access watchpoint" : "Watchpoint";
     return fmt::format("{} {}: {}\n", kind_name, r.number, spec.what);
@@ -478,8 +469,23 @@ std::optional<int> Console::number_arg(std::string_view& args, int& col, std::st
         return std::nullopt;
     }
     col += static_cast<int>(w.size());
-    args = trim(args.substr(w.size()), &col);
+    args = trim_blanks(args.substr(w.size()), &col);
     return static_cast<int>(*n);
+}
+
+// "N N ...": `act` on each number (of a breakpoint, a display...); an unknown one is reported
+// ("no WHAT number N"), the rest done.
+std::string Console::for_each_number(std::string_view a, int col, std::string_view what,
+                                     const std::function<bool(int)>& act) {
+    std::string out;
+    while (!a.empty()) {
+        std::string err;
+        const int at = col;
+        const auto n = number_arg(a, col, err);
+        if (!n) return out + err;
+        if (!act(*n)) out += error(at, fmt::format("no {} number {}", what, *n));
+    }
+    return out;
 }
 
 std::string Console::cmd_delete(std::string_view a, int col) {
@@ -492,52 +498,28 @@ std::string Console::cmd_delete(std::string_view a, int col) {
         const auto loc = d_.locate(a);
         if (!loc.error.empty()) return error(col + std::max(loc.col, 1) - 1, loc.error);
         for (std::uint16_t addr : loc.addresses)
-            if (!d_.remove_breakpoints_at(addr)) return error(col, fmt::format("no breakpoint at {}", hex4(addr)));
+            if (!d_.remove_breakpoints_at(addr)) return error(col, fmt::format("no breakpoint at {}", hex4h(addr)));
         return {};
     }
-    std::string out;
-    while (!a.empty()) {
-        std::string err;
-        const int at = col;
-        const auto n = number_arg(a, col, err);
-        if (!n) return out + err;
-        if (!d_.remove(*n)) out += error(at, fmt::format("no breakpoint or watchpoint number {}", *n));
-    }
-    return out;
+    return for_each_number(a, col, "breakpoint or watchpoint", [&](int n) { return d_.remove(n); });
 }
 
 std::string Console::cmd_enable(std::string_view a, int col) {
-    std::string out;
     if (a.empty()) {
         for (const auto& b : d_.breakpoints()) d_.enable(b.number, true);
         for (const auto& w : d_.watchpoints()) d_.enable(w.number, true);
         return {};
     }
-    while (!a.empty()) {
-        std::string err;
-        const int at = col;
-        const auto n = number_arg(a, col, err);
-        if (!n) return out + err;
-        if (!d_.enable(*n, true)) out += error(at, fmt::format("no breakpoint or watchpoint number {}", *n));
-    }
-    return out;
+    return for_each_number(a, col, "breakpoint or watchpoint", [&](int n) { return d_.enable(n, true); });
 }
 
 std::string Console::cmd_disable(std::string_view a, int col) {
-    std::string out;
     if (a.empty()) {
         for (const auto& b : d_.breakpoints()) d_.enable(b.number, false);
         for (const auto& w : d_.watchpoints()) d_.enable(w.number, false);
         return {};
     }
-    while (!a.empty()) {
-        std::string err;
-        const int at = col;
-        const auto n = number_arg(a, col, err);
-        if (!n) return out + err;
-        if (!d_.enable(*n, false)) out += error(at, fmt::format("no breakpoint or watchpoint number {}", *n));
-    }
-    return out;
+    return for_each_number(a, col, "breakpoint or watchpoint", [&](int n) { return d_.enable(n, false); });
 }
 
 std::string Console::cmd_condition(std::string_view a, int col) {
@@ -620,7 +602,7 @@ std::string Console::cmd_finish(std::string_view a, int col) {
     const auto frames = d_.backtrace();
     std::string out;
     if (frames.size() > 1)
-        out = fmt::format("Run till exit from {} ({})\n", frames[0].routine ? *frames[0].routine : "??", hex4(frames[0].pc));
+        out = fmt::format("Run till exit from {} ({})\n", frames[0].routine ? *frames[0].routine : "??", hex4h(frames[0].pc));
     return out + report(d_.finish());
 }
 
@@ -641,7 +623,7 @@ std::string Console::cmd_advance(std::string_view a, int col) {
 std::string Console::cmd_run(std::string_view a, int col) {
     if (to_upper(first_word(a)) == "FOR") {
         col += 3;
-        a = trim(a.substr(3), &col);
+        a = trim_blanks(a.substr(3), &col);
     }
     if (a.empty()) return error(col, "expected a time: run [for] TIME (10ms, 2s, 3070t)");
     // TIME: a number and a unit (t, us, ms, s).

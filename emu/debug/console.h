@@ -82,6 +82,7 @@ private:
     std::string run_fallback(std::string_view line);
     std::string format_value(std::int64_t v, int width, char fmt) const;
     std::optional<int> number_arg(std::string_view& args, int& col, std::string& err);
+    std::string for_each_number(std::string_view a, int col, std::string_view what, const std::function<bool(int)>& act);
 
     // handlers (console.cpp: control and points; console_view.cpp: looking)
     std::string cmd_break(std::string_view a, int col);

@@ -15,15 +15,6 @@
 namespace alp85::debug {
 
 namespace {
-std::string_view trim_view(std::string_view s, int* col = nullptr) {
-    std::size_t a = 0;
-    while (a < s.size() && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
-    std::size_t b = s.size();
-    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
-    if (col) *col += static_cast<int>(a);
-    return s.substr(a, b - a);
-}
-std::string hex4(std::uint16_t v) { return fmt::format("{:04X}H", v); }
 std::string file_name(const std::string& f) { return std::filesystem::path(f).filename().string(); }
 // "/x" after a command: the format letter, and the rest.
 char take_format(std::string_view& a, int& col) {
@@ -32,7 +23,7 @@ char take_format(std::string_view& a, int& col) {
     std::size_t i = 1;
     while (i < a.size() && !std::isspace(static_cast<unsigned char>(a[i]))) ++i;
     col += static_cast<int>(i);
-    a = trim_view(a.substr(i), &col);
+    a = trim_blanks(a.substr(i), &col);
     return f;
 }
 }  // namespace
@@ -71,23 +62,23 @@ std::string Console::cmd_print(std::string_view a, int col) {
 std::string Console::cmd_set(std::string_view a, int col) {
     const std::string first = to_upper(a.substr(0, a.find(' ')));
     if (first == "HISTORY") {
-        const std::string v = to_upper(trim_view(a.substr(7)));
+        const std::string v = to_upper(trim_blanks(a.substr(7)));
         if (v != "ON" && v != "OFF") return error(col + 8, "expected: set history on|off");
         d_.set_history(v == "ON");
         return fmt::format("History {}.\n", v == "ON" ? "on: reverse execution from here" : "off");
     }
     if (first == "VAR") {
         col += 3;
-        a = trim_view(a.substr(3), &col);
+        a = trim_blanks(a.substr(3), &col);
     }
     const auto eq = a.find('=');
     if (eq == std::string_view::npos || (eq + 1 < a.size() && a[eq + 1] == '=') || (eq > 0 && (a[eq - 1] == '!' || a[eq - 1] == '<' || a[eq - 1] == '>')))
         return error(col, "expected: set LVALUE = EXPR (a register, a flag, [ADDR], byte[ADDR], word[ADDR])");
     ExprError err;
     int lcol = col;
-    const std::string_view lhs = trim_view(a.substr(0, eq), &lcol);
+    const std::string_view lhs = trim_blanks(a.substr(0, eq), &lcol);
     int rcol = col + static_cast<int>(eq) + 1;
-    const std::string_view rhs = trim_view(a.substr(eq + 1), &rcol);
+    const std::string_view rhs = trim_blanks(a.substr(eq + 1), &rcol);
     // set $NAME = EXPR: a convenience variable (not a register's or flag's name).
     if (lhs.size() > 1 && lhs.front() == '$' && !register_named(to_upper(lhs.substr(1))) && !flag_named(to_upper(lhs.substr(1))) &&
         std::all_of(lhs.begin() + 1, lhs.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; })) {
@@ -161,16 +152,8 @@ std::string Console::cmd_undisplay(std::string_view a, int col) {
         displays_.clear();
         return {};
     }
-    std::string out;
-    while (!a.empty()) {
-        std::string err;
-        const int at = col;
-        const auto n = number_arg(a, col, err);
-        if (!n) return out + err;
-        if (!std::erase_if(displays_, [&](const Display& d) { return d.number == *n; }))
-            out += error(at, fmt::format("no display number {}", *n));
-    }
-    return out;
+    return for_each_number(a, col, "display",
+                           [&](int n) { return std::erase_if(displays_, [n](const Display& d) { return d.number == n; }) > 0; });
 }
 
 // x/NFU ADDRESS
@@ -188,7 +171,7 @@ std::string Console::cmd_x(std::string_view a, int col) {
             else return error(col + static_cast<int>(i), fmt::format("unknown format letter '{}' (x d u o t c a s i; b w)", a[i]));
         }
         col += static_cast<int>(i);
-        a = trim_view(a.substr(i), &col);
+        a = trim_blanks(a.substr(i), &col);
     }
     if (count < 1 || count > 4096) return error(col, "a count from 1 to 4096");
     std::uint16_t addr = next_x_;
@@ -202,7 +185,7 @@ std::string Console::cmd_x(std::string_view a, int col) {
     std::string out;
     auto label = [&](std::uint16_t at) {
         const auto n = d_.program().name_at(at);
-        return n ? fmt::format("{} <{}>", hex4(at), *n) : hex4(at);
+        return n ? fmt::format("{} <{}>", hex4h(at), *n) : hex4h(at);
     };
     if (x_format_ == 'i') {
         for (int i = 0; i < count; ++i) {
@@ -261,7 +244,7 @@ std::string Console::cmd_list(std::string_view a, int col) {
             const auto loc = d_.locate(a);
             if (!loc.error.empty()) return error(col + std::max(loc.col, 1) - 1, loc.error);
             center = d_.program().line_of(loc.addresses.front());
-            if (!center) return error(col, fmt::format("no source line for {}", hex4(loc.addresses.front())));
+            if (!center) return error(col, fmt::format("no source line for {}", hex4h(loc.addresses.front())));
         }
     }
     if (!center) return error(col, "no source line for the PC (list LOCATION or FILE:LINE)");
@@ -293,10 +276,10 @@ std::string Console::cmd_disassemble(std::string_view a, int col) {
         std::string_view loc_text = a;
         const auto sp = a.rfind(' ');
         if (sp != std::string_view::npos) {
-            const auto n = parse_int(trim_view(a.substr(sp + 1)));
+            const auto n = parse_int(trim_blanks(a.substr(sp + 1)));
             if (n && *n > 0 && *n <= 4096) {
                 count = static_cast<int>(*n);
-                loc_text = trim_view(a.substr(0, sp));
+                loc_text = trim_blanks(a.substr(0, sp));
             }
         }
         const auto loc = d_.locate(loc_text);
@@ -319,7 +302,7 @@ std::string Console::cmd_disassemble(std::string_view a, int col) {
         const auto line = d_.program().line_of(addr);
         bool bp = false;
         for (const Breakpoint& b : d_.breakpoints()) bp = bp || b.address == addr;
-        out += fmt::format("{}{} {}  {:<9} {:<20}{}\n", addr == m.cpu().regs().pc ? "=>" : "  ", bp ? 'B' : ' ', hex4(addr), bytes,
+        out += fmt::format("{}{} {}  {:<9} {:<20}{}\n", addr == m.cpu().regs().pc ? "=>" : "  ", bp ? 'B' : ' ', hex4h(addr), bytes,
                            dis.text, line ? fmt::format("; {}:{}", file_name(line->file), line->line) : "");
         addr = static_cast<std::uint16_t>(addr + dis.length);
     }
@@ -331,8 +314,8 @@ std::string Console::cmd_backtrace(std::string_view, int) {
     const auto frames = d_.backtrace();
     for (std::size_t i = 0; i < frames.size(); ++i) {
         const Frame& f = frames[i];
-        out += fmt::format("#{:<2} {} in {}", i, hex4(f.pc), f.routine ? *f.routine : "??");
-        if (i > 0) out += fmt::format(" (return address at {})", hex4(f.slot));
+        out += fmt::format("#{:<2} {} in {}", i, hex4h(f.pc), f.routine ? *f.routine : "??");
+        if (i > 0) out += fmt::format(" (return address at {})", hex4h(f.slot));
         if (f.line) out += fmt::format(" at {}:{}", file_name(f.line->file), f.line->line);
         out += '\n';
     }
@@ -371,7 +354,7 @@ std::string Console::info_breakpoints() {
     std::vector<Row> rows;
     for (const Breakpoint& b : d_.breakpoints()) {
         std::string s = fmt::format("{:<4} {:<15} {:<4} {}", b.number, b.temporary ? "tbreakpoint" : "breakpoint", b.enabled ? "y" : "n",
-                                    hex4(b.address));
+                                    hex4h(b.address));
         if (const auto n = d_.program().name_at(b.address)) s += " in " + *n;
         if (b.line) s += fmt::format(" at {}:{}", file_name(b.line->file), b.line->line);
         s += '\n';
@@ -473,7 +456,7 @@ std::string Console::info_display() {
 std::string Console::cmd_info(std::string_view a, int col) {
     int wcol = col;
     const std::string what = to_upper(a.substr(0, a.find(' ')));
-    std::string_view rest = a.size() > what.size() ? trim_view(a.substr(what.size()), &wcol) : std::string_view{};
+    std::string_view rest = a.size() > what.size() ? trim_blanks(a.substr(what.size()), &wcol) : std::string_view{};
     wcol += static_cast<int>(what.size());
     if (what == "R" || what == "REG" || what == "REGISTERS" || what == "ALL-REGISTERS") return info_registers();
     if (what == "B" || what == "BR" || what == "BREAK" || what == "BREAKPOINTS" || what == "WAT" || what == "WATCHPOINTS")
@@ -516,7 +499,7 @@ std::string Console::cmd_history(std::string_view a, int col) {
         reg8("H", e.before.h, e.after.h);
         reg8("L", e.before.l, e.after.l);
         if (e.before.sp != e.after.sp) changed += fmt::format(" SP={:04X}H", e.after.sp);
-        out += fmt::format("{:>12}  {}  {:<20}{}\n", e.at, hex4(e.pc), dis.text, changed);
+        out += fmt::format("{:>12}  {}  {:<20}{}\n", e.at, hex4h(e.pc), dis.text, changed);
     }
     if (out.empty()) out = "No instructions in the history.\n";
     return out;

@@ -32,6 +32,23 @@ inline std::string lower_extension(const std::filesystem::path& p) {
     return e;
 }
 
+// `s` without leading and trailing blanks; `col`, if given, advances past the leading ones (the
+// column of what is left, for error messages).
+inline std::string_view trim_blanks(std::string_view s, int* col = nullptr) {
+    std::size_t a = 0;
+    while (a < s.size() && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+    std::size_t b = s.size();
+    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+    if (col) *col += static_cast<int>(a);
+    return s.substr(a, b - a);
+}
+
+// An address as the listings write it: "1B32H".
+inline std::string hex4h(std::uint16_t v) {
+    static constexpr char kDigits[] = "0123456789ABCDEF";
+    return {kDigits[v >> 12], kDigits[(v >> 8) & 15], kDigits[(v >> 4) & 15], kDigits[v & 15], 'H'};
+}
+
 // Text for XML (JUnit reports, SVG titles): the five entities escaped; control characters XML 1.0
 // does not allow become '?'.
 inline std::string xml_escape(std::string_view s) {
