@@ -6,6 +6,7 @@
 
 #include "asm/asm85.h"
 #include "asm/lexer.h"
+#include "asm/version.h"
 #include "emu/util/atomic_file.h"
 
 namespace {
@@ -60,6 +61,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 64));
     app.add_flag("-q,--quiet", quiet, "Print errors only, no warnings");
     app.add_flag("--no-unused-macro-warnings", no_unused, "Don't warn about macros that are never used");
+    app.set_version_flag("--version", "asm85 " + std::string(alp85::version()),
+                         "Print the version (and the git commit of the build) and exit");
     app.footer(kExamples);
     try {
         app.parse(argc, argv);

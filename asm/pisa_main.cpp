@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "asm/pisa_asm.h"
+#include "asm/version.h"
 #include "emu/util/atomic_file.h"
 
 int main(int argc, char** argv) {
@@ -18,6 +19,8 @@ int main(int argc, char** argv) {
     app.add_option("--lst", lst_out, "Listing output");
     app.add_option("--map", map_out, "JSON map output (symbols, word -> source line)");
     app.add_option("-D,--define", defines, "Define NAME or NAME=VALUE before assembly");
+    app.set_version_flag("--version", "pisa-asm " + std::string(alp85::version()),
+                         "Print the version (and the git commit of the build) and exit");
     app.footer("Diagnostics are written as file:line:col: error: message.\n"
                "Exit status: 0 success; 1 an error in the source or an output that cannot be written (then no\n"
                "output file is written); 2 a usage error.");

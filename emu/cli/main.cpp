@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "asm/version.h"
 #include "emu/cli/commands.h"
 
 int main(int argc, char** argv) {
@@ -9,6 +10,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.footer("Exit status: 0 success, 2 a usage error (unknown option, missing argument); each command's\n"
                "--help lists its own.");
+    app.set_version_flag("--version", "alp85 " + std::string(alp85::version()),
+                         "Print the version (and the git commit of the build) and exit");
     int status = 0;
     alp85::cli::add_cpm_command(app, status);
     alp85::cli::add_bench_command(app, status);
