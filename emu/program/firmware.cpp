@@ -1,6 +1,9 @@
 #include "emu/program/firmware.h"
 
 #include <stdexcept>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
 
 #include "emu/program/ihex.h"
 
@@ -24,8 +27,28 @@ extern const char kMasterHex[], kMasterMap[];  // emu/embed_text.cmake
 namespace alp85::firmware {
 namespace {
 
+namespace fs = std::filesystem;
+
+// The build embeds asm85's maps, which name their sources by the paths they were assembled from
+// (in the source tree). An installed alp85 reads them with the installed copies' paths instead,
+// so that the debugger lists and binds source lines without the source tree.
+std::string with_sources_located(const char* map) {
+    nlohmann::json j = nlohmann::json::parse(map, nullptr, /*allow_exceptions=*/false);
+    if (!j.is_object() || !j.contains("files") || !j["files"].is_array()) return map;
+    bool moved = false;
+    for (auto& file : j["files"]) {
+        if (!file.is_string()) continue;
+        std::string now = locate_source(file.get<std::string>());
+        if (now != file.get<std::string>()) {
+            file = std::move(now);
+            moved = true;
+        }
+    }
+    return moved ? j.dump() : std::string(map);
+}
+
 void load_map(Firmware& f, const char* map) {
-    if (const std::string err = f.symbols.load_map_text(map); !err.empty())
+    if (const std::string err = f.symbols.load_map_text(with_sources_located(map)); !err.empty())
         throw std::logic_error("the built-in " + f.name + " map is damaged: " + err);
 }
 
@@ -81,6 +104,33 @@ std::vector<Entry> builtin() {
     out.push_back({"master", "the master program at 3000H in the expansion EPROM, which it fits (firmware/master, docs/contours.md)"});
 #endif
     return out;
+}
+
+fs::path data_dir() {
+    static const fs::path dir = [] {
+        std::error_code ec;
+        // Installed: <prefix>/bin/alp85 and <prefix>/share/alp85 (ALP85_DATA_FROM_BIN, "../share/alp85"
+        // with GNUInstallDirs' defaults). /proc/self/exe is the executable the kernel ran.
+        if (const fs::path exe = fs::read_symlink("/proc/self/exe", ec); !ec) {
+            const fs::path installed = (exe.parent_path() / ALP85_DATA_FROM_BIN).lexically_normal();
+            if (fs::is_directory(installed / "firmware", ec)) return installed;
+        }
+        // A build folder: the source tree it was built from.
+        const fs::path source = ALP85_SOURCE_DIR;
+        if (fs::is_directory(source / "firmware", ec)) return source;
+        return fs::path{};
+    }();
+    return dir;
+}
+
+std::string locate_source(const std::string& path) {
+    const fs::path rel = fs::path(path).lexically_relative(ALP85_SOURCE_DIR);
+    if (rel.empty() || *rel.begin() == "..") return path;
+    const fs::path dir = data_dir();
+    if (dir.empty()) return path;
+    std::error_code ec;
+    const fs::path there = dir / rel;
+    return fs::exists(there, ec) ? there.string() : path;
 }
 
 std::optional<Firmware> find(std::string_view name) {

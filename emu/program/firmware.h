@@ -3,6 +3,7 @@
 // master program for the expansion EPROM (firmware/master).
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -37,5 +38,15 @@ struct Entry {
 std::vector<Entry> builtin();
 // The named firmware (image and symbols), or nullopt.
 std::optional<Firmware> find(std::string_view name);
+
+// ALP85's data folder: the firmware sources, images and maps, and the examples (cmake --install,
+// docs/install.md). Installed, it is <prefix>/share/alp85, found from the running executable
+// (<prefix>/bin/alp85); run from a build folder, it is the source tree it was built from. Empty
+// when neither exists.
+std::filesystem::path data_dir();
+// Where a source file named by a built-in map (a path in the source tree alp85 was built from)
+// is read: the same file under data_dir(), the installed copy for an installed alp85 (whether or
+// not that source tree is still there); else the path unchanged.
+std::string locate_source(const std::string& path);
 
 }  // namespace alp85::firmware
