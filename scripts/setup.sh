@@ -29,6 +29,9 @@ packages=(
   libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri
   xvfb xauth
   libedit-dev
+  # the Debian package and its test (scripts/package.sh, tests/install): dpkg-shlibdeps, man -l,
+  # the man pages from --help, the package check, the completion's helpers
+  dpkg-dev man-db help2man lintian bash-completion
 )
 # node and npm: Debian's, unless the machine already has both (a nodejs package of another
 # origin brings its own npm, which Debian's npm would conflict with).
