@@ -141,8 +141,8 @@ if [ -f /usr/share/bash-completion/bash_completion ]; then
     grep -q "\b$fw\b" <<<"$got" || fail "completion: firmware $fw missing ($got)"
     alp85 gui --help | grep -q "\b$fw\b" || fail "alp85 gui --help does not name $fw"
   done
-  touch a.alp b.txt
-  [ "$(complete_words alp85 script "")" = "a.alp" ] || fail "completion: script does not offer a.alp alone"
+  mkdir completion && touch completion/a.alp completion/b.txt
+  [ "$(cd completion && complete_words alp85 script "")" = "a.alp" ] || fail "completion: script does not offer a.alp alone"
   complete_words asm85 --c | grep -qx -- --cpu || fail "completion: asm85 --cpu"
   [ "$(complete_words asm85 --cpu 8085 | sort | tr '\n' ' ')" = "8085 8085u " ] || fail "completion: asm85 --cpu 8085"
 else
