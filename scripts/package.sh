@@ -8,7 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$(nproc)"
-(cd build && cpack -G DEB --config CPackConfig.cmake >/dev/null)
+log=build/cpack.log
+(cd build && cpack -G DEB --config CPackConfig.cmake) >"$log" 2>&1 || { cat "$log"; exit 1; }
 deb=$(ls -t build/alp85_*.deb | head -1)
 echo "package: $deb"
 dpkg-deb --info "$deb" | sed -n 's/^ \(Package\|Version\|Depends\|Installed-Size\):/  \1:/p'
