@@ -11,7 +11,7 @@ build=$(cd "$1" && pwd) src=$(cd "$2" && pwd) version=$3 lintian=${4:-}
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/alp85-install.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
-step() { echo "== $*"; }
+step() { echo "== $* (at ${SECONDS} s)"; }
 
 step "cpack -G DEB"
 cpack -G DEB --config "$build/CPackConfig.cmake" -B "$tmp/pkg" >"$tmp/cpack.log" 2>&1 || { cat "$tmp/cpack.log"; fail "cpack"; }
@@ -153,4 +153,4 @@ if [ -n "$lintian" ]; then
   step "lintian"
   "$lintian" --fail-on error --suppress-tags-from-file /dev/null "$deb" || fail "lintian found errors"
 fi
-echo "install:deb passed"
+echo "install:deb passed (${SECONDS} s)"
