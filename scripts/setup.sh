@@ -30,8 +30,8 @@ packages=(
   xvfb xauth
   libedit-dev
   # the Debian package and its test (scripts/package.sh, tests/install): dpkg-shlibdeps, man -l,
-  # the man pages from --help, the package check, the completion's helpers
-  dpkg-dev man-db help2man lintian bash-completion
+  # the man pages from --help, the package check, the bash completion's helpers, fish (its completion)
+  dpkg-dev man-db help2man lintian bash-completion fish
 )
 # node and npm: Debian's, unless the machine already has both (a nodejs package of another
 # origin brings its own npm, which Debian's npm would conflict with).

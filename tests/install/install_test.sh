@@ -11,6 +11,8 @@ build=$(cd "$1" && pwd) src=$(cd "$2" && pwd) version=$3 lintian=${4:-}
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/alp85-install.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
+# (Output is captured before grep -q reads it: grep -q stops at its first match, and under pipefail
+# the writer's SIGPIPE would fail a pipeline at random.)
 step() { echo "== $* (at ${SECONDS} s)"; }
 
 step "cpack -G DEB"
@@ -19,7 +21,7 @@ debs=("$tmp"/pkg/alp85_*.deb)
 [ ${#debs[@]} -eq 1 ] && [ -f "${debs[0]}" ] || fail "no single alp85_*.deb in $tmp/pkg"
 deb=${debs[0]}
 info=$(dpkg-deb --field "$deb" Package Version Maintainer Depends Section Description)
-echo "$info" | sed 's/^/  /' | head -8
+sed -n '1,8s/^/  /p' <<<"$info"
 grep -qx "Package: alp85" <<<"$info" || fail "Package is not alp85"
 grep -qx "Version: $version-1" <<<"$info" || fail "Version is not $version-1"
 grep -q "^Maintainer: .*<.*@.*>" <<<"$info" || fail "no Maintainer"
@@ -133,21 +135,34 @@ if [ -f /usr/share/bash-completion/bash_completion ]; then
       _alp85
       printf "%s\n" "${COMPREPLY[@]}"' _ "$usr/share/bash-completion/completions/alp85" "$@"
   }
-  complete_words alp85 "" | grep -qx script || fail "completion: no command script"
-  complete_words alp85 run --f | grep -qx -- --firmware || fail "completion: no run --firmware"
+  grep -qx script <<<"$(complete_words alp85 "")" || fail "completion: no command script"
+  grep -qx -- --firmware <<<"$(complete_words alp85 run --f)" || fail "completion: no run --firmware"
   got=$(complete_words alp85 run --firmware "" | sort | tr '\n' ' ')
   # The built-in firmware as alp85 itself names them (alp85 gui --help).
+  gui_help=$(alp85 gui --help)
   for fw in monitor thesis thesis-fixed master; do
     grep -q "\b$fw\b" <<<"$got" || fail "completion: firmware $fw missing ($got)"
-    alp85 gui --help | grep -q "\b$fw\b" || fail "alp85 gui --help does not name $fw"
+    grep -q "\b$fw\b" <<<"$gui_help" || fail "alp85 gui --help does not name $fw"
   done
   mkdir completion && touch completion/a.alp completion/b.txt
   [ "$(cd completion && complete_words alp85 script "")" = "a.alp" ] || fail "completion: script does not offer a.alp alone"
-  complete_words asm85 --c | grep -qx -- --cpu || fail "completion: asm85 --cpu"
+  grep -qx -- --cpu <<<"$(complete_words asm85 --c)" || fail "completion: asm85 --cpu"
   [ "$(complete_words asm85 --cpu 8085 | sort | tr '\n' ' ')" = "8085 8085u " ] || fail "completion: asm85 --cpu 8085"
 else
   fail "bash-completion is not installed (scripts/setup.sh installs it)"
 fi
+
+step "fish completion"
+command -v fish >/dev/null || fail "fish is not installed (scripts/setup.sh installs it)"
+fish_words() {  # the words fish would offer for the command line "$1" (alp85.fish loaded as fish does)
+  (cd completion && fish --no-config -c "set fish_complete_path $usr/share/fish/vendor_completions.d; complete -C '$1'" | cut -f1 | sort | tr '\n' ' ')
+}
+[ "$(fish_words "alp85 run --firmware ")" = "master monitor thesis thesis-fixed " ] || fail "fish: run --firmware: $(fish_words "alp85 run --firmware ")"
+grep -qw script <<<"$(fish_words "alp85 ")" || fail "fish: no command script"
+grep -qw thesis <<<"$(fish_words "alp85 bench ")" || fail "fish: no bench thesis"
+grep -qw -- --for <<<"$(fish_words "alp85 run --f")" || fail "fish: no run --for"
+grep -qw a.alp <<<"$(fish_words "alp85 script ")" || fail "fish: script does not offer a.alp"
+[ "$(fish_words "asm85 --cpu 8085")" = "8085 8085u " ] || fail "fish: asm85 --cpu 8085"
 
 if [ -n "$lintian" ]; then
   step "lintian"
