@@ -9,7 +9,8 @@
 set -euo pipefail
 build=$(cd "$1" && pwd) src=$(cd "$2" && pwd) version=$3 lintian=${4:-}
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/alp85-install.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
+lintian_pid=
+trap '[ -n "$lintian_pid" ] && kill "$lintian_pid" 2>/dev/null; rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 # (Output is captured before grep -q reads it: grep -q stops at its first match, and under pipefail
 # the writer's SIGPIPE would fail a pipeline at random.)
@@ -29,6 +30,12 @@ grep -q "^Maintainer: .*<.*@.*>" <<<"$info" || fail "no Maintainer"
 for lib in libc6 libstdc++6 libsdl2 libcairo2 libedit2; do
   grep -q "^Depends:.*\b$lib\b" <<<"$info" || fail "Depends does not name $lib"
 done
+
+# lintian (several seconds) checks the package meanwhile; its verdict is read at the end.
+if [ -n "$lintian" ]; then
+  "$lintian" --fail-on error "$deb" >"$tmp/lintian.log" 2>&1 &
+  lintian_pid=$!
+fi
 
 step "dpkg -x into a fresh root"
 root=$tmp/root
@@ -166,6 +173,10 @@ grep -qw a.alp <<<"$(fish_words "alp85 script ")" || fail "fish: script does not
 
 if [ -n "$lintian" ]; then
   step "lintian"
-  "$lintian" --fail-on error --suppress-tags-from-file /dev/null "$deb" || fail "lintian found errors"
+  status=0
+  wait "$lintian_pid" || status=$?
+  lintian_pid=
+  sed 's/^/  /' "$tmp/lintian.log"
+  [ "$status" -eq 0 ] || fail "lintian found errors (status $status)"
 fi
 echo "install:deb passed (${SECONDS} s)"
