@@ -87,7 +87,7 @@ void draw_key_map(bool debug) {
     const Rect r = kKeyMapRect;
     ImGui::SetNextWindowPos({r.x, r.y});
     ImGui::SetNextWindowSize({r.w, r.h});
-    ImGui::SetNextWindowBgAlpha(0.96f);
+    ImGui::SetNextWindowBgAlpha(1.0f);
     ImGui::Begin("Key map (F1 or ? to close)", nullptr,
                  ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
     ImGui::TextUnformatted("The ALP 85's keypad from the PC's keyboard, and the mouse:");

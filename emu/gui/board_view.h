@@ -18,6 +18,6 @@ void draw_display(ImDrawList* dl, Backdrop& bd, const std::array<std::uint8_t, 8
 void draw_keypad(ImDrawList* dl, const Presser& presser);
 // The key map (F1 or ?): a window over the middle of the picture.
 void draw_key_map(bool debug);
-inline constexpr Rect kKeyMapRect{340, 150, 600, 470};
+inline constexpr Rect kKeyMapRect{340, 150, 600, 340};
 
 }  // namespace alp85::gui
