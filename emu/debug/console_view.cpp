@@ -189,15 +189,14 @@ std::string Console::cmd_x(std::string_view a, int col) {
     return examine(addr, count, x_format_, x_unit_, next_x_);
 }
 
-std::string Console::examine(std::uint16_t addr, int count, char fmt_letter, char unit, std::uint16_t& next) {
-    const char x_format_ = fmt_letter, x_unit_ = unit;
+std::string Console::examine(std::uint16_t addr, int count, char f, char unit, std::uint16_t& next) {
     const Machine& m = d_.machine();
     std::string out;
     auto label = [&](std::uint16_t at) {
         const auto n = d_.program().data_name_at(at);  // a label or an address EQU, not a constant
         return n ? fmt::format("{} <{}>", hex4h(at), *n) : hex4h(at);
     };
-    if (x_format_ == 'i') {
+    if (f == 'i') {
         for (int i = 0; i < count; ++i) {
             const auto dis = disassemble(m.bus(), addr, m.cpu().variant(), &d_.program());
             const auto routine = d_.program().routine_at(addr);  // code: named by its routine, as gdb's <main+4>
@@ -205,7 +204,7 @@ std::string Console::examine(std::uint16_t addr, int count, char fmt_letter, cha
                                routine ? fmt::format("{} <{}>", hex4h(addr), *routine) : hex4h(addr), dis.text);
             addr = static_cast<std::uint16_t>(addr + dis.length);
         }
-    } else if (x_format_ == 's') {
+    } else if (f == 's') {
         for (int i = 0; i < count; ++i) {
             std::string s;
             const std::uint16_t start = addr;
@@ -218,23 +217,23 @@ std::string Console::examine(std::uint16_t addr, int count, char fmt_letter, cha
             out += fmt::format("{}:\t\"{}\"\n", label(start), s);
         }
     } else {
-        const int per_line = x_unit_ == 'b' ? 8 : 4;
+        const int per_line = unit == 'b' ? 8 : 4;
         for (int i = 0; i < count;) {
             const std::uint16_t line_start = addr;
             std::string vals, ascii;
             for (int k = 0; k < per_line && i < count; ++k, ++i) {
-                if (x_unit_ == 'b') {
+                if (unit == 'b') {
                     const std::uint8_t b = m.peek(addr);
-                    vals += ' ' + (x_format_ == 'a' ? fmt::format("{:02X}", b) : format_value(b, 8, x_format_ == 'c' ? 'c' : x_format_));
+                    vals += ' ' + (f == 'a' ? fmt::format("{:02X}", b) : format_value(b, 8, f == 'c' ? 'c' : f));
                     ascii += b >= 0x20 && b < 0x7F ? static_cast<char>(b) : '.';
                     addr = static_cast<std::uint16_t>(addr + 1);
                 } else {
                     const auto w = static_cast<std::uint16_t>(m.peek(addr) | m.peek(static_cast<std::uint16_t>(addr + 1)) << 8);
-                    vals += ' ' + format_value(w, 16, x_format_ == 'a' || x_format_ == 'c' ? 'x' : x_format_);
+                    vals += ' ' + format_value(w, 16, f == 'a' || f == 'c' ? 'x' : f);
                     addr = static_cast<std::uint16_t>(addr + 2);
                 }
             }
-            out += fmt::format("{}:{}{}\n", label(line_start), vals, x_format_ == 'a' && x_unit_ == 'b' ? "  |" + ascii + "|" : "");
+            out += fmt::format("{}:{}{}\n", label(line_start), vals, f == 'a' && unit == 'b' ? "  |" + ascii + "|" : "");
         }
     }
     next = addr;
