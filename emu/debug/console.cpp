@@ -227,7 +227,9 @@ std::string Console::location_lines(std::uint16_t pc) {
 }
 
 std::string Console::describe(const Stop& s) {
-    selected_frame_ = 0;  // gdb: a stop selects the innermost frame
+    selected_frame_ = 0;  // gdb: a stop selects the innermost frame, and list starts at it again
+    next_list_.reset();
+    frame_line_.reset();
     std::string out;
     switch (s.reason) {
         case StopReason::Breakpoint:

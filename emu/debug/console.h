@@ -172,6 +172,7 @@ private:
     char x_format_ = 'x', x_unit_ = 'b';
     std::optional<SourceLine> next_list_;
     std::size_t selected_frame_ = 0;   // up, down, frame N; 0 again at every stop
+    std::optional<SourceLine> frame_line_;  // the selected frame's line: a plain list centres there
     std::vector<int> temporary_;       // tbreak numbers: their stops say "Temporary breakpoint N"
     bool in_fallback_ = false;
     std::string fallback_out_;

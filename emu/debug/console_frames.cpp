@@ -14,6 +14,8 @@ std::string Console::show_frame(std::size_t n) {
     const auto frames = d_.backtrace();
     if (n >= frames.size()) return error(1, "no such frame");
     const Frame& f = frames[n];
+    frame_line_ = f.line;  // list shows the selected frame's source, as gdb's
+    next_list_.reset();
     std::string out = fmt::format("#{:<2} {} in {}", n, hex4h(f.pc), f.routine ? *f.routine : "??");
     if (f.line) out += fmt::format(" at {}:{}", std::filesystem::path(f.line->file).filename().string(), f.line->line);
     out += '\n';

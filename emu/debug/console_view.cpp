@@ -295,7 +295,7 @@ std::string Console::cmd_list(std::string_view a, int col) {
     if (a.find(',') != std::string_view::npos) return list_range(a, col);
     std::optional<SourceLine> center;
     if (a.empty()) {
-        center = next_list_ ? next_list_ : d_.program().line_of(d_.machine().cpu().regs().pc);
+        center = next_list_ ? next_list_ : frame_line_ ? frame_line_ : d_.program().line_of(d_.machine().cpu().regs().pc);
         if (next_list_) center->line += 5;  // continues after the last listing
     } else {
         const auto colon = a.rfind(':');

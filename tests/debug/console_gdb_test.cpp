@@ -149,6 +149,8 @@ TEST_F(Gdb, UpDownFrameSelectTheCallers) {
     EXPECT_NE(shell.execute("down").find("Bottom (innermost) frame selected; you cannot go down."), std::string::npos);
     EXPECT_EQ(run("frame 2").rfind("#2 ", 0), 0u);
     EXPECT_EQ(run("f").rfind("#2 ", 0), 0u);
+    // list shows the selected frame's source: LOOP's CALL INPUT (L32) among the lines
+    EXPECT_NE(run("list").find("; L32"), std::string::npos);
 }
 
 TEST_F(Gdb, JumpContinuesAtTheLocation) {
