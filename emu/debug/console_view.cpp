@@ -243,12 +243,14 @@ std::string Console::examine(std::uint16_t addr, int count, char f, char unit, s
 // list FIRST,LAST (either may be left out): lines of one file; each end a line number (of the file
 // listed last, or the PC's), FILE:LINE, or a location.
 std::string Console::list_range(std::string_view a, int col) {
+    constexpr std::int64_t kMaxLine = 1'000'000;  // no source here is longer; keeps the arithmetic in range
     const auto comma = a.find(',');
     std::optional<SourceLine> here = next_list_ ? next_list_ : d_.program().line_of(d_.machine().cpu().regs().pc);
     auto end_of = [&](std::string_view t, int at, std::optional<SourceLine>& out) -> std::string {
         t = trim_blanks(t, &at);
         if (t.empty()) return {};
         if (const auto n = parse_int(t); n && t.find_first_not_of("0123456789") == std::string_view::npos) {
+            if (*n < 1 || *n > kMaxLine) return error(at, fmt::format("bad line number '{}'", t));
             if (!here) return error(at, "no file to list yet: list FILE:LINE,LINE");
             out = SourceLine{here->file, static_cast<int>(*n)};
             return {};
@@ -258,7 +260,7 @@ std::string Console::list_range(std::string_view a, int col) {
         out = d_.program().line_of(loc.addresses.front());
         if (!out) return error(at, fmt::format("no source line for {}", hex4h(loc.addresses.front())));
         if (const auto colon = t.rfind(':'); colon != std::string_view::npos)
-            if (const auto n = parse_int(t.substr(colon + 1))) out->line = static_cast<int>(*n);
+            if (const auto n = parse_int(t.substr(colon + 1)); n && *n >= 1 && *n <= kMaxLine) out->line = static_cast<int>(*n);
         return {};
     };
     std::optional<SourceLine> first, last;
