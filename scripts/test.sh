@@ -17,7 +17,8 @@ run_suite() {  # build dir, extra cmake args...
 }
 
 echo "== release build and tests (build/)"
-run_suite build -DCMAKE_BUILD_TYPE=Release
+# ... which also makes the GUI's pictures in docs/img (tests/gui)
+run_suite build -DCMAKE_BUILD_TYPE=Release -DALP85_DOC_IMAGES=ON
 
 if [ $sanitize -eq 1 ]; then
   echo "== ASan + UBSan build and tests (build-asan/)"

@@ -4,6 +4,7 @@
 // a session), --batch ends there. Exit status: 0, 1 a command failed in a batch session, 2 usage.
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <string_view>
 
 #include <editline/readline.h>
 #include <fmt/format.h>
@@ -41,7 +43,15 @@ char* next_match(const char*, int state) {
 char** complete(const char* text, int start, int) {
     rl_attempted_completion_over = 1;
     if (!g_completing) return nullptr;
-    g_matches = g_completing->console().complete(text, start == 0);
+    // The command the word follows (load, save, ... complete file names).
+    std::string_view line = rl_line_buffer ? std::string_view(rl_line_buffer) : std::string_view{};
+    line = line.substr(0, std::min<std::size_t>(static_cast<std::size_t>(start), line.size()));
+    const auto from = line.find_first_not_of(" \t");
+    const std::string_view command =
+        from == std::string_view::npos ? std::string_view{} : line.substr(from, line.find_first_of(" \t", from) - from);
+    g_matches = g_completing->console().complete(text, start == 0, command);
+    // A folder is completed without the space after it, so that its files can follow.
+    rl_completion_append_character = g_matches.size() == 1 && g_matches[0].ends_with('/') ? '\0' : ' ';
     return rl_completion_matches(text, next_match);
 }
 
@@ -179,6 +189,7 @@ void add_debug_command(CLI::App& app, int& status) {
             if (args->script.empty()) ok = run_lines(shell, std::cin, "<stdin>", true);
         } else if (!shell.console().quit_requested()) {
             if (isatty(STDIN_FILENO)) {
+                std::cout << shell.console().banner() << std::flush;
                 interactive(shell);
             } else {
                 run_lines(shell, std::cin, "", true);

@@ -39,6 +39,11 @@ void add_gui_command(CLI::App& app, int& status) {
     cmd->add_option("--expect-display", args->o.expect_display, "At exit the display must read this (else status 1)");
     cmd->add_option("--frames", args->frames, "Quit after this many frames");
     cmd->add_option("--seconds", args->seconds, "Quit after this many seconds");
+    cmd->add_option("--scale", args->o.scale,
+                    "The window's first size as a multiple of 1280x800 (2 on a HiDPI screen); default: as large as the "
+                    "screen allows, at most 1 (the window can be resized)")
+        ->check(CLI::Range(0.25, 4.0));
+    cmd->add_flag("--key-map", args->o.key_map, "Show the key map (F1 or ? toggles it)");
     cmd->add_flag("--stats", args->o.stats, "Print frames per second and the process's CPU use at exit");
     cmd->add_option("--speed", args->speed, "0.1, 1 (real time), 10, 100 or max")
         ->check(CLI::IsMember({"0.1", "1", "10", "100", "max"}))

@@ -321,10 +321,11 @@ std::vector<CallFrame> call_frames(const debug::Debugger& d, std::optional<std::
             const std::uint8_t op = m.peek(call);
             at = op == 0xCD || (op & 0xC7) == 0xC4 ? call : static_cast<std::uint16_t>(f.pc - 1);
         }
-        // The routine by its label (a caller's without the offset of its return address).
-        std::string routine = f.routine ? *f.routine : h4(at);
-        if (!out.empty()) routine = routine.substr(0, routine.find('+'));
-        out.push_back({fmt::format("{} ({})", routine, h4(at)), at, d.program().line_of(at)});
+        // The routine by its name (a caller's, at its CALL, without an offset); an address that no
+        // routine holds is named by the address alone, not twice.
+        std::optional<std::string> routine = out.empty() ? f.routine : d.program().routine_at(at);
+        if (routine && !out.empty()) routine = routine->substr(0, routine->find('+'));
+        out.push_back({routine ? fmt::format("{} ({})", *routine, h4(at)) : h4(at), at, d.program().line_of(at)});
     }
     return out;
 }

@@ -44,7 +44,7 @@ std::uint16_t variable_size(const SymbolTable& symbols, std::uint16_t address);
 std::optional<std::string> expression_value(const debug::Debugger& d, const std::string& text, std::string& error);
 
 struct CallFrame {
-    std::string name;                 // the routine (label at or before pc) and address
+    std::string name;                 // "ROUTINE (ADDR)" (SymbolTable::routine_at), or "ADDR" alone
     std::uint16_t pc = 0;
     std::optional<SourceLine> line;
 };

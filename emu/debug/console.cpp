@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -83,13 +84,17 @@ const std::vector<Console::CommandDef>& Console::commands() {
         {"reverse-continue", {"rc"}, &Console::cmd_rc, "reverse-continue: back to the previous breakpoint or watchpoint hit"},
         {"print", {"p", "inspect"}, &Console::cmd_print, "print[/x|d|t|c] EXPR: registers, flags, [HL], word[1B30H], symbols, arithmetic, comparison"},
         {"set", {}, &Console::cmd_set, "set [var] LVALUE = EXPR: a register, flag or memory; set history on|off"},
-        {"display", {"disp"}, &Console::cmd_display, "display[/FMT] EXPR: print EXPR after every stop (no EXPR: now)"},
+        {"display", {"disp"}, &Console::cmd_display, "display[/FMT] EXPR: print EXPR after every stop (no EXPR: now); /i and /s show memory at EXPR as x does (display/i $pc)"},
         {"undisplay", {"undisp"}, &Console::cmd_undisplay, "undisplay [N...]: stop displaying"},
         {"x", {}, &Console::cmd_x, "x/NFU ADDRESS: memory; F x d u o t c a s i, U b (byte) or w (16-bit word)"},
-        {"list", {"l"}, &Console::cmd_list, "list [LOCATION|FILE:LINE]: source around it (or around the PC)"},
+        {"list", {"l"}, &Console::cmd_list, "list [LOCATION|FILE:LINE|FIRST,LAST]: source around it (or around the PC); FIRST,LAST: those lines (numbers or locations)"},
         {"disassemble", {"disas"}, &Console::cmd_disassemble, "disassemble [LOCATION] [N]: N instructions with symbols and source lines"},
         {"backtrace", {"bt", "where"}, &Console::cmd_backtrace, "backtrace: the routines called, from the return addresses on the stack"},
-        {"info", {"i"}, &Console::cmd_info, "info registers|breakpoints|displays|display|8155|8279|axis [X|Y|Z]|line|frame"},
+        {"frame", {"f"}, &Console::cmd_frame, "frame [N]: select frame N of the backtrace (no N: show the selected one)"},
+        {"up", {}, &Console::cmd_up, "up [N]: select the frame N (default 1) calls out, the caller's"},
+        {"down", {"do"}, &Console::cmd_down, "down [N]: select the frame N (default 1) calls in"},
+        {"jump", {"j"}, &Console::cmd_jump, "jump LOCATION: continue at LOCATION (the PC set there, then continue)"},
+        {"info", {"i"}, &Console::cmd_info, "info registers|breakpoints|watchpoints|displays|display|8155|8279|axis [X|Y|Z]|line|frame|symbol ADDR"},
         {"history", {}, &Console::cmd_history, "history [N]: the last N instructions (default 10) with the registers each changed"},
         {"expect", {}, &Console::cmd_expect, "expect EXPR: an error unless EXPR is not 0 (for batch sessions); the script language's expect forms work too"},
         {"help", {"h"}, &Console::cmd_help, "help [COMMAND]"},
@@ -222,10 +227,16 @@ std::string Console::location_lines(std::uint16_t pc) {
 }
 
 std::string Console::describe(const Stop& s) {
+    selected_frame_ = 0;  // gdb: a stop selects the innermost frame, and list starts at it again
+    next_list_.reset();
+    frame_line_.reset();
     std::string out;
     switch (s.reason) {
         case StopReason::Breakpoint:
-            out += s.number ? fmt::format("\nBreakpoint {}, ", s.number) : "\nBreakpoint, ";
+            if (std::find(temporary_.begin(), temporary_.end(), s.number) != temporary_.end())
+                out += fmt::format("\nTemporary breakpoint {}, ", s.number);
+            else
+                out += s.number ? fmt::format("\nBreakpoint {}, ", s.number) : "\nBreakpoint, ";
             break;
         case StopReason::Watchpoint:
             if (s.number) {
@@ -328,7 +339,10 @@ std::string Console::cmd_tbreak(std::string_view a, int col) {
     const Debugger::Added r = d_.add_breakpoint(where, true, trim_blanks(cond));
     if (!r.number) return error(error_column(col, ccol, cond, r), r.error);
     const Breakpoint* b = d_.breakpoint(r.number);
-    return fmt::format("Temporary breakpoint {} at {}\n", b->number, hex4h(b->address));
+    temporary_.push_back(b->number);
+    std::string s = fmt::format("Temporary breakpoint {} at {}", b->number, hex4h(b->address));
+    if (b->line) s += fmt::format(": file {}, line {}.", std::filesystem::path(b->line->file).filename().string(), b->line->line);
+    return s + '\n';
 }
 
 std::string Console::cmd_watch(std::string_view a, int col) { return watch(a, col, WatchKind::Write); }
@@ -449,7 +463,7 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
         }
         spec.first = static_cast<std::uint16_t>(lo);
         spec.last = static_cast<std::uint16_t>(hi);
-        const auto name = d_.program().name_at(spec.first);
+        const auto name = d_.program().data_name_at(spec.first);
         const std::string label = name && dots == std::string_view::npos ? fmt::format("{} ", *name) : "";
         if (spec.first == spec.last) spec.what = fmt::format("byte {}({})", label, hex4h(spec.first));
         else if (spec.last == spec.first + 1) spec.what = fmt::format("word {}({})", label, hex4h(spec.first));
@@ -652,11 +666,27 @@ std::string Console::cmd_help(std::string_view a, int col) {
         if (!c) return error(col, err.empty() ? fmt::format("no command '{}'", a) : err);
         return std::string(c->help) + '\n';
     }
-    out += "Debugger commands (gdb's names; docs/debugging.md):\n";
+    out += "Debugger commands (gdb's names; docs/debugging.md); help COMMAND for one:\n";
+    // Each command whole: its names, then its help wrapped at 100 columns under the names.
+    constexpr std::size_t kWidth = 100, kIndent = 6;
     for (const CommandDef& c : commands()) {
         std::string names(c.name);
         for (std::string_view al : c.aliases) names += fmt::format(", {}", al);
-        out += fmt::format("  {:<28} {}\n", names, c.help.substr(0, c.help.find(':')));
+        out += fmt::format("  {}\n", names);
+        std::string line(kIndent, ' ');
+        std::string_view rest = c.help;
+        while (!rest.empty()) {
+            const std::size_t sp = rest.find(' ');
+            const std::string_view word = rest.substr(0, sp);
+            if (line.size() > kIndent && line.size() + 1 + word.size() > kWidth) {
+                out += line + '\n';
+                line.assign(kIndent, ' ');
+            }
+            if (line.size() > kIndent) line += ' ';
+            line += word;
+            rest = sp == std::string_view::npos ? std::string_view{} : rest.substr(sp + 1);
+        }
+        out += line + '\n';
     }
     out += "Every command of the script language works too (docs/scripting.md): firmware, load, press, type,\n"
            "run until, wait display, expect, save, restore, print display, print axes, ...\n";
@@ -668,10 +698,49 @@ std::string Console::cmd_quit(std::string_view, int) {
     return {};
 }
 
-std::vector<std::string> Console::complete(std::string_view word, bool first_word) const {
+std::string Console::banner() const {
+    return fmt::format("alp85 debug: the ALP 85's 8085 under a gdb-like debugger; {} symbols loaded.\n"
+                       "Type \"help\" for the commands (gdb's names), \"help COMMAND\" for one; docs/debugging.md.\n",
+                       d_.program().size());
+}
+
+namespace {
+// The files and folders whose names complete `word` (a folder ends in '/'); a leading quote kept.
+std::vector<std::string> file_names(std::string_view word) {
+    std::vector<std::string> out;
+    std::string w(word);
+    std::string quote;
+    if (!w.empty() && w.front() == '"') {
+        quote = "\"";
+        w.erase(0, 1);
+    }
+    const auto slash = w.rfind('/');
+    const std::string dir = slash == std::string::npos ? "" : w.substr(0, slash + 1);
+    const std::string stem = slash == std::string::npos ? w : w.substr(slash + 1);
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(dir.empty() ? "." : dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (!name.starts_with(stem) || (stem.empty() && name.starts_with('.'))) continue;
+        std::error_code e2;
+        out.push_back(quote + dir + name + (it->is_directory(e2) ? "/" : ""));
+    }
+    return out;
+}
+}  // namespace
+
+std::vector<std::string> Console::complete(std::string_view word, bool first_word, std::string_view command) const {
     std::vector<std::string> out;
     const std::string up = to_upper(word);
-    if (first_word) {
+    static constexpr std::string_view kFileCommands[] = {"load", "save", "restore", "record", "plot"};
+    const std::string cmd = [&] {
+        std::string c(command);
+        std::transform(c.begin(), c.end(), c.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+        return c;
+    }();
+    const bool file_command = std::find(std::begin(kFileCommands), std::end(kFileCommands), cmd) != std::end(kFileCommands);
+    if (!first_word && (file_command || word.find('/') != std::string_view::npos || word.starts_with('.') || word.starts_with('"'))) {
+        out = file_names(word);
+    } else if (first_word) {
         for (const CommandDef& c : commands())
             if (to_upper(c.name).starts_with(up)) out.emplace_back(c.name);
         for (std::string_view s : {"firmware", "load", "monitor", "press", "type", "keydown", "keyup", "wait", "expect",

@@ -6,8 +6,8 @@
 //   continue/c step/s stepi/si next/n nexti/ni finish/fin until/u advance run [for] TIME
 //   reverse-step/rs reverse-stepi/rsi reverse-next/rn reverse-nexti/rni reverse-finish/rfin
 //   reverse-continue/rc  print/p x display/disp undisplay set list/l disassemble/disas
-//   backtrace/bt info/i (registers breakpoints display displays 8155 8279 axis line frame)
-//   history help quit/q
+//   backtrace/bt frame/f up down jump/j info/i (registers breakpoints watchpoints display displays
+//   8155 8279 axis line frame symbol) history help quit/q
 //
 // A line it does not know goes to the fallback: `alp85 debug` passes it to the script language
 // (docs/scripting.md: load, firmware, press, type, run until, wait display, expect, save,
@@ -52,7 +52,11 @@ public:
     // Errors and failed fallback lines so far (batch sessions end with status 1 after one).
     int errors() const { return errors_; }
     // Command names and symbols that complete `word` (at the start of the line: commands).
-    std::vector<std::string> complete(std::string_view word, bool first_word) const;
+    // After a command that takes a file name (load, save, restore, record, plot, source, ...; given
+    // as `command`) or for a word that looks like a path, the files and folders that complete it.
+    std::vector<std::string> complete(std::string_view word, bool first_word, std::string_view command = {}) const;
+    // What `alp85 debug` says when it starts at a terminal (as gdb's banner).
+    std::string banner() const;
     // The stop as the console reports it (header, source line, displays); no commands run.
     std::string describe(const Stop& s);
     // What `info WHAT` shows (registers, 8155, 8279, axis, breakpoints, ...), for panes.
@@ -120,6 +124,10 @@ private:
     std::string cmd_list(std::string_view a, int col);
     std::string cmd_disassemble(std::string_view a, int col);
     std::string cmd_backtrace(std::string_view a, int col);
+    std::string cmd_frame(std::string_view a, int col);
+    std::string cmd_up(std::string_view a, int col);
+    std::string cmd_down(std::string_view a, int col);
+    std::string cmd_jump(std::string_view a, int col);
     std::string cmd_info(std::string_view a, int col);
     std::string cmd_history(std::string_view a, int col);
     std::string cmd_expect(std::string_view a, int col);
@@ -127,13 +135,21 @@ private:
     std::string cmd_quit(std::string_view a, int col);
     // info ...
     std::string info_registers();
-    std::string info_breakpoints();
+    std::string info_breakpoints(bool watchpoints_only = false);
+    std::string info_symbol(std::string_view a, int col);
+    std::string show_frame(std::size_t n);  // "#N ADDR in NAME at FILE:LINE" and its source line
+    // x's text for `count` units at `addr` in format `fmt` (x d u o t c a s i) and unit b/w; `next`:
+    // the address after them.
+    std::string examine(std::uint16_t addr, int count, char fmt, char unit, std::uint16_t& next);
     std::string info_displays();
     std::string info_8155();
     std::string info_8279();
     std::string info_axis(std::string_view which, int col);
     std::string info_display();
     std::string show_displays();
+    std::string list_range(std::string_view a, int col);
+    std::string list_lines(const std::string& file, int first, int last, int col);
+    std::string show_display(const Display& d);
 
     Debugger& d_;
     Fallback fallback_;
@@ -155,6 +171,9 @@ private:
     std::uint16_t next_x_ = 0;
     char x_format_ = 'x', x_unit_ = 'b';
     std::optional<SourceLine> next_list_;
+    std::size_t selected_frame_ = 0;   // up, down, frame N; 0 again at every stop
+    std::optional<SourceLine> frame_line_;  // the selected frame's line: a plain list centres there
+    std::vector<int> temporary_;       // tbreak numbers: their stops say "Temporary breakpoint N"
     bool in_fallback_ = false;
     std::string fallback_out_;
 };

@@ -120,15 +120,25 @@ std::string Console::cmd_expect(std::string_view a, int col) {
                                   d_.machine().cpu().regs().pc));
 }
 
+// One display: "N: EXPR = VALUE", or for /i and /s (memory at the value, as x shows it)
+// "N: x/i EXPR" and the instruction.
+std::string Console::show_display(const Display& d) {
+    try {
+        const std::int64_t v = d.expr.eval(d_.machine());
+        if (d.format == 'i' || d.format == 's') {
+            std::uint16_t next = 0;
+            return fmt::format("{}: x/{} {}\n", d.number, d.format, d.expr.text()) +
+                   examine(static_cast<std::uint16_t>(v), 1, d.format, 'b', next);
+        }
+        return fmt::format("{}: {} = {}\n", d.number, d.expr.text(), format_value(v, d.expr.width(), d.format));
+    } catch (const ExprError& x) {
+        return fmt::format("{}: {} = <{}>\n", d.number, d.expr.text(), x.message);
+    }
+}
+
 std::string Console::show_displays() {
     std::string out;
-    for (const Display& d : displays_) {
-        try {
-            out += fmt::format("{}: {} = {}\n", d.number, d.expr.text(), format_value(d.expr.eval(d_.machine()), d.expr.width(), d.format));
-        } catch (const ExprError& x) {
-            out += fmt::format("{}: {} = <{}>\n", d.number, d.expr.text(), x.message);
-        }
-    }
+    for (const Display& d : displays_) out += show_display(d);
     return out;
 }
 
@@ -139,12 +149,7 @@ std::string Console::cmd_display(std::string_view a, int col) {
     auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1, &vars_);
     if (!e) return error(err.col, err.message);
     displays_.push_back({++last_display_, f, std::move(*e)});
-    const Display& d = displays_.back();
-    try {
-        return fmt::format("{}: {} = {}\n", d.number, d.expr.text(), format_value(d.expr.eval(d_.machine()), d.expr.width(), f));
-    } catch (const ExprError& x) {
-        return fmt::format("{}: {} = <{}>\n", d.number, d.expr.text(), x.message);
-    }
+    return show_display(displays_.back());
 }
 
 std::string Console::cmd_undisplay(std::string_view a, int col) {
@@ -181,19 +186,25 @@ std::string Console::cmd_x(std::string_view a, int col) {
         if (!e) return error(err.col, err.message);
         addr = static_cast<std::uint16_t>(e->eval(d_.machine()));
     }
+    return examine(addr, count, x_format_, x_unit_, next_x_);
+}
+
+std::string Console::examine(std::uint16_t addr, int count, char f, char unit, std::uint16_t& next) {
     const Machine& m = d_.machine();
     std::string out;
     auto label = [&](std::uint16_t at) {
-        const auto n = d_.program().name_at(at);
+        const auto n = d_.program().data_name_at(at);  // a label or an address EQU, not a constant
         return n ? fmt::format("{} <{}>", hex4h(at), *n) : hex4h(at);
     };
-    if (x_format_ == 'i') {
+    if (f == 'i') {
         for (int i = 0; i < count; ++i) {
             const auto dis = disassemble(m.bus(), addr, m.cpu().variant(), &d_.program());
-            out += fmt::format("{}{}:\t{}\n", addr == m.cpu().regs().pc ? "=> " : "   ", label(addr), dis.text);
+            const auto routine = d_.program().routine_at(addr);  // code: named by its routine, as gdb's <main+4>
+            out += fmt::format("{}{}:\t{}\n", addr == m.cpu().regs().pc ? "=> " : "   ",
+                               routine ? fmt::format("{} <{}>", hex4h(addr), *routine) : hex4h(addr), dis.text);
             addr = static_cast<std::uint16_t>(addr + dis.length);
         }
-    } else if (x_format_ == 's') {
+    } else if (f == 's') {
         for (int i = 0; i < count; ++i) {
             std::string s;
             const std::uint16_t start = addr;
@@ -206,33 +217,87 @@ std::string Console::cmd_x(std::string_view a, int col) {
             out += fmt::format("{}:\t\"{}\"\n", label(start), s);
         }
     } else {
-        const int per_line = x_unit_ == 'b' ? 8 : 4;
+        const int per_line = unit == 'b' ? 8 : 4;
         for (int i = 0; i < count;) {
             const std::uint16_t line_start = addr;
             std::string vals, ascii;
             for (int k = 0; k < per_line && i < count; ++k, ++i) {
-                if (x_unit_ == 'b') {
+                if (unit == 'b') {
                     const std::uint8_t b = m.peek(addr);
-                    vals += ' ' + (x_format_ == 'a' ? fmt::format("{:02X}", b) : format_value(b, 8, x_format_ == 'c' ? 'c' : x_format_));
+                    vals += ' ' + (f == 'a' ? fmt::format("{:02X}", b) : format_value(b, 8, f == 'c' ? 'c' : f));
                     ascii += b >= 0x20 && b < 0x7F ? static_cast<char>(b) : '.';
                     addr = static_cast<std::uint16_t>(addr + 1);
                 } else {
                     const auto w = static_cast<std::uint16_t>(m.peek(addr) | m.peek(static_cast<std::uint16_t>(addr + 1)) << 8);
-                    vals += ' ' + format_value(w, 16, x_format_ == 'a' || x_format_ == 'c' ? 'x' : x_format_);
+                    vals += ' ' + format_value(w, 16, f == 'a' || f == 'c' ? 'x' : f);
                     addr = static_cast<std::uint16_t>(addr + 2);
                 }
             }
-            out += fmt::format("{}:{}{}\n", label(line_start), vals, x_format_ == 'a' && x_unit_ == 'b' ? "  |" + ascii + "|" : "");
+            out += fmt::format("{}:{}{}\n", label(line_start), vals, f == 'a' && unit == 'b' ? "  |" + ascii + "|" : "");
         }
     }
-    next_x_ = addr;
+    next = addr;
+    return out;
+}
+
+// list FIRST,LAST (either may be left out): lines of one file; each end a line number (of the file
+// listed last, or the PC's), FILE:LINE, or a location.
+std::string Console::list_range(std::string_view a, int col) {
+    constexpr std::int64_t kMaxLine = 1'000'000;  // no source here is longer; keeps the arithmetic in range
+    const auto comma = a.find(',');
+    std::optional<SourceLine> here = next_list_ ? next_list_ : d_.program().line_of(d_.machine().cpu().regs().pc);
+    auto end_of = [&](std::string_view t, int at, std::optional<SourceLine>& out) -> std::string {
+        t = trim_blanks(t, &at);
+        if (t.empty()) return {};
+        if (const auto n = parse_int(t); n && t.find_first_not_of("0123456789") == std::string_view::npos) {
+            if (*n < 1 || *n > kMaxLine) return error(at, fmt::format("bad line number '{}'", t));
+            if (!here) return error(at, "no file to list yet: list FILE:LINE,LINE");
+            out = SourceLine{here->file, static_cast<int>(*n)};
+            return {};
+        }
+        const auto loc = d_.locate(t);
+        if (!loc.error.empty()) return error(at + std::max(loc.col, 1) - 1, loc.error);
+        out = d_.program().line_of(loc.addresses.front());
+        if (!out) return error(at, fmt::format("no source line for {}", hex4h(loc.addresses.front())));
+        if (const auto colon = t.rfind(':'); colon != std::string_view::npos)
+            if (const auto n = parse_int(t.substr(colon + 1)); n && *n >= 1 && *n <= kMaxLine) out->line = static_cast<int>(*n);
+        return {};
+    };
+    std::optional<SourceLine> first, last;
+    if (std::string e = end_of(a.substr(0, comma), col, first); !e.empty()) return e;
+    if (std::string e = end_of(a.substr(comma + 1), col + static_cast<int>(comma) + 1, last); !e.empty()) return e;
+    if (!first && !last) return error(col, "expected FIRST,LAST (line numbers or locations)");
+    if (!first) first = SourceLine{last->file, std::max(1, last->line - 9)};
+    if (!last) last = SourceLine{first->file, first->line + 9};
+    if (first->file != last->file) return error(col, "FIRST and LAST are in different files");
+    if (last->line < first->line) return error(col, "a range is FIRST,LAST with FIRST <= LAST");
+    return list_lines(first->file, first->line, std::min(last->line, first->line + 9999), col);
+}
+
+std::string Console::list_lines(const std::string& file, int first, int last, int col) {
+    const auto pc_line = d_.program().line_of(d_.machine().cpu().regs().pc);
+    std::string out;
+    for (int l = std::max(1, first); l <= last; ++l) {
+        const auto src = source_line({file, l});
+        if (!src) {
+            if (l == std::max(1, first)) return error(col, fmt::format("line {} is beyond {} (or it cannot be read)", l, file_name(file)));
+            break;
+        }
+        const bool here = pc_line && pc_line->file == file && pc_line->line == l;
+        bool bp = false;
+        for (const Breakpoint& b : d_.breakpoints())
+            if (b.line && b.line->file == file && b.line->line == l) bp = true;
+        out += fmt::format("{}{}{:>5}\t{}\n", here ? "=>" : "  ", bp ? 'B' : ' ', l, *src);
+    }
+    next_list_ = SourceLine{file, last + 1};  // a plain list goes on after LAST
     return out;
 }
 
 std::string Console::cmd_list(std::string_view a, int col) {
+    if (a.find(',') != std::string_view::npos) return list_range(a, col);
     std::optional<SourceLine> center;
     if (a.empty()) {
-        center = next_list_ ? next_list_ : d_.program().line_of(d_.machine().cpu().regs().pc);
+        center = next_list_ ? next_list_ : frame_line_ ? frame_line_ : d_.program().line_of(d_.machine().cpu().regs().pc);
         if (next_list_) center->line += 5;  // continues after the last listing
     } else {
         const auto colon = a.rfind(':');
@@ -263,7 +328,7 @@ std::string Console::cmd_list(std::string_view a, int col) {
             if (b.line && b.line->file == center->file && b.line->line == l) bp = true;
         out += fmt::format("{}{}{:>5}\t{}\n", here ? "=>" : "  ", bp ? 'B' : ' ', l, *src);
     }
-    next_list_ = SourceLine{center->file, first + 5};
+    next_list_ = SourceLine{center->file, first + 10};  // a plain list goes on after these ten
     return out;
 }
 
@@ -344,7 +409,8 @@ std::string Console::info_registers() {
     return out;
 }
 
-std::string Console::info_breakpoints() {
+std::string Console::info_breakpoints(bool watchpoints_only) {
+    if (watchpoints_only && d_.watchpoints().empty()) return "No watchpoints.\n";
     if (d_.breakpoints().empty() && d_.watchpoints().empty()) return "No breakpoints or watchpoints.\n";
     std::string out = "Num  Type            Enb  Where\n";
     struct Row {
@@ -353,9 +419,10 @@ std::string Console::info_breakpoints() {
     };
     std::vector<Row> rows;
     for (const Breakpoint& b : d_.breakpoints()) {
+        if (watchpoints_only) break;
         std::string s = fmt::format("{:<4} {:<15} {:<4} {}", b.number, b.temporary ? "tbreakpoint" : "breakpoint", b.enabled ? "y" : "n",
                                     hex4h(b.address));
-        if (const auto n = d_.program().name_at(b.address)) s += " in " + *n;
+        if (const auto n = d_.program().routine_at(b.address)) s += " in " + *n;
         if (b.line) s += fmt::format(" at {}:{}", file_name(b.line->file), b.line->line);
         s += '\n';
         if (b.condition) s += fmt::format("        stop only if {}\n", b.condition->text());
@@ -459,8 +526,9 @@ std::string Console::cmd_info(std::string_view a, int col) {
     std::string_view rest = a.size() > what.size() ? trim_blanks(a.substr(what.size()), &wcol) : std::string_view{};
     wcol += static_cast<int>(what.size());
     if (what == "R" || what == "REG" || what == "REGISTERS" || what == "ALL-REGISTERS") return info_registers();
-    if (what == "B" || what == "BR" || what == "BREAK" || what == "BREAKPOINTS" || what == "WAT" || what == "WATCHPOINTS")
-        return info_breakpoints();
+    if (what == "B" || what == "BR" || what == "BREAK" || what == "BREAKPOINTS") return info_breakpoints();
+    if (what == "WAT" || what == "WATCH" || what == "WATCHPOINTS") return info_breakpoints(true);
+    if (what == "SYMBOL" || what == "SYM") return info_symbol(rest, wcol);
     if (what == "DISPLAYS") return info_displays();
     if (what == "DISPLAY") return info_display();
     if (what == "8155") return info_8155();
@@ -469,8 +537,8 @@ std::string Console::cmd_info(std::string_view a, int col) {
     if (what == "LINE" || what == "FRAME" || what == "F") return location_lines(d_.machine().cpu().regs().pc);
     if (what == "HISTORY") return fmt::format("history {}: {} snapshots from T = {}\n", d_.history() ? "on" : "off",
                                               d_.history_snapshots(), d_.history_start());
-    return error(col, what.empty() ? "info what? registers, breakpoints, displays, display, 8155, 8279, axis, line, history"
-                                   : fmt::format("no 'info {}' (registers, breakpoints, displays, display, 8155, 8279, axis, line, history)", a));
+    return error(col, what.empty() ? "info what? registers, breakpoints, watchpoints, displays, display, 8155, 8279, axis, line, symbol, history"
+                                   : fmt::format("no 'info {}' (registers, breakpoints, watchpoints, displays, display, 8155, 8279, axis, line, symbol, history)", a));
 }
 
 std::string Console::cmd_history(std::string_view a, int col) {

@@ -147,7 +147,7 @@ struct WatchSpec {
 struct Frame {
     std::uint16_t pc = 0;                // where this frame is (frame 0: the PC)
     std::uint16_t slot = 0;              // the stack address of its return address (frames > 0)
-    std::optional<std::string> routine;  // the label at or before pc
+    std::optional<std::string> routine;  // SymbolTable::routine_at(pc): "OUT", "O42+12", or none
     std::optional<SourceLine> line;
 };
 

@@ -239,11 +239,6 @@ std::optional<std::uint16_t> called_from(const Machine& m, const SymbolTable& pr
     if ((rst & 0xC7) == 0xC7 && rst != 0xFF && program.line_of(static_cast<std::uint16_t>(w - 1))) return rst & 0x38;
     return std::nullopt;
 }
-std::optional<std::string> routine_of(const SymbolTable& program, std::uint16_t pc) {
-    for (int back = 0; back < 1024 && back <= pc; ++back)
-        if (auto l = program.label_at(static_cast<std::uint16_t>(pc - back))) return back ? fmt::format("{}+{}", *l, back) : *l;
-    return std::nullopt;
-}
 }  // namespace
 
 std::optional<std::uint16_t> Debugger::return_slot() const {
@@ -255,7 +250,7 @@ std::optional<std::uint16_t> Debugger::return_slot() const {
 std::vector<Frame> Debugger::backtrace() const {
     std::vector<Frame> frames;
     const Registers& r = m_.cpu().regs();
-    frames.push_back({r.pc, 0, routine_of(program_, r.pc), program_.line_of(r.pc)});
+    frames.push_back({r.pc, 0, program_.routine_at(r.pc), program_.line_of(r.pc)});
     // A frame is accepted when its call's target is at or a little before the frame inside it
     // (a routine's code follows its entry); the first call-like word that does not chain ends the
     // stack: above it lie words of an older stack (the monitor's, before LXI SP). So does a gap of
@@ -273,7 +268,7 @@ std::vector<Frame> Debugger::backtrace() const {
         const auto target = called_from(m_, program_, w);
         if (!target) continue;  // pushed data
         if (*target > inner || inner - *target >= kRoutineReach) break;
-        frames.push_back({w, s, routine_of(program_, static_cast<std::uint16_t>(w - 1)), program_.line_of(w)});
+        frames.push_back({w, s, program_.routine_at(w), program_.line_of(w)});  // named as finish names it
         inner = w;
         last_slot = slot + 2;
     }

@@ -77,6 +77,7 @@ public:
         ui_.speed = o.speed;
         pacer_.set_speed(kSpeeds[static_cast<std::size_t>(o.speed)].factor, machine().now(), HostClock::now());
         clicks_ = o.clicks;
+        key_map_ = o.key_map;
         if (o.debug) {
             shell_.debugger().set_history(true);
             ui_.running = false;  // the debugger starts paused: Continue (or the prompt) runs it
@@ -137,6 +138,23 @@ private:
     long presented_ = 0;  // frames that changed the picture
     bool expose_ = true;
     double machine_s_ = 0, render_s_ = 0;  // host time in the machine and in drawing (--stats)
+    // The window's scaling: the drawable's size, the logical picture's place in it, and drawable
+    // pixels per window coordinate (2 on a HiDPI screen that reports points).
+    Size drawable_{kWindowWidth, kWindowHeight};
+    Fit fit_;
+    float dpi_ = 1;
+    void update_fit();
+    Vec2 window_to_logical(float x, float y) const { return to_logical(fit_, x * dpi_, y * dpi_); }
+    Vec2 logical_to_window(float x, float y) const {
+        const Vec2 p = to_window(fit_, x, y);
+        return {p.x / dpi_, p.y / dpi_};
+    }
+    // The table view's zoom and pan (mouse wheel, right drag, Home, End, double click).
+    TableCamera camera_;
+    bool panning_ = false;
+    float pan_x_ = 0, pan_y_ = 0;
+    bool table_input(const SDL_Event& e, const ImGuiIO& io);
+    bool key_map_ = false;
 };
 
 bool App::command(const std::string& text) {
@@ -193,7 +211,7 @@ int App::start() {
         std::vector<script::ParseError> more;
         session_.check(script_, more);  // this session keeps the assembled sources
         script_active_ = true;
-        ui_.add_log("script " + o_.script);
+        ui_.add_log("script " + std::filesystem::path(o_.script).filename().string());  // no folder of the user's in the picture
         after_commands();
         return 0;
     }
@@ -209,14 +227,92 @@ int App::start() {
     return 0;
 }
 
-void App::handle(const SDL_Event& e) {
-    ImGui_ImplSDL2_ProcessEvent(&e);
+void App::update_fit() {
+    int ww = 0, wh = 0;
+    SDL_GetWindowSize(window_, &ww, &wh);
+    SDL_GL_GetDrawableSize(window_, &drawable_.w, &drawable_.h);
+    dpi_ = ww > 0 ? static_cast<float>(drawable_.w) / static_cast<float>(ww) : 1.0f;
+    fit_ = fit_to(drawable_.w, drawable_.h);
+    // ImGui lays out and is hit-tested in the logical picture; the canvas scales it to the window.
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = {static_cast<float>(kWindowWidth), static_cast<float>(kWindowHeight)};
+    io.DisplayFramebufferScale = {1, 1};
+    if (io.MousePos.x > -1e30f && io.MousePos.y > -1e30f) {
+        const Vec2 p = window_to_logical(io.MousePos.x, io.MousePos.y);
+        io.MousePos = {p.x, p.y};
+    }
+}
+
+// The table view's mouse: the wheel zooms about the pointer, a right or middle drag pans, a
+// double click frames the toolpath; Home frames it too, End returns to the automatic fit.
+// Returns true when the event was the view's.
+bool App::table_input(const SDL_Event& e, const ImGuiIO& io) {
+    const TableView fitted = table_view(machine(), path_);
+    auto frame_path = [&] {
+        Bounds b = Bounds::none();
+        for (const PointMm& p : path_.points()) b.add(p.x, p.y);
+        if (b.empty()) b.add(machine().tool().table_mm(periph::MachineTool::Axis::X), machine().tool().table_mm(periph::MachineTool::Axis::Y));
+        b.x0 -= 1, b.y0 -= 1, b.x1 += 1, b.y1 += 1;  // a millimetre around it
+        camera_.frame(b);
+    };
+    switch (e.type) {
+        case SDL_MOUSEWHEEL: {
+            if (io.WantCaptureMouse) return false;
+            const ImVec2 m = io.MousePos;
+            if (!kTableRect.contains(m.x, m.y) || e.wheel.y == 0) return false;
+            camera_.zoom_at(fitted, m.x, m.y, std::pow(1.25, e.wheel.y));
+            return true;
+        }
+        case SDL_MOUSEBUTTONDOWN:
+            if (!kTableRect.contains(static_cast<float>(e.button.x), static_cast<float>(e.button.y))) return false;
+            if (e.button.button == SDL_BUTTON_RIGHT || e.button.button == SDL_BUTTON_MIDDLE) {
+                panning_ = true, pan_x_ = static_cast<float>(e.button.x), pan_y_ = static_cast<float>(e.button.y);
+                return true;
+            }
+            if (e.button.button == SDL_BUTTON_LEFT && e.button.clicks == 2) {
+                frame_path();
+                return true;
+            }
+            return false;
+        case SDL_MOUSEBUTTONUP:
+            if (panning_ && (e.button.button == SDL_BUTTON_RIGHT || e.button.button == SDL_BUTTON_MIDDLE)) {
+                panning_ = false;
+                return true;
+            }
+            return false;
+        case SDL_MOUSEMOTION:
+            if (!panning_) return false;
+            camera_.pan(fitted, static_cast<float>(e.motion.x) - pan_x_, static_cast<float>(e.motion.y) - pan_y_);
+            pan_x_ = static_cast<float>(e.motion.x), pan_y_ = static_cast<float>(e.motion.y);
+            return true;
+        case SDL_KEYDOWN:
+            if (io.WantTextInput) return false;
+            if (e.key.keysym.sym == SDLK_HOME) return frame_path(), true;
+            if (e.key.keysym.sym == SDLK_END) return camera_.reset(), true;
+            return false;
+        default: return false;
+    }
+}
+
+void App::handle(const SDL_Event& event) {
+    ImGui_ImplSDL2_ProcessEvent(&event);
     const ImGuiIO& io = ImGui::GetIO();
+    // The views hit-test in the layout's (logical) coordinates.
+    SDL_Event e = event;
+    if (e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP) {
+        const Vec2 p = window_to_logical(static_cast<float>(e.button.x), static_cast<float>(e.button.y));
+        e.button.x = static_cast<int>(std::floor(p.x)), e.button.y = static_cast<int>(std::floor(p.y));
+    } else if (e.type == SDL_MOUSEMOTION) {
+        const Vec2 p = window_to_logical(static_cast<float>(e.motion.x), static_cast<float>(e.motion.y));
+        e.motion.x = static_cast<int>(std::floor(p.x)), e.motion.y = static_cast<int>(std::floor(p.y));
+    }
+    if (!o_.debug && table_input(e, io)) return;
     switch (e.type) {
         case SDL_QUIT: quit_ = true; break;
         case SDL_WINDOWEVENT:
             if (e.window.event == SDL_WINDOWEVENT_CLOSE) quit_ = true;
-            if (e.window.event == SDL_WINDOWEVENT_EXPOSED) expose_ = true, canvas_.expose();
+            if (e.window.event == SDL_WINDOWEVENT_EXPOSED || e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED)
+                expose_ = true, canvas_.expose();
             break;
         case SDL_MOUSEBUTTONDOWN:
             if (o_.debug && e.button.button == SDL_BUTTON_LEFT) {
@@ -239,6 +335,10 @@ void App::handle(const SDL_Event& e) {
         case SDL_KEYDOWN:
         case SDL_KEYUP:
             if (io.WantTextInput || e.key.repeat) break;
+            if (e.type == SDL_KEYDOWN && is_key_map_key(e.key.keysym)) {
+                key_map_ = !key_map_;
+                break;
+            }
             if (const auto k = pad_key_for(e.key.keysym.sym)) {
                 if (e.type == SDL_KEYDOWN) presser_.down(*k, machine());
                 else presser_.up(*k, machine());
@@ -358,8 +458,9 @@ void App::drive_clicks() {
     e.button.button = SDL_BUTTON_LEFT;
     e.button.state = click_down_ ? SDL_RELEASED : SDL_PRESSED;
     e.button.clicks = 1;
-    e.button.x = static_cast<int>(c.x);
-    e.button.y = static_cast<int>(c.y);
+    const Vec2 w = logical_to_window(c.x, c.y);
+    e.button.x = static_cast<int>(w.x);
+    e.button.y = static_cast<int>(w.y);
     SDL_PushEvent(&e);  // handled at the start of the next frame, before the machine runs
     click_t_ = machine().now() + (click_down_ ? kClickGap : kKeyHold);
     if (click_down_) ++click_pos_;
@@ -392,8 +493,9 @@ void App::drive_debug_hooks() {
             e.button.button = SDL_BUTTON_LEFT;
             e.button.state = down ? SDL_PRESSED : SDL_RELEASED;
             e.button.clicks = 1;
-            e.button.x = static_cast<int>(c.x);
-            e.button.y = static_cast<int>(c.y);
+            const Vec2 w = logical_to_window(c.x, c.y);
+            e.button.x = static_cast<int>(w.x);
+            e.button.y = static_cast<int>(w.y);
             SDL_PushEvent(&e);
         }
         return;
@@ -446,7 +548,7 @@ void App::draw() {
         for (const Action& a : controls_panel(ui_)) act(a);
         return;
     }
-    const TableView view = table_view(machine(), path_);
+    const TableView view = camera_.apply(table_view(machine(), path_));
     draw_table(begin_layer("##table", kTableRect), backdrop_, machine(), path_, view);
     ImGui::End();
     draw_toolpath(begin_layer("##toolpath", kTableRect), machine(), path_, view);
@@ -487,8 +589,10 @@ int App::loop() {
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplSDL2_NewFrame();
+        update_fit();
         ImGui::NewFrame();
         draw();
+        if (key_map_) draw_key_map(o_.debug);
         ImGui::Render();
         const bool painted = canvas_.render(ImGui::GetDrawData(), backdrop_, colour::kBackground);
         ++frames_;
@@ -498,9 +602,16 @@ int App::loop() {
         if (end && !o_.screenshot.empty()) pending_shot_ = o_.screenshot;
         if (!pending_shot_.empty()) {
             try {
-                canvas_.bind_for_read();
-                save_screenshot(pending_shot_, kWindowWidth, kWindowHeight);
-                canvas_.unbind();
+                if (drawable_.w == kWindowWidth && drawable_.h == kWindowHeight) {
+                    canvas_.bind_for_read();
+                    save_screenshot(pending_shot_, kWindowWidth, kWindowHeight);
+                    canvas_.unbind();
+                } else {  // a scaled window: the picture as the window shows it
+                    canvas_.present(drawable_.w, drawable_.h, fit_, true);
+                    canvas_.bind_window_for_read();
+                    save_screenshot(pending_shot_, drawable_.w, drawable_.h);
+                    expose_ = true;
+                }
                 ui_.add_log("screenshot " + pending_shot_);
             } catch (const std::exception& x) {
                 std::cerr << "alp85 gui: " << x.what() << '\n';
@@ -509,7 +620,7 @@ int App::loop() {
             pending_shot_.clear();
         }
         if (painted || expose_) {  // the window is only sent a picture that changed
-            canvas_.present();
+            canvas_.present(drawable_.w, drawable_.h, fit_, expose_);
             SDL_GL_SwapWindow(window_);
             ++presented_;
             expose_ = false;
@@ -566,8 +677,14 @@ int run(const GuiOptions& o) {
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 0);
     SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+    // Resizable, scaled to the screen: at most 1:1 by default, so that it fits a 1366x768 laptop.
+    SDL_Rect usable{0, 0, kWindowWidth, kWindowHeight};
+    if (SDL_GetDisplayUsableBounds(0, &usable) != 0) usable = {0, 0, kWindowWidth + 40, kWindowHeight + 60};
+    const Size size = initial_window_size(o.scale, usable.w, usable.h);
     SDL_Window* window = SDL_CreateWindow("ALP85 - the ALP 85 and its machine tool", SDL_WINDOWPOS_CENTERED,
-                                          SDL_WINDOWPOS_CENTERED, kWindowWidth, kWindowHeight, SDL_WINDOW_OPENGL);
+                                          SDL_WINDOWPOS_CENTERED, size.w, size.h,
+                                          SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
+    if (window) SDL_SetWindowMinimumSize(window, kWindowWidth / 4, kWindowHeight / 4);
     SDL_GLContext gl = window ? SDL_GL_CreateContext(window) : nullptr;
     if (!gl) {
         std::cerr << "alp85 gui: cannot create an OpenGL 3 window: " << SDL_GetError() << '\n' << headless;

@@ -23,6 +23,8 @@ struct GuiOptions {
     periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
     std::string out_dir;                // where the script's files go (as alp85 script --out-dir)
     bool debug = false;                 // the debugger's panes in place of the machine tool's views
+    double scale = 0;                   // the window's first size: layout x scale; 0: fit the screen
+    bool key_map = false;               // open with the key map shown (F1 or ? toggles it)
     std::vector<std::string> click_lines;     // --debug test hook: click these FILE:LINE source rows
     std::vector<std::string> debug_commands;  // then run these debugger command lines
 };

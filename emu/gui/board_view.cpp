@@ -26,10 +26,12 @@ void draw_segment(ImDrawList* dl, const Segment& s, ImU32 col) {
 
 }  // namespace
 
+// The board as the ALP 85 is: a Euro-card (160 x 100 mm) trainer, green solder mask with white
+// silkscreen, mounting holes in the corners, the gold fingers of its edge connector, and on it the
+// eight-digit display behind its red filter and the keypad.
 void draw_display(ImDrawList* dl, Backdrop& bd, const std::array<std::uint8_t, 8>& segments) {
     const Rect b = kBoardRect, d = kDisplayRect;
     bd.fill(b, colour::kBoard);
-    dl->AddText({b.x + 10, b.y + 4}, IM_COL32(220, 230, 220, 255), "ALP 85");
     bd.fill(d, colour::kDisplayWindow);
     const ImU32 lit = to_imu32(colour::kSegmentLit), unlit = to_imu32(colour::kSegmentUnlit);
     for (unsigned digit = 0; digit < 8; ++digit) {
@@ -40,6 +42,24 @@ void draw_display(ImDrawList* dl, Backdrop& bd, const std::array<std::uint8_t, 8
 }
 
 void draw_keypad(ImDrawList* dl, const Presser& presser) {
+    // The card under the display and the keys (this layer covers the whole board).
+    const Rect b = kBoardRect, d = kDisplayRect;
+    const ImU32 silk = IM_COL32(226, 232, 222, 255), copper = IM_COL32(206, 168, 74, 255);
+    dl->AddRect({b.x + 3, b.y + 3}, {b.x + b.w - 3, b.y + b.h - 3}, IM_COL32(36, 96, 62, 255), 6, 0, 2);  // the card's edge
+    for (const Vec2 h : {Vec2{b.x + 12, b.y + 12}, Vec2{b.x + b.w - 12, b.y + 12}, Vec2{b.x + 12, b.y + b.h - 30},
+                         Vec2{b.x + b.w - 12, b.y + b.h - 30}}) {
+        dl->AddCircleFilled(v(h), 5, copper, 16);  // plated mounting holes
+        dl->AddCircleFilled(v(h), 2.5f, to_imu32(colour::kBackground), 12);
+    }
+    // Silkscreen: the board's name, between the holes.
+    dl->AddText({b.x + 28, b.y + 6}, silk, "ALP 85");
+    dl->AddText({b.x + 84, b.y + 6}, IM_COL32(170, 200, 176, 255), "8085 MICROCOMPUTER TRAINER   METU 1985");
+    dl->AddRect({d.x - 3, d.y - 3}, {d.x + d.w + 3, d.y + d.h + 3}, silk, 3, 0, 1);  // the display's outline
+    dl->AddText({d.x + d.w - 100, d.y + d.h + 5}, IM_COL32(170, 200, 176, 255), "DS1-DS8  8279");
+    // The edge connector's gold fingers along the bottom of the card.
+    const float fy = b.y + b.h - 16;
+    for (float x = b.x + 40; x + 6 < b.x + b.w - 40; x += 10) dl->AddRectFilled({x, fy}, {x + 6, b.y + b.h - 2}, copper, 1);
+
     for (const PadKey& k : pad_keys()) {
         const Rect r = key_rect(k);
         const bool digit = k.pad == Pad::Matrix && k.key <= periph::Key::KF;
@@ -56,10 +76,33 @@ void draw_keypad(ImDrawList* dl, const Presser& presser) {
                     hint.c_str());
     }
     const float y = kKeyY0 + 4 * kKeyPitchY + 2;
-    dl->AddText({kKeyX0, y}, IM_COL32(200, 220, 200, 255),
-                "PC keys in [ ]: 0-9 A-F, R, Enter = EXEC, Space = NEXT, Bksp = PREV,\n"
-                "G = GO, M = SUBST MEM, X = EXAM REG, S = SINGLE STEP, Esc = RESET,\n"
-                "V = VECT INTR. Click a key or type it; a press lasts at least 30 ms.");
+    dl->AddRect({kKeyX0 - 6, kKeyY0 - 6}, {kKeyX0 + 6 * kKeyPitchX + kKeyW + 6, kKeyY0 + 3 * kKeyPitchY + kKeyH + 6},
+                IM_COL32(170, 200, 176, 255), 4, 0, 1);  // the keypad's silkscreen outline
+    dl->AddText({kKeyX0, y + 6}, IM_COL32(200, 220, 200, 255),
+                "Click a key or type its PC key [ ]; a press lasts at least 30 ms.\n"
+                "F1 or ? shows the key map.");
+}
+
+void draw_key_map(bool debug) {
+    const Rect r = kKeyMapRect;
+    ImGui::SetNextWindowPos({r.x, r.y});
+    ImGui::SetNextWindowSize({r.w, r.h});
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    ImGui::Begin("Key map (F1 or ? to close)", nullptr,
+                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::TextUnformatted("The ALP 85's keypad from the PC's keyboard, and the mouse:");
+    ImGui::Separator();
+    if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+        for (const KeyMapRow& row : key_map_rows(debug)) {
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted(row.keys.data(), row.keys.data() + row.keys.size());
+            ImGui::TableSetColumnIndex(1);
+            ImGui::TextUnformatted(row.action.data(), row.action.data() + row.action.size());
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
 }
 
 }  // namespace alp85::gui

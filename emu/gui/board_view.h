@@ -16,5 +16,8 @@ ImU32 to_imu32(Rgb c, std::uint8_t alpha = 255);
 
 void draw_display(ImDrawList* dl, Backdrop& bd, const std::array<std::uint8_t, 8>& segments);
 void draw_keypad(ImDrawList* dl, const Presser& presser);
+// The key map (F1 or ?): a window over the middle of the picture.
+void draw_key_map(bool debug);
+inline constexpr Rect kKeyMapRect{340, 150, 600, 340};
 
 }  // namespace alp85::gui

@@ -188,9 +188,23 @@ void Canvas::paint(ImDrawData* dd, const std::vector<Rect>& damage) {
         for (ImDrawCmd& c : dd->CmdLists[i]->CmdBuffer) c.ClipRect = saved[k++];
 }
 
-void Canvas::present() {
+void Canvas::present(int dw, int dh, const Fit& fit, bool full) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    if (dw != w_ || dh != h_ || !fit.identity()) {
+        glViewport(0, 0, dw, dh);
+        glDisable(GL_SCISSOR_TEST);
+        glClearColor(0, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const int x0 = static_cast<int>(fit.ox), x1 = static_cast<int>(std::lround(fit.ox + static_cast<float>(w_) * fit.scale));
+        const int y1 = dh - static_cast<int>(fit.oy), y0 = dh - static_cast<int>(std::lround(fit.oy + static_cast<float>(h_) * fit.scale));
+        const bool whole = fit.scale == std::floor(fit.scale);
+        glBlitFramebuffer(0, 0, w_, h_, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, whole ? GL_NEAREST : GL_LINEAR);
+        present_full_ = true;  // back at 1:1, everything is copied again
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        return;
+    }
+    if (full) present_full_ = true;
     if (!software_ || present_full_) {
         glBlitFramebuffer(0, 0, w_, h_, 0, 0, w_, h_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         present_full_ = false;
@@ -206,6 +220,11 @@ void Canvas::present() {
 }
 
 void Canvas::unbind() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+
+void Canvas::bind_window_for_read() {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+}
 
 void Canvas::bind_for_read() {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);

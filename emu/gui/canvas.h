@@ -17,6 +17,7 @@
 #include <imgui.h>
 
 #include "emu/gui/backdrop.h"
+#include "emu/gui/layout.h"
 
 namespace alp85::gui {
 
@@ -34,11 +35,16 @@ public:
     // Copies the picture into the window's back buffer (then swap): with software OpenGL only what
     // this frame and the one before repainted (Mesa's software back buffer keeps its pixels across
     // a swap, and a pair of exchanged buffers would be one frame behind); with a GPU, all of it.
-    void present();
+    // The window's drawable is dw x dh and the picture lies in it at `fit` (layout.h); a scaled
+    // picture is copied whole, scaled (pixel-doubled at whole multiples, filtered otherwise), with
+    // the letterbox cleared. `full`: copy everything (the window was exposed or resized).
+    void present(int dw, int dh, const Fit& fit, bool full);
     bool software() const { return software_; }
     // Makes the picture the source of glReadPixels (screenshots).
     void bind_for_read();
     void unbind();
+    // Makes the window's back buffer (after present) the source of glReadPixels.
+    void bind_window_for_read();
     void invalidate() { full_ = true; }
     // The window lost its pixels (exposed): the next present copies everything.
     void expose() { present_full_ = true; }

@@ -144,8 +144,8 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     // ---- the chips ----
     ImGui::SetNextWindowPos({kChipsRect.x, kChipsRect.y});
     ImGui::SetNextWindowSize({kChipsRect.w, kChipsRect.h});
-    ImGui::Begin("8155 / 8279", nullptr, kPane | ImGuiWindowFlags_HorizontalScrollbar);
-    ImGui::TextUnformatted(p.chips.c_str());
+    ImGui::Begin("8155 / 8279", nullptr, kPane);
+    ImGui::TextWrapped("%s", p.chips.c_str());  // wrapped to the pane: no line cut at its edge
     ImGui::End();
 
     // ---- watch list ----

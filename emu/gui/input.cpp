@@ -38,6 +38,37 @@ std::optional<PadKey> pad_key_for(SDL_Keycode key) {
     }
 }
 
+bool is_key_map_key(const SDL_Keysym& k) {
+    return k.sym == SDLK_F1 || k.sym == SDLK_QUESTION || (k.sym == SDLK_SLASH && (k.mod & KMOD_SHIFT));
+}
+
+std::vector<KeyMapRow> key_map_rows(bool debug) {
+    std::vector<KeyMapRow> rows = {
+        {"0-9, A-F", "the hex keys"},
+        {"Enter", "EXEC"},
+        {"Space", "NEXT"},
+        {"Backspace", "PREV"},
+        {"R", "R (run a program: R 7 0800 EXEC)"},
+        {"G", "GO"},
+        {"M", "SUBST MEM"},
+        {"X", "EXAM REG"},
+        {"S", "SINGLE STEP"},
+        {"Esc", "RESET"},
+        {"V", "VECT INTR (RST 7.5)"},
+        {"click a key", "press it (held at least 30 ms of machine time)"},
+    };
+    if (!debug) {
+        rows.push_back({"wheel on the table", "zoom about the pointer"});
+        rows.push_back({"right or middle drag", "pan the table view"});
+        rows.push_back({"Home, double click", "frame the toolpath"});
+        rows.push_back({"End", "back to the automatic fit"});
+    } else {
+        rows.push_back({"click a source line", "set or clear a breakpoint"});
+    }
+    rows.push_back({"F1, ?", "show or hide this key map"});
+    return rows;
+}
+
 std::string_view pc_key_label(const PadKey& k) {
     if (k.pad == Pad::Reset) return "Esc";
     if (k.pad == Pad::Vect) return "V";

@@ -25,6 +25,13 @@ std::optional<PadKey> pad_key_for(SDL_Keycode key);
 std::string_view pc_key_label(const PadKey& k);
 // The caption on the keycap ("EXEC", "VECT INTR").
 std::string_view cap_label(const PadKey& k);
+// F1 or '?' (Shift+/ on most layouts): show or hide the key map.
+bool is_key_map_key(const SDL_Keysym& k);
+// What the keyboard and the mouse do, as rows of (keys, action), for the key map.
+struct KeyMapRow {
+    std::string_view keys, action;
+};
+std::vector<KeyMapRow> key_map_rows(bool debug);
 
 class Presser {
 public:

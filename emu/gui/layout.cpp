@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <string_view>
 
 namespace alp85::gui {
@@ -111,6 +112,52 @@ TableView TableView::fit(const Bounds& b, const Rect& r) {
 
 Vec2 TableView::to_px(double x_mm, double y_mm, const Rect& r) const {
     return {static_cast<float>(r.x + r.w / 2 + (x_mm - cx) * scale), static_cast<float>(r.y + r.h / 2 - (y_mm - cy) * scale)};
+}
+
+std::pair<double, double> TableView::to_mm(float x, float y, const Rect& r) const {
+    return {cx + (x - (r.x + r.w / 2)) / scale, cy - (y - (r.y + r.h / 2)) / scale};
+}
+
+TableView TableCamera::apply(const TableView& fitted) const {
+    TableView v = framed && !framed->empty() ? TableView::fit(*framed) : fitted;
+    v.scale *= zoom;
+    v.cx += dx, v.cy += dy;
+    return v;
+}
+
+void TableCamera::zoom_at(const TableView& fitted, float x, float y, double factor) {
+    const TableView before = apply(fitted);
+    const auto [mx, my] = before.to_mm(x, y);
+    zoom = std::clamp(zoom * factor, 0.05, 500.0);
+    const TableView after = apply(fitted);
+    const auto [ax, ay] = after.to_mm(x, y);
+    dx += mx - ax, dy += my - ay;
+}
+
+void TableCamera::pan(const TableView& fitted, float dx_px, float dy_px) {
+    const double s = apply(fitted).scale;
+    dx -= dx_px / s, dy += dy_px / s;
+}
+
+Fit fit_to(int w, int h) {
+    Fit f;
+    if (w <= 0 || h <= 0) return f;
+    f.scale = std::min(static_cast<float>(w) / kWindowWidth, static_cast<float>(h) / kWindowHeight);
+    f.ox = std::floor((static_cast<float>(w) - kWindowWidth * f.scale) / 2);
+    f.oy = std::floor((static_cast<float>(h) - kWindowHeight * f.scale) / 2);
+    return f;
+}
+
+Vec2 to_logical(const Fit& f, float x, float y) { return {(x - f.ox) / f.scale, (y - f.oy) / f.scale}; }
+Vec2 to_window(const Fit& f, float x, float y) { return {x * f.scale + f.ox, y * f.scale + f.oy}; }
+
+Size initial_window_size(double scale, int usable_w, int usable_h) {
+    if (scale <= 0) {
+        // Room for a title bar and a panel (about 60 pixels), and a margin at the sides.
+        const double fit = std::min({1.0, (usable_w - 40) / double(kWindowWidth), (usable_h - 60) / double(kWindowHeight)});
+        scale = std::max(fit, 0.25);
+    }
+    return {static_cast<int>(std::lround(kWindowWidth * scale)), static_cast<int>(std::lround(kWindowHeight * scale))};
 }
 
 Rect source_row(int i) {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 
 #include "peripherals/keypad.h"
 
@@ -53,8 +54,27 @@ inline constexpr Rgb kCurrentLine{90, 80, 20};     // the debugger's source pane
 inline constexpr Rgb kBreakpoint{230, 40, 40};     // its breakpoint dots
 }  // namespace colour
 
+// The layout below is logical: kWindowWidth x kWindowHeight. The window may be any size (it is
+// resizable); the picture is scaled to fit it with its proportions kept (letterboxed), so that a
+// 1366x768 laptop and a HiDPI screen both show all of it.
 inline constexpr int kWindowWidth = 1280;
 inline constexpr int kWindowHeight = 800;
+
+// Where the logical picture lies in a drawable of w x h pixels: scale, and the top left offset.
+struct Fit {
+    float scale = 1, ox = 0, oy = 0;
+    bool identity() const { return scale == 1 && ox == 0 && oy == 0; }
+};
+Fit fit_to(int w, int h);
+Vec2 to_logical(const Fit& f, float x, float y);
+Vec2 to_window(const Fit& f, float x, float y);
+// The window's first size: the logical size times `scale` when scale > 0; otherwise the largest
+// that fits a usable_w x usable_h desktop with room for a title bar and a panel, at most 1:1
+// (1366x768 gives 1133x708).
+struct Size {
+    int w = 0, h = 0;
+};
+Size initial_window_size(double scale, int usable_w, int usable_h);
 
 // ---- the board: eight digits ---------------------------------------------------------------------
 inline constexpr float kDigitX0 = 28, kDigitY0 = 44;  // top left of digit 1
@@ -128,6 +148,22 @@ struct TableView {
     double cx = 0, cy = 0;  // mm at the centre of the rect
     static TableView fit(const Bounds& b, const Rect& r = kTableRect);
     Vec2 to_px(double x_mm, double y_mm, const Rect& r = kTableRect) const;
+    // The mm under a pixel (the inverse of to_px).
+    std::pair<double, double> to_mm(float x, float y, const Rect& r = kTableRect) const;
+};
+
+// The user's zoom and pan of the table view, on top of the automatic fit: the mouse wheel zooms
+// about the pointer, a right (or middle) drag pans, Home (or a double click) frames the toolpath,
+// End goes back to the automatic fit.
+struct TableCamera {
+    double zoom = 1;          // times the fit's scale
+    double dx = 0, dy = 0;    // mm added to the fit's centre
+    std::optional<Bounds> framed;  // Home: the toolpath's bounds to fit instead of everything
+    TableView apply(const TableView& fitted) const;
+    void zoom_at(const TableView& fitted, float x, float y, double factor);  // keeps the mm under (x, y)
+    void pan(const TableView& fitted, float dx_px, float dy_px);
+    void frame(const Bounds& b) { *this = {}, framed = b; }
+    void reset() { *this = {}; }
 };
 
 }  // namespace alp85::gui

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -49,8 +50,8 @@ void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& 
     dl->AddRect(v(w0), v(w1), to_imu32(colour::kWorkpiece), 0, 0, 2);
     dl->AddText({w0.x + 4, w0.y + 2}, IM_COL32(230, 210, 170, 255), "workpiece");
     dl->PopClipRect();
-    dl->AddText({r.x + 6, r.y + 4}, IM_COL32(230, 230, 230, 255),
-                "X-Y table from above (mm from power-on): workpiece, ideal line (green), toolpath (blue), tool");
+    // The title fits the view (the Z gauge starts where the table ends); F1 tells the mouse's zoom and pan.
+    dl->AddText({r.x + 6, r.y + 4}, IM_COL32(230, 230, 230, 255), kTableTitle);
 }
 
 void draw_toolpath(ImDrawList* dl, const Machine& m, const Toolpath& path, const TableView& view) {
@@ -131,8 +132,13 @@ std::optional<periph::MachineTool::MotorModel> axes_panel(const AxesReadout& axe
     ImGui::Begin("Machine tool", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
     if (ImGui::BeginTable("axes", 9, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-        for (const char* h : {"axis", "mm", "steps", "commanded", "transducer", "lost", "end stop", "phases A /A B /B", "rotor deg"})
-            ImGui::TableSetupColumn(h);
+        // Headers whole: the narrow ones and the phase lamps at their own widths, the numbers share the rest.
+        for (const char* h : kAxisHeaders) {
+            const std::string_view name(h);
+            const bool fixed = name == "axis" || name.starts_with("phases");
+            ImGui::TableSetupColumn(h, fixed ? ImGuiTableColumnFlags_WidthFixed : ImGuiTableColumnFlags_WidthStretch,
+                                    fixed ? ImGui::CalcTextSize(h).x + 8 : 0.0f);
+        }
         ImGui::TableHeadersRow();
         for (int a = 0; a < 3; ++a) {
             const AxisReadout& x = axes[static_cast<std::size_t>(a)];

@@ -43,5 +43,10 @@ AxesReadout read_axes(const Machine& m);
 std::optional<periph::MachineTool::MotorModel> axes_panel(const AxesReadout& axes, periph::MachineTool::MotorModel model);
 
 inline constexpr float kToolRadius = 7;
+// The table view's title: it must fit kTableRect's width (the Z gauge follows).
+inline constexpr const char* kTableTitle = "X-Y table from above, mm: ideal line (green), toolpath (blue), tool";
+// The axis panel's column headers; "axis" and the phase lamps' get the width of their text.
+inline constexpr std::array<const char*, 9> kAxisHeaders{"axis", "mm", "steps", "commanded", "transducer", "lost", "end stop",
+                                                          "phases A /A B /B", "rotor deg"};
 
 }  // namespace alp85::gui

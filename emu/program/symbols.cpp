@@ -90,6 +90,7 @@ int SymbolTable::file_index(const std::string& file) {
 void SymbolTable::add_line(std::uint16_t address, std::uint16_t length, const std::string& file, int line) {
     if (length == 0) return;
     spans_.push_back({address, length, file_index(file), line});
+    starts_[address] = length;
 }
 
 std::optional<SourceLine> SymbolTable::line_of(std::uint16_t addr) const {
@@ -160,6 +161,46 @@ std::optional<std::string> SymbolTable::data_name_at(std::uint16_t value) const 
 std::optional<std::string> SymbolTable::label_at(std::uint16_t addr) const {
     if (auto it = labels_.find(addr); it != labels_.end()) return it->second;
     return std::nullopt;
+}
+
+std::optional<std::string> SymbolTable::code_name_at(std::uint16_t addr) const {
+    if (auto it = labels_.find(addr); it != labels_.end()) return it->second;
+    if (addr > 0xFF && starts_.contains(addr))
+        if (auto it = equates_.find(addr); it != equates_.end()) return it->second;
+    return std::nullopt;
+}
+
+std::optional<std::string> SymbolTable::routine_at(std::uint16_t addr) const {
+    constexpr int kReach = 1024;  // no routine of these programs is longer
+    // The nearest name at or before addr; any label (a data table's too) ends the routine before it.
+    std::optional<std::uint16_t> base;
+    std::string name;
+    if (auto it = labels_.upper_bound(addr); it != labels_.begin()) {
+        --it;
+        base = it->first;
+        name = it->second;
+    }
+    for (auto it = equates_.upper_bound(addr); it != equates_.begin();) {
+        --it;
+        if (base && it->first <= *base) break;
+        if (addr - it->first > kReach) break;
+        if (code_name_at(it->first) == it->second) {
+            base = it->first;
+            name = it->second;
+            break;
+        }
+    }
+    if (!base || addr - *base > kReach) return std::nullopt;
+    if (*base == addr) return name;
+    // Within the routine: instruction-sized lines, one after the other, from its name to addr.
+    std::uint32_t a = *base;
+    while (a < addr) {
+        const auto it = starts_.find(static_cast<std::uint16_t>(a));
+        if (it == starts_.end() || it->second > 3) return std::nullopt;
+        a += it->second;
+    }
+    if (a != addr) return std::nullopt;
+    return name + "+" + std::to_string(addr - *base);
 }
 
 std::optional<std::uint16_t> SymbolTable::value_of(std::string_view name) const {

@@ -48,6 +48,15 @@ public:
     std::optional<std::string> data_name_at(std::uint16_t value) const;
     // A label defined exactly here (for "LOOP:" lines in a listing).
     std::optional<std::string> label_at(std::uint16_t addr) const;
+    // The name of code at `addr`: a label, or an entry point named by EQU/SET (a value above 00FFH
+    // where a loaded line of code starts: ANWEIN EQU 0701H names the monitor's routine there,
+    // while KMODE EQU 0 is a constant). nullopt if none.
+    std::optional<std::string> code_name_at(std::uint16_t addr) const;
+    // The routine `addr` is in, as a debugger names a location: "NAME" at a code name, "NAME+N"
+    // when `addr` lies in the run of instructions that follows NAME (consecutive source lines of
+    // at most 3 bytes each, no other name between), nullopt otherwise: an address in a data
+    // table, a DS fill, or code without source lines gets no name rather than a far one.
+    std::optional<std::string> routine_at(std::uint16_t addr) const;
     std::optional<std::uint16_t> value_of(std::string_view name) const;  // case-insensitive
     std::size_t size() const { return by_name_.size(); }
     bool empty() const { return by_name_.empty(); }
@@ -76,6 +85,7 @@ private:
     std::unordered_map<std::string, std::uint16_t> by_name_;
     std::vector<std::string> files_;
     std::vector<Span> spans_;  // in load order
+    std::map<std::uint16_t, std::uint16_t> starts_;  // the first address of each line -> its length (last load wins)
 };
 
 // One instruction at `addr`, as the given variant decodes it, with a16/d16 operands named from

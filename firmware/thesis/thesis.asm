@@ -671,7 +671,11 @@ BITTI:  CALL    ANWAZL                  ; L589
         MVI     A,78H                   ; L597
         CALL    AUS                     ; L598
         MVI     A,04H                   ; L599
-        CALL    AUS                     ; L600
+        IF      FIXED
+        CALL    AUS                     ; FIX E11 the fifth letter (L600 RET)
+        ELSE
+        RET                             ; L600
+        ENDIF
         RET                             ; L601
 ; ;                                                                          ; L602
 ; ; END OF BITTI                                                             ; L603

@@ -63,5 +63,42 @@ TEST(Symbols, RejectsWhatIsNotAMap) {
     EXPECT_NE(syms.load_map_file("/nonexistent/map.json"), "");
 }
 
+// Names of locations, built by hand as the monitor lays them out: a routine (label, instructions
+// of 1-3 bytes), a data table (one 16-byte DB line), an FFH fill (one DS line), and an entry point
+// named only by EQU; constants named by small EQUs.
+TEST(Symbols, ARoutineNamesItsInstructionsOnlyAndAnEquNamesAnEntryPoint) {
+    SymbolTable t;
+    t.add("DIGIT", 0x05C0, "label");                   // MVI (2), CALL (3), RET (1)
+    t.add_line(0x05C0, 2, "m.asm", 10);
+    t.add_line(0x05C2, 3, "m.asm", 11);
+    t.add_line(0x05C5, 1, "m.asm", 12);
+    t.add("TABLE", 0x05C6, "label");                   // DB 16 bytes
+    t.add_line(0x05C6, 16, "m.asm", 13);
+    t.add_line(0x05D6, 0x0701 - 0x05D6, "m.asm", 14);  // DS up to the entry point, FFH
+    t.add("POLL", 0x0701, "equ");                      // the entry point: IN (2), ANI (2), RZ (1)
+    t.add_line(0x0701, 2, "m.asm", 20);
+    t.add_line(0x0703, 2, "m.asm", 21);
+    t.add_line(0x0705, 1, "m.asm", 22);
+    t.add("KMODE", 0x0000, "equ");                     // a constant
+    t.add("RAMVAR", 0x2000, "equ");                    // an address no line of code starts at
+    t.add_line(0x0000, 3, "m.asm", 1);
+
+    EXPECT_EQ(t.routine_at(0x05C0), "DIGIT");
+    EXPECT_EQ(t.routine_at(0x05C2), "DIGIT+2");
+    EXPECT_EQ(t.routine_at(0x05C5), "DIGIT+5");
+    EXPECT_EQ(t.routine_at(0x05C6), "TABLE");
+    EXPECT_EQ(t.routine_at(0x05D0), std::nullopt);    // inside the table
+    EXPECT_EQ(t.routine_at(0x0650), std::nullopt);    // in the fill: not TABLE+138
+    EXPECT_EQ(t.routine_at(0x0701), "POLL");          // 315 bytes after TABLE: the EQU's name
+    EXPECT_EQ(t.routine_at(0x0703), "POLL+2");
+    EXPECT_EQ(t.routine_at(0x0704), std::nullopt);    // mid-instruction
+    EXPECT_EQ(t.routine_at(0x0000), std::nullopt);    // KMODE is a constant
+    EXPECT_EQ(t.code_name_at(0x0701), "POLL");
+    EXPECT_EQ(t.code_name_at(0x0000), std::nullopt);
+    EXPECT_EQ(t.code_name_at(0x2000), std::nullopt);  // RAMVAR names data, not code
+    EXPECT_EQ(t.data_name_at(0x2000), "RAMVAR");
+    EXPECT_EQ(t.data_name_at(0x0000), std::nullopt);
+}
+
 }  // namespace
 }  // namespace alp85::test

@@ -72,6 +72,9 @@ test('entry, breakpoints of every kind, reverseContinue, goto, setVariable, memo
     let stop = await stopAfter(dc, dc.configurationDoneRequest());
     assert.equal(stop.reason, 'entry');
     assert.equal((await top(dc)).instructionPointerReference, '0x0000');
+    // 0000H (the monitor's JMP COLD) has no label, and KMODE EQU 0 is a constant: the frame is
+    // named by its address alone, once.
+    assert.equal((await top(dc)).name, '0000H');
 
     // A function breakpoint with a hit count: the third OUT is the one after two X steps.
     let r = await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'OUT', hitCondition: '3' }] });

@@ -6,7 +6,9 @@ Usage: terminal_test.py PATH/TO/alp85. Exit status 0 when every step saw what it
 import os
 import pty
 import select
+import shutil
 import sys
+import tempfile
 import time
 
 ALP85 = sys.argv[1]
@@ -50,7 +52,16 @@ class Terminal:
 
 def main():
     t = Terminal([ALP85, "debug", "thesis-fixed"])
-    t.read_until(PROMPT, 10)
+    banner = t.read_until(PROMPT, 10)
+    # A banner as gdb's: what this is and where help is.
+    assert b"alp85 debug" in banner and b"help" in banner, banner
+    # Tab completes a file name after a command that takes one (libedit).
+    folder = tempfile.mkdtemp()
+    open(os.path.join(folder, "walkthrough_prog.asm"), "w").write("        END\n")
+    t.type(f"load {folder}/walk\t\r")
+    out = t.read_until(PROMPT, 10)
+    assert b"through_prog.asm" in out and b"error" not in out, out  # the name completed, then loaded
+    shutil.rmtree(folder)
     # Tab completes a command's name: "brea<Tab>" becomes "break ".
     t.type("brea\tOUT\r")
     out = t.read_until(PROMPT, 10)

@@ -9,6 +9,11 @@
 //   gui_pixels SHOT.png --tool X,Y --bounds X0,Y0,X1,Y1 [--not-tool X,Y]
 //                                                  the tool's colour where the table view (fitted to
 //                                                  the bounds, mm) draws the table position X,Y
+//   gui_pixels SHOT.png --fits W,H | --size W,H ...
+//                                                  a scaled window: the screenshot lies within W x H
+//                                                  (or is exactly W x H), and every check above is
+//                                                  made where the scaled picture has that pixel
+//                                                  (layout.h's fit_to); without: exactly 1280 x 800
 // Exit status 0 when every check holds; each failure is printed.
 #include <cairo.h>
 
@@ -46,8 +51,10 @@ std::vector<std::string> split(const std::string& s) {
 }
 
 int failures = 0;
+Fit g_fit;  // where the logical picture lies in the screenshot
 
-void expect(const Image& img, Vec2 p, Rgb want, const std::string& what) {
+void expect(const Image& img, Vec2 logical, Rgb want, const std::string& what) {
+    const Vec2 p = to_window(g_fit, logical.x, logical.y);
     const int x = static_cast<int>(p.x), y = static_cast<int>(p.y);
     const Rgb got = img.at(x, y);
     if (!near(got, want)) {
@@ -71,7 +78,20 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "gui_pixels: cannot read %s\n", argv[1]);
         return 2;
     }
-    if (cairo_image_surface_get_width(img.s) != kWindowWidth || cairo_image_surface_get_height(img.s) != kWindowHeight) {
+    const int iw = cairo_image_surface_get_width(img.s), ih = cairo_image_surface_get_height(img.s);
+    bool scaled = false;
+    for (int i = 2; i + 1 < argc; i += 2) {
+        const std::string opt = argv[i];
+        if (opt != "--fits" && opt != "--size") continue;
+        const auto wh = split(argv[i + 1]);
+        const int w = std::stoi(wh.at(0)), h = std::stoi(wh.at(1));
+        const bool ok = opt == "--size" ? iw == w && ih == h : iw <= w && ih <= h;
+        std::printf("%s  the screenshot is %dx%d: %s %dx%d\n", ok ? "ok  " : "FAIL", iw, ih, opt == "--size" ? "expected" : "within", w, h);
+        if (!ok) return 1;
+        scaled = true;
+    }
+    if (scaled) g_fit = fit_to(iw, ih);
+    if (!scaled && (iw != kWindowWidth || ih != kWindowHeight)) {
         std::printf("FAIL the screenshot is %dx%d, the window %dx%d\n", cairo_image_surface_get_width(img.s),
                     cairo_image_surface_get_height(img.s), kWindowWidth, kWindowHeight);
         return 1;
@@ -104,9 +124,13 @@ int main(int argc, char** argv) {
                     ++failures;
                 }
             }
+        } else if (opt == "--fits" || opt == "--size") {
+            continue;
         } else if (opt == "--text-in") {
             // Text drawn: enough light pixels (ImGui's text is near white on the dark panes).
-            const int x0 = std::stoi(items[0]), y0 = std::stoi(items[1]), w = std::stoi(items[2]), h = std::stoi(items[3]);
+            const Vec2 a = to_window(g_fit, std::stof(items[0]), std::stof(items[1]));
+            const int x0 = static_cast<int>(a.x), y0 = static_cast<int>(a.y);
+            const int w = static_cast<int>(std::stof(items[2]) * g_fit.scale), h = static_cast<int>(std::stof(items[3]) * g_fit.scale);
             int light = 0;
             for (int y = y0; y < y0 + h; ++y)
                 for (int x = x0; x < x0 + w; ++x) {
@@ -131,7 +155,8 @@ int main(int argc, char** argv) {
         const TableView view = TableView::fit(b);
         expect(img, view.to_px(tool[0], tool[1]), colour::kTool, "tool at table X,Y mm " + std::to_string(tool[0]) + "," + std::to_string(tool[1]));
         if (not_tool.size() == 2) {
-            const Vec2 p = view.to_px(not_tool[0], not_tool[1]);
+            const Vec2 q = view.to_px(not_tool[0], not_tool[1]);
+            const Vec2 p = to_window(g_fit, q.x, q.y);
             if (near(img.at(static_cast<int>(p.x), static_cast<int>(p.y)), colour::kTool)) {
                 std::printf("FAIL the tool is also drawn at %g,%g mm\n", not_tool[0], not_tool[1]);
                 ++failures;

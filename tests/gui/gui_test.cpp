@@ -6,6 +6,7 @@
 #include "emu/gui/input.h"
 #include "emu/gui/layout.h"
 #include "emu/gui/pacer.h"
+#include "emu/gui/tool_view.h"
 #include "emu/gui/toolpath.h"
 
 namespace alp85::gui {
@@ -98,6 +99,116 @@ TEST(Toolpath, TheIdealLineStartsWhereTheTableStoodWhenTheMoveBegan) {
     const Bounds w = path.workpiece(m);
     EXPECT_DOUBLE_EQ(w.x1, 35);
     EXPECT_EQ(path.points().size(), 2u);
+}
+
+// The window on a 1366x768 laptop: the largest size that leaves room for a title bar and a panel,
+// with the 1280x800 layout's proportions: 708 = 768 - 60 rows, 708 / 800 = 0.885, 0.885 * 1280 = 1133.
+TEST(Window, TheFirstSizeFitsA1366x768Screen) {
+    const Size s = initial_window_size(0, 1366, 768);
+    EXPECT_EQ(s.w, 1133);
+    EXPECT_EQ(s.h, 708);
+    EXPECT_LE(s.w, 1366);
+    EXPECT_LE(s.h + 60, 768);
+    const Size big = initial_window_size(0, 2560, 1440);  // never larger than 1:1 unless asked
+    EXPECT_EQ(big.w, kWindowWidth);
+    EXPECT_EQ(big.h, kWindowHeight);
+    const Size hidpi = initial_window_size(2, 0, 0);
+    EXPECT_EQ(hidpi.w, 2 * kWindowWidth);
+    EXPECT_EQ(hidpi.h, 2 * kWindowHeight);
+}
+
+// A resized window: the picture keeps its proportions, centred; a point maps there and back.
+TEST(Window, ThePictureIsScaledIntoAnyWindowAndPointsMapBack) {
+    const Fit wide = fit_to(2000, 800);  // 800 rows: scale 1, centred with 360 columns each side
+    EXPECT_FLOAT_EQ(wide.scale, 1.0f);
+    EXPECT_FLOAT_EQ(wide.ox, 360.0f);
+    EXPECT_FLOAT_EQ(wide.oy, 0.0f);
+    const Fit twice = fit_to(2560, 1600);
+    EXPECT_FLOAT_EQ(twice.scale, 2.0f);
+    EXPECT_TRUE(fit_to(kWindowWidth, kWindowHeight).identity());
+    const Fit small = fit_to(640, 600);  // width-bound: 0.5, 100 rows above and below
+    EXPECT_FLOAT_EQ(small.scale, 0.5f);
+    EXPECT_FLOAT_EQ(small.oy, 100.0f);
+    const Vec2 c = key_rect(*find_pad_key("EXEC")).centre();
+    const Vec2 w = to_window(small, c.x, c.y);
+    EXPECT_FLOAT_EQ(w.x, c.x / 2);
+    EXPECT_FLOAT_EQ(w.y, c.y / 2 + 100);
+    const Vec2 back = to_logical(small, w.x, w.y);
+    EXPECT_FLOAT_EQ(back.x, c.x);
+    EXPECT_FLOAT_EQ(back.y, c.y);
+    const auto k = key_at(back.x, back.y);
+    ASSERT_TRUE(k);
+    EXPECT_EQ(k->key, periph::Key::Exec);
+}
+
+// Zoom about the pointer keeps the millimetre under it; a drag moves the view by the drag;
+// framing fits the given bounds.
+TEST(TableCameraTest, ZoomKeepsThePointUnderThePointerAndPanFollowsTheDrag) {
+    Bounds b = Bounds::none();
+    b.add(0, 0);
+    b.add(40, 30);
+    const TableView fitted = TableView::fit(b);
+    TableCamera cam;
+    const float px = kTableRect.x + 100, py = kTableRect.y + 80;
+    const auto [mx, my] = cam.apply(fitted).to_mm(px, py);
+    cam.zoom_at(fitted, px, py, 4);
+    const TableView z = cam.apply(fitted);
+    EXPECT_DOUBLE_EQ(z.scale, 4 * fitted.scale);
+    const auto [mx2, my2] = z.to_mm(px, py);
+    EXPECT_NEAR(mx2, mx, 1e-9);
+    EXPECT_NEAR(my2, my, 1e-9);
+    // a drag of 40 px right and 20 px down: the point under the pointer moves with it
+    const auto [ax, ay] = z.to_mm(px, py);
+    cam.pan(fitted, 40, 20);
+    const auto [bx, by] = cam.apply(fitted).to_mm(px + 40, py + 20);
+    EXPECT_NEAR(bx, ax, 1e-9);
+    EXPECT_NEAR(by, ay, 1e-9);
+    // Home frames the path: a 2 mm square fills the view
+    Bounds path = Bounds::none();
+    path.add(10, 10);
+    path.add(12, 12);
+    cam.frame(path);
+    const TableView f = cam.apply(fitted);
+    EXPECT_DOUBLE_EQ(f.scale, TableView::fit(path).scale);
+    EXPECT_DOUBLE_EQ(f.cx, 11);
+    cam.reset();
+    EXPECT_DOUBLE_EQ(cam.apply(fitted).scale, fitted.scale);
+}
+
+// F1 and ? open the key map, and it names every key of the pad's PC keys.
+TEST(KeyMap, F1OrQuestionMarkAndEveryPadKeyListed) {
+    SDL_Keysym f1{};
+    f1.sym = SDLK_F1;
+    EXPECT_TRUE(is_key_map_key(f1));
+    SDL_Keysym q{};
+    q.sym = SDLK_SLASH;
+    q.mod = KMOD_LSHIFT;
+    EXPECT_TRUE(is_key_map_key(q));
+    q.mod = KMOD_NONE;
+    EXPECT_FALSE(is_key_map_key(q));
+    std::string all;
+    for (const KeyMapRow& r : key_map_rows(false)) all += std::string(r.keys) + " " + std::string(r.action) + "\n";
+    for (const char* name : {"EXEC", "NEXT", "PREV", "GO", "SUBST MEM", "EXAM REG", "SINGLE STEP", "RESET", "VECT INTR", "zoom", "pan",
+                             "frame the toolpath"})
+        EXPECT_NE(all.find(name), std::string::npos) << name;
+}
+
+// Labels fit where they are drawn, in ImGui's default font (the one the window uses): the table's
+// title inside the table view, and the axis panel's headers within the panel's width.
+TEST(Labels, TheTableTitleAndTheAxisHeadersAreNotClipped) {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    io.DisplaySize = {static_cast<float>(kWindowWidth), static_cast<float>(kWindowHeight)};
+    ImGui::NewFrame();
+    EXPECT_LE(ImGui::CalcTextSize(kTableTitle).x + 6, kTableRect.w);
+    float headers = 0;
+    for (const char* hd : kAxisHeaders) headers += ImGui::CalcTextSize(hd).x + 2 * ImGui::GetStyle().CellPadding.x + 1;
+    EXPECT_LE(headers, kAxesRect.w - 2 * ImGui::GetStyle().WindowPadding.x);
+    ImGui::EndFrame();
+    ImGui::DestroyContext();
 }
 
 }  // namespace

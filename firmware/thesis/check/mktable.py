@@ -32,7 +32,7 @@ for i, t in enumerate(left): o(501 + i, t + (' (unnumbered row)' if i < 14 or i 
 for n, t in [(551,'LHLD 1B03H'),(552,'—'),(553,'SUB A'),(554,'—'),(555,'CALL ADDSUB'),(556,'LHLD 1812H'),(557,'SHLD 1BOCH'),
   (558,'LDA 1814H'),(559,'STA 160EH'),(560,'LHLD 1B40H'),(561,'SHLD 1B4CH'),(562,'LHLD 1842H'),(563,'SHLD 1B4EH'),(564,'RET'),
   (565,', , , , ,'),(566,':END OF PARAM'),(567,';'),(568,'; YID SUBROUTINE'),(569,','),(570,'YID: —'),(571,'(row "57 i") SHLD 1844H'),
-  (572,'LX1 H,0000H'),(573,'SHLD 1846H'),(574,'CALL MULT'),(600,'RET (the RET of 601 repeated)'),(601,'RET'),(602,', pur or plant'),
+  (572,'LX1 H,0000H'),(573,'SHLD 1846H'),(574,'CALL MULT'),(600,'RET (last row of the page; 601 RET heads the next)'),(601,'RET'),(602,', pur or plant'),
   (603,': END OF BITTI'),(604,', auby aupholiming'),(605,': OKEY SUBROUTINE'),(606,', , , , ,'),(607,'OKEY:LDA 1B06 H'),
   (608,'LXI H, 1B34 H (printed twice, second time as row 808)'),(638,'(unnumbered row) STA 1B54H'),(639,'(row 638) ANA A'),
   (640,'(row 639) JZ 000'),(641,'CPI 01H'),(642,'JZ 001'),(643,'CPI 02H'),(644,'12 002'),(645,'003: CALL COMPAR'),(646,'JNZ 031'),
@@ -109,7 +109,7 @@ r([570], 'lost; XAC is the multiplier (thesis 4.4.4: YID for the actual X)')
 r([575], 'sign of the product = sign of 1B43H, always +: erratum E5')
 r([581, 582], 'only the magnitude is kept: erratum E6; at X2 the truncated slope stops short: erratum E7')
 r([593], 'printed 78H ("t"): erratum E11, 04H ("i") in thesis-fixed')
-r([600], 'printed RET twice (600, 601); the fifth letter needs CALL AUS (line count)')
+r([600], 'as printed: a second RET (601 heads the next page), so 04H is never shown: erratum E11, CALL AUS in thesis-fixed')
 r([608], 'the OCR printed this line twice')
 r([640, 642, 644], '"000"/"001"/"002": letter O and digits (labels O00...)')
 r([646, 663, 681, 699], 'labels O31/O41/O11/O21 printed with 0 for O')

@@ -18,8 +18,8 @@ wait display "y2=----" timeout 200ms
 type 0 0 1 0 EXEC
 wait display "H=----" timeout 200ms
 type 1 5 0 0
-# line 829 of thesis.asm is the comment "; ; INPUT SUBROUTINE": it binds to INPUT (831)
-break thesis.asm:829
+# line 833 of thesis.asm is the comment "; ; INPUT SUBROUTINE": it binds to INPUT (835)
+break thesis.asm:833
 press EXEC hold 20ms gap 0ms
 continue
 expect reg PC INPUT

@@ -1,0 +1,36 @@
+# docs/scripting.md's Example is scripts/docs/scripting_example.alp, which the suite runs: the
+# block under "## Example" must be that file, line for line.
+#   cmake -DDOC=docs/scripting.md -DSCRIPT=scripts/docs/scripting_example.alp -P docs_example.cmake
+file(READ ${DOC} doc)
+file(READ ${SCRIPT} script)
+string(FIND "${doc}" "## Example\n" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "${DOC} has no '## Example' section")
+endif()
+string(SUBSTRING "${doc}" ${at} -1 rest)
+string(FIND "${rest}" "```\n" open)
+math(EXPR open "${open} + 4")
+string(SUBSTRING "${rest}" ${open} -1 rest)
+string(FIND "${rest}" "```" close)
+string(SUBSTRING "${rest}" 0 ${close} block)
+if(NOT block STREQUAL script)
+  message(FATAL_ERROR "the Example of ${DOC} is not ${SCRIPT}:\n--- doc\n${block}--- script\n${script}")
+endif()
+
+# Every table row of the page is inside a table (a row after a paragraph renders as raw pipes):
+# a line starting with '|' follows another such line, or is a header with its |---| line next.
+string(REPLACE ";" "\\;" doc_escaped "${doc}")
+string(REPLACE "\n" ";" lines "${doc_escaped}")
+set(previous "")
+set(header_next FALSE)
+foreach(line IN LISTS lines)
+  if(header_next)
+    if(NOT line MATCHES "^\\|[-| :]+\\|$")
+      message(FATAL_ERROR "${DOC}: a table row outside a table (after a non-table line): ${previous}")
+    endif()
+    set(header_next FALSE)
+  elseif(line MATCHES "^\\|" AND NOT previous MATCHES "^\\|")
+    set(header_next TRUE)
+  endif()
+  set(previous "${line}")
+endforeach()
