@@ -532,7 +532,7 @@ SDT     EQU     107                     ; T-states from STICK's STOP write to it
 FMIN    EQU     8000H                   ; 0.5 step a sample: 250 steps/s, start and stop
 AFS     EQU     328                     ; ramp: 0.16 steps a sample per sample (1250 steps/s^2)
 DWELL   EQU     20                      ; samples at rest at a stop point
-SKJ     EQU     36H                     ; a job's stage runs while the counter is above 3600H
+SKJ     EQU     31H                     ; a job's stage runs while the counter is above 3100H
 ; ; RAM, above the master's
 SFL     EQU     1C30H                   ; header flags (bit 0: ramp)
 FSV     EQU     1C31H                   ; F_s, the group's feed (0.16 steps a sample)
@@ -947,14 +947,26 @@ SCH1:   CALL    SSAMP
         LDA     DNF
         ANA     A
         RNZ
-        LDA     JST                     ; a job's stage in the sample's spare time: only while
-        ANA     A                       ; the counter stands above 3600H, so that the stage
-        JZ      SCH1                    ; (at most 4000 T-states) ends near the next tick; a
-        IN      0FDH                    ; sample late after a chord's set-up skips it
-        ANI     3FH
+        LDA     JST                     ; a job's stage in the sample's spare time (a stage takes
+        ANA     A                       ; at most 4000 T-states): while the counter stands above
+        JZ      SCH1                    ; 3100H (it then ends within 1.7 ms of the next tick), or
+        IN      0FDH                    ; when the chord has fewer than 8 steps to go, so that it
+        ANI     3FH                     ; is seldom left for after the chord
         CPI     SKJ
-        JC      SCH1
-        CALL    RUNJ
+        JNC     SCH2
+        LHLD    KST+2
+        XCHG
+        LHLD    CNV
+        MOV     A,L
+        SUB     E
+        MOV     L,A
+        MOV     A,H
+        SBB     D
+        JNZ     SCH1
+        MOV     A,L
+        CPI     08H
+        JNC     SCH1
+SCH2:   CALL    RUNJ
         JMP     SCH1
 ;
 ; ; SSAMP: one sample (the tick, the ramp, eqs. 4-6, POUT for the next tick)
