@@ -684,7 +684,8 @@ SHDR:   MVI     A,01H                   ; a stop point, the entry after the head
         LDA     SFL
         RRC
         JNC     SNXT1
-        SHLD    FCU                     ; the ramp starts at F_MIN
+        ANA     A                       ; the ramp starts at F_MIN, or at F_s below it
+        CALL    SLVL1
 SNXT1:  LHLD    EPTR
         LXI     D,0010H
         DAD     D

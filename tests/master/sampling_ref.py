@@ -25,7 +25,7 @@ first point can ask, is reached in the next sample).
 
 Feed (per sample, before the progress): f path steps per sample (0.16), dS_x = (f C_x) >> 16 with
 C_x = CXTAB[T_y >> 10] (64 entries, the cosine at the middle of each interval: eq. 4's C_x). With
-the ramp, the group starts at F_MIN and each sample either decelerates (L_rem <= D, the distance the
+the ramp, the group starts at F_MIN (or F_s if lower) and each sample either decelerates (L_rem <= D, the distance the
 deceleration down the levels it came up would need), or accelerates by A_F up to the group's F_s;
 L_rem -= f. Without it f = F_s from the first sample to the last.
 """
@@ -130,7 +130,7 @@ class Run:
                 self.lrem = (e["y"] << 16) | e["x"]
                 if self.lrem >= 1 << 31:
                     self.lrem -= 1 << 32
-                self.f = F_MIN if self.ramp else self.fs
+                self.f = min(F_MIN, self.fs) if self.ramp else self.fs
                 self.j = 0
                 self.d = 0
                 self.k = 0
