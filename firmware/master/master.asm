@@ -3,6 +3,8 @@
 ; ; does: X1 Y1 X2 Y2 at 1B00H..1B09H, DLYK at 1B38H, then PARAM and the YID/OKEY/OUT/INPUT loop.
 ; ; Arcs: Watanabe and Iwai, IECI '81, eq. 11: the centre angle of a segment is 2^-C_R rad, so each
 ; ; next end point comes from shifts; the first point is pushed out by eps_A = 2^(-2C_R-4) R.
+; ; A path that opens with a sampling header (type 5) runs by the paper's sampling interpolation
+; ; instead (SMP, section 2: both axes every 2 ms, a feed ramp), not by the thesis's line routine.
 ; ; Runs from the expansion EPROM (3000H, board option `expansion`); tables at 3D00H
 ; ; (alp85 gcode). docs/contours.md.
 ; ;
@@ -567,7 +569,6 @@ DSOK    EQU     1C79H                   ; 0: dS_x to compute
 UUV     EQU     1C7AH                   ; |du| (4)
 VVV     EQU     1C7EH                   ; |dv| (4)
 QHV     EQU     1C82H                   ; the quotient's high byte
-DVN     EQU     1C83H                   ; division steps to go
 DNF     EQU     1C84H                   ; 1: the chord ended in this sample
 DUS     EQU     1C85H                   ; sign of du (0 +, 1 -)
 DVS     EQU     1C86H                   ; sign of dv (0 +, 1 -, 2 zero)
