@@ -1,5 +1,5 @@
 // alp85 gcode FILE.nc... -o PATH.hex: G-code (the subset of docs/contours.md) to the master
-// program's path table in the expansion EPROM (3800H). Each file is one stored path, in order.
+// program's path table in the expansion EPROM (3D00H). Each file is one stored path, in order.
 // Exit status: 0 written, 1 a file refused (nothing written), 2 a usage error.
 #include <filesystem>
 #include <fstream>
@@ -20,6 +20,8 @@ void add_gcode_command(CLI::App& app, int& status) {
     struct Args {
         std::vector<std::string> files;
         std::string out;
+        std::string method = "thesis";
+        bool no_ramp = false;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("gcode", "G-code to the master program's path table (docs/contours.md)");
@@ -27,9 +29,16 @@ void add_gcode_command(CLI::App& app, int& status) {
         ->required()
         ->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", args->out, "The path table as Intel HEX (load it with the master program)")->required();
+    cmd->add_option("--method", args->method,
+                    "How the master draws segments: thesis (its line routine, the default) or sampling (Watanabe and "
+                    "Iwai's interpolation, 2 ms samples); a file's (METHOD SAMPLING) or (METHOD THESIS) comment wins")
+        ->check(CLI::IsMember({"thesis", "sampling"}));
+    cmd->add_flag("--no-ramp", args->no_ramp,
+                  "Sampling without the feed ramp (full feed from the first sample); a file's (RAMP ON) wins");
     cmd->footer(
         "Example:\n"
         "  alp85 gcode scripts/master/circle.nc -o circle.hex\n"
+        "  alp85 gcode --method sampling scripts/master/circle.nc -o circle.hex\n"
         "Exit status: 0 the table was written, 1 a file was refused (its errors are shown as\n"
         "file:line:col: error: ...; nothing is written), 2 a usage error.");
     cmd->callback([args, &status] {
@@ -45,7 +54,9 @@ void add_gcode_command(CLI::App& app, int& status) {
                 failed = true;
                 continue;
             }
-            paths.push_back(std::move(p.entries));
+            const bool sampling = p.method ? *p.method == gcode::Method::Sampling : args->method == "sampling";
+            const bool ramp = p.ramp ? *p.ramp : !args->no_ramp;
+            paths.push_back(sampling ? gcode::sampling_path(p.entries, ramp) : std::move(p.entries));
         }
         std::vector<std::uint8_t> bytes;
         if (!failed) {

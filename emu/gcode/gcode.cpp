@@ -70,6 +70,7 @@ private:
             } else if (c == '(') {
                 const auto close = s.find(')', i);
                 if (close == std::string_view::npos) return fail(col, "comment not closed: '(' without ')'");
+                if (!directive(s.substr(i + 1, close - i - 1), col)) return false;
                 i = close + 1;
             } else if (std::isalpha(static_cast<unsigned char>(c))) {
                 Word w{static_cast<char>(std::toupper(static_cast<unsigned char>(c))), 0, col};
@@ -91,6 +92,25 @@ private:
             } else {
                 return fail(col, fmt::format("unexpected character '{}'", c));
             }
+        }
+        return true;
+    }
+
+    // (METHOD SAMPLING), (METHOD THESIS), (RAMP ON), (RAMP OFF); other comments are free text.
+    bool directive(std::string_view body, int col) {
+        std::string t;
+        for (char ch : body) t += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        const auto a = t.find_first_not_of(" \t");
+        if (a == std::string::npos) return true;
+        t = t.substr(a, t.find_last_not_of(" \t") - a + 1);
+        if (t.rfind("METHOD", 0) == 0) {
+            if (t == "METHOD SAMPLING") out_.method = Method::Sampling;
+            else if (t == "METHOD THESIS") out_.method = Method::Thesis;
+            else return fail(col, "(METHOD ...) takes SAMPLING or THESIS");
+        } else if (t.rfind("RAMP", 0) == 0) {
+            if (t == "RAMP ON") out_.ramp = true;
+            else if (t == "RAMP OFF") out_.ramp = false;
+            else return fail(col, "(RAMP ...) takes ON or OFF");
         }
         return true;
     }
@@ -275,5 +295,92 @@ private:
 }  // namespace
 
 Parsed parse(std::string_view text) { return Parser().run(text); }
+
+namespace {
+
+struct Geometry {
+    double length = 0;        // of the polygon the sampling follows, steps
+    double start[2] = {0, 0}; // unit tangents at the start and the end (0, 0: no X-Y motion)
+    double end[2] = {0, 0};
+};
+
+// An entry's polygon (eqs. 8-11: the start, the vertices at R + eps_A every 2^-C_R rad, the end)
+// and its tangents.
+Geometry geometry(const Entry& e, double sx, double sy) {
+    Geometry g;
+    const double ex = e.x, ey = e.y;
+    if (e.kind != Kind::ArcCw && e.kind != Kind::ArcCcw) {
+        const double d = std::hypot(ex - sx, ey - sy);
+        g.length = d;
+        if (d > 0) g.start[0] = g.end[0] = (ex - sx) / d, g.start[1] = g.end[1] = (ey - sy) / d;
+        return g;
+    }
+    const double s = e.kind == Kind::ArcCcw ? 1.0 : -1.0;
+    const double r = std::hypot(sx - e.cx, sy - e.cy), rv = r * (1 + std::ldexp(1.0, -2 * e.cr - 4));
+    const double a0 = std::atan2(sy - e.cy, sx - e.cx), dphi = std::ldexp(1.0, -e.cr);
+    double px = sx, py = sy;
+    for (int k = 1; k <= e.n; ++k) {
+        const double a = a0 + s * dphi * k;
+        const double vx = e.cx + rv * std::cos(a), vy = e.cy + rv * std::sin(a);
+        g.length += std::hypot(vx - px, vy - py);
+        px = vx, py = vy;
+    }
+    g.length += std::hypot(ex - px, ey - py);
+    const double a1 = std::atan2(ey - e.cy, ex - e.cx);
+    g.start[0] = -s * std::sin(a0), g.start[1] = s * std::cos(a0);
+    g.end[0] = -s * std::sin(a1), g.end[1] = s * std::cos(a1);
+    return g;
+}
+
+// F mm/min as steps a 2 ms sample, 0.16: 1500 mm/min is one step (65536, kept to FFFFH).
+std::uint16_t feed_per_sample(std::uint16_t mm_min) {
+    return static_cast<std::uint16_t>(std::min(65535L, std::lround(mm_min * 65536.0 / 1500.0)));
+}
+
+}  // namespace
+
+std::vector<Entry> sampling_path(const std::vector<Entry>& path, bool ramp) {
+    std::vector<Entry> out;
+    std::size_t header = 0;
+    double length = 0;
+    const auto close = [&] {
+        // The margin (1/128 of the length and 4 steps) covers C_x's table (0.15 %) and the chord
+        // lengths' rounding: the deceleration ends early and the tool creeps in at F_MIN.
+        const double l = std::clamp(length - length / 128 - 4, 0.0, 32767.0);
+        const auto fixed = static_cast<std::uint32_t>(std::lround(l * 65536));
+        out[header].x = static_cast<std::uint16_t>(fixed & 0xFFFF);
+        out[header].y = static_cast<std::uint16_t>(fixed >> 16);
+    };
+    double x = 0, y = 0, z = 0, tangent[2] = {0, 0};
+    std::uint16_t feed = 0;
+    bool rapid = false;
+    for (const Entry& e : path) {
+        const Geometry g = geometry(e, x, y);
+        const bool has_xy = g.length > 0;
+        const bool z_move = e.z != z;
+        const std::uint16_t f = feed_per_sample(e.feed);
+        const bool corner = has_xy && (tangent[0] != 0 || tangent[1] != 0) &&
+                            std::acos(std::clamp(tangent[0] * g.start[0] + tangent[1] * g.start[1], -1.0, 1.0)) > kCornerRad;
+        if (out.empty() || z_move || corner || (has_xy && (f != feed || (e.kind == Kind::Rapid) != rapid))) {
+            if (!out.empty()) close();
+            Entry h;
+            h.kind = Kind::Sample;
+            h.cr = ramp ? 1 : 0;
+            h.feed = f;
+            header = out.size();
+            out.push_back(h);
+            length = 0;
+            feed = f;
+            rapid = e.kind == Kind::Rapid;
+            if (z_move) tangent[0] = tangent[1] = 0;
+        }
+        out.push_back(e);
+        length += g.length;
+        if (has_xy) tangent[0] = g.end[0], tangent[1] = g.end[1];
+        x = e.x, y = e.y, z = e.z;
+    }
+    if (!out.empty()) close();
+    return out;
+}
 
 }  // namespace alp85::gcode

@@ -19,9 +19,16 @@ struct Error {
     std::string message;
 };
 
+// How the master draws a path's segments: the thesis's line routine (one axis at a time, the
+// default) or Watanabe and Iwai's sampling interpolation. A file chooses with a comment
+// (METHOD THESIS) / (METHOD SAMPLING), and (RAMP OFF) / (RAMP ON) for sampling's feed ramp.
+enum class Method : std::uint8_t { Thesis, Sampling };
+
 struct Parsed {
     std::vector<Entry> entries;
     std::optional<Error> error;
+    std::optional<Method> method;  // from a (METHOD ...) comment
+    std::optional<bool> ramp;      // from a (RAMP ...) comment
 };
 
 Parsed parse(std::string_view text);
@@ -31,5 +38,15 @@ Parsed parse(std::string_view text);
 double eps_a(int cr, double radius);
 // The coarsest C_R (at least 1) whose eps_A is within one step, 0.05 mm: the fewest segments.
 int choose_cr(double radius_steps);
+
+// Sampling: a corner whose tangent turns by more than this stops the tool (the ramp down and up
+// again). 0.5 rad is the turn between the chords of an arc at C_R = 1; at 1500 mm/min (500
+// steps/s) an axis's speed then jumps by at most 2 . 500 . sin 0.25 = 247 steps/s, below the
+// motor's start-stop limit (405 steps/s, docs/machine.md).
+inline constexpr double kCornerRad = 0.5;
+// A path's entries for the sampling method: a header (Kind::Sample) before the first entry and at
+// every stop point (a Z move, a change of feed or between rapid and feed moves, a corner sharper
+// than kCornerRad), each with its group's feed and length.
+std::vector<Entry> sampling_path(const std::vector<Entry>& path, bool ramp);
 
 }  // namespace alp85::gcode

@@ -1,5 +1,5 @@
 // The path table the master program (firmware/master/master.asm) walks, as data: entries of 16
-// bytes in the expansion EPROM from 3800H (docs/contours.md has the layout and why).
+// bytes in the expansion EPROM from 3D00H (docs/contours.md has the layout and why).
 #pragma once
 
 #include <cstdint>
@@ -8,8 +8,8 @@
 
 namespace alp85::gcode {
 
-inline constexpr std::uint16_t kTableBase = 0x3800;  // board::kExpansionEprom's upper half
-inline constexpr std::uint16_t kTableSize = 0x0800;
+inline constexpr std::uint16_t kTableBase = 0x3D00;  // the last 768 bytes of board::kExpansionEprom
+inline constexpr std::uint16_t kTableSize = 0x0300;
 inline constexpr std::size_t kEntrySize = 16;
 
 // The machine tool's travel in steps of 0.05 mm (docs/machine.md: X 1500, Y 200, Z 100 mm),
@@ -17,7 +17,10 @@ inline constexpr std::size_t kEntrySize = 16;
 inline constexpr double kMmPerStep = 0.05;
 inline constexpr std::int32_t kTravel[3] = {30000, 4000, 2000};
 
-enum class Kind : std::uint8_t { End = 0, Rapid = 1, Line = 2, ArcCw = 3, ArcCcw = 4 };
+// Sample: a sampling group's header (docs/contours.md "Sampling"): cr = flags (bit 0 ramp), feed =
+// F_s (steps a 2 ms sample, 0.16), x, y = the group's length to its stop point (16.16: x the
+// fraction, y whole steps), less a margin. A path that opens with one runs by sampling.
+enum class Kind : std::uint8_t { End = 0, Rapid = 1, Line = 2, ArcCw = 3, ArcCcw = 4, Sample = 5 };
 
 struct Entry {
     Kind kind = Kind::End;

@@ -3,7 +3,9 @@
 ; ; does: X1 Y1 X2 Y2 at 1B00H..1B09H, DLYK at 1B38H, then PARAM and the YID/OKEY/OUT/INPUT loop.
 ; ; Arcs: Watanabe and Iwai, IECI '81, eq. 11: the centre angle of a segment is 2^-C_R rad, so each
 ; ; next end point comes from shifts; the first point is pushed out by eps_A = 2^(-2C_R-4) R.
-; ; Runs from the expansion EPROM (3000H, board option `expansion`); tables at 3800H
+; ; A path that opens with a sampling header (type 5) runs by the paper's sampling interpolation
+; ; instead (SMP, section 2: both axes every 2 ms, a feed ramp), not by the thesis's line routine.
+; ; Runs from the expansion EPROM (3000H, board option `expansion`); tables at 3D00H
 ; ; (alp85 gcode). docs/contours.md.
 ; ;
 ; ; thesis-fixed's routines (checked against build/firmware/thesis/thesis-fixed.json by CTest
@@ -50,7 +52,7 @@ CYV     EQU     1C1BH
 EPTR    EQU     1C1DH                   ; the entry being run
 SEG     EQU     1C1FH                   ; segments handed over (word), shown on the display
 PBASE   EQU     1C21H                   ; P
-TABLE   EQU     3800H                   ; the path tables (16-byte entries, type 0 ends a path)
+TABLE   EQU     3D00H                   ; the path tables (16-byte entries, type 0 ends a path)
 ;
         ORG     3000H
 MSTR:   LXI     SP,20B0H
@@ -89,6 +91,10 @@ PFND:   SHLD    EPTR
         SHLD    YAC
         SHLD    SEG
         CALL    SHOW
+        LHLD    EPTR                    ; a path that opens with a sampling header (type 5)
+        MOV     A,M                     ; runs by sampling (SMP), every other by the thesis's
+        CPI     05H                     ; line routine
+        JZ      SMP
 ; ; one entry: +0 type, +1 C_R, +2 F, +4 X, +6 Y, +8 Z, +10 CX, +12 CY, +14 N
 ENTRY:  LHLD    EPTR
         MOV     A,M
@@ -505,7 +511,1197 @@ XRND:   PUSH    D
         INX     D
         JMP     RND1
 ;
-        IF      $ GT 3800H
-        ERROR   "the master program does not fit 3000H-37FFH"
+;
+; ; ---------------------------------------------------------------------------------------------
+; ; SAMPLING: the second segment method, Watanabe and Iwai section 2 (eqs. 2-7), chosen per path:
+; ; a path whose first entry is a sampling header (type 5) runs here. Each 2 ms sample advances
+; ; the major axis by dS_x (eq. 4), puts y = T_y x_r + y0* (eq. 5) and sends both axes' pulses in
+; ; one OUT (eq. 6). B = 16 (T_y 0.16), double precision 16.16, C_L = 8: X_d = 128 steps. Lines are
+; ; one chord, arcs the chords between the 2^-C_R vertices of eq. 11 (exact 16.16, STEP3).
+; ; Header: +1 bit 0 ramp, +2 F_s (steps a sample, 0.16), +4 L (16.16): the path length to the next
+; ; stop, less a margin. docs/contours.md "Sampling"; tests/master/sampling_ref.py is the model.
+; ;
+; ; The period: the 8155 timer, polled. TIMER OUT is wired to TRAP, whose vector (0024H) is the
+; ; monitor's single step in ROM: a terminal count would end the run in the monitor. So the timer
+; ; (single-pulse mode, TIMER OUT high all along) is never let reach it: a sample begins when the
+; ; counter falls below 2800H (polled, its high byte), and STICK stops it, rewinds it by one
+; ; period less the T-states the rewinding takes, and starts it again. The period is exact and
+; ; does not drift; a sample that runs long (a chord's set-up) delays the next one only, by up to
+; ; 2800H T-states before the terminal count.
+SPER    EQU     6144                    ; T-states a sample (2 ms at 3.072 MHz)
+SKH     EQU     28H                     ; a sample begins below 2800H
+SDT     EQU     107                     ; T-states from STICK's STOP write to its START write
+FMIN    EQU     8000H                   ; 0.5 step a sample: 250 steps/s, start and stop
+AFS     EQU     328                     ; ramp: 0.16 steps a sample per sample (1250 steps/s^2)
+DWELL   EQU     20                      ; samples at rest at a stop point
+SKJ     EQU     31H                     ; a job's stage runs while the counter is above 3100H
+; ; RAM, above the master's
+SFL     EQU     1C30H                   ; header flags (bit 0: ramp)
+FSV     EQU     1C31H                   ; F_s, the group's feed (0.16 steps a sample)
+LREM    EQU     1C33H                   ; path still to go before the stop, 16.16 (4)
+DST     EQU     1C37H                   ; distance a deceleration from here takes, 16.16 (4)
+FCU     EQU     1C3BH                   ; f, the feed now (0.16)
+FLV     EQU     1C3DH                   ; F_MIN + j AFS (uncapped level)
+JLV     EQU     1C3FH                   ; j, the ramp level
+KST     EQU     1C40H                   ; k*, the progress along u, 16.16 (4)
+OUTX    EQU     1C44H                   ; the position the pulses sent so far make
+OUTY    EQU     1C46H
+TPX     EQU     1C48H                   ; the target where the last chord ended
+TPY     EQU     1C4AH
+POUT    EQU     1C4CH                   ; port A for the next sample
+POSX    EQU     1C4DH                   ; the entry's start point
+POSY    EQU     1C4FH
+CAV     EQU     1C51H                   ; the chord's start A: x, y 16.16 (8)
+CEV     EQU     1C59H                   ; its end E (8)
+CMU     EQU     1C61H                   ; 0: u = x, 1: u = y
+CSU     EQU     1C62H                   ; u direction: 0 +, 1 -
+CSG     EQU     1C63H                   ; sigma, the v direction: 0 +, 1 -
+CNV     EQU     1C64H                   ; n, whole steps of u
+CTY     EQU     1C66H                   ; T_y (0.16)
+CYD     EQU     1C68H                   ; Y_d* (16.16, 4)
+CYI     EQU     1C6CH                   ; Y_i* (16.16, 4)
+CSEG    EQU     1C70H                   ; i, the segment of 128 steps
+CCX     EQU     1C71H                   ; C_x (0.16)
+PUV     EQU     1C73H                   ; P_u, P_v: the tool's target at the chord's start
+PVV     EQU     1C75H
+DSV     EQU     1C77H                   ; dS_x (0.16)
+DSOK    EQU     1C79H                   ; 0: dS_x to compute
+UUV     EQU     1C7AH                   ; |du| (4)
+VVV     EQU     1C7EH                   ; |dv| (4)
+QHV     EQU     1C82H                   ; the quotient's high byte
+DNF     EQU     1C84H                   ; 1: the chord ended in this sample
+DUS     EQU     1C85H                   ; sign of du (0 +, 1 -)
+DVS     EQU     1C86H                   ; sign of dv (0 +, 1 -, 2 zero)
+SXV     EQU     1C87H                   ; this sample's target x, y
+SYV     EQU     1C89H
+JST     EQU     1C8BH                   ; the job's next stage (RUNJ), 0: none
+OFV     EQU     1C8CH                   ; scratch (4)
+OF2     EQU     1C90H                   ; scratch (4)
+VRDY    EQU     1C94H                   ; 1: NX, NY hold the next vertex
+;
+SMP:    LXI     H,0000H
+        SHLD    OUTX
+        SHLD    OUTY
+        SHLD    TPX
+        SHLD    TPY
+        SHLD    POSX
+        SHLD    POSY
+        SHLD    X2                      ; (the look-ahead's start point)
+        SHLD    Y2
+        XRA     A
+        STA     POUT
+        STA     VRDY
+        CALL    TSTART
+SENT:   LHLD    EPTR
+        MOV     A,M
+        ANA     A
+        JZ      SEND
+        CPI     05H
+        JZ      SHDR
+        LXI     D,0008H                 ; Z first, on its own, the timer stopped (ZMOVE's own
+        DAD     D                       ; 4 ms steps): the header before it stopped X and Y
+        MOV     E,M
+        INX     H
+        MOV     D,M
+        LHLD    ZAC
+        MOV     A,L
+        CMP     E
+        JNZ     SZGO
+        MOV     A,H
+        CMP     D
+        JZ      SZDN
+SZGO:   XCHG
+        SHLD    ZKOR
+        CALL    TSTOP
+        CALL    TZMOVE
+        CALL    SHOW
+        CALL    TSTART
+SZDN:   LHLD    POSX                    ; the chord starts at the entry's start point
+        SHLD    XAC
+        SHLD    CAV+2
+        LHLD    POSY
+        SHLD    YAC
+        SHLD    CAV+6
+        LXI     H,0000H
+        SHLD    CAV
+        SHLD    CAV+4
+        LHLD    EPTR
+        MOV     A,M
+        CPI     03H
+        JNC     SARC
+        CALL    SENDP                   ; a line: one chord to the end point, the next entry
+        MVI     A,01H                   ; looked at during it
+        STA     JST
+        CALL    SCHRD
+SNXT:   CALL    ENDXY                   ; the next entry starts where this one ended
+        LHLD    X2
+        SHLD    POSX
+        LHLD    Y2
+        SHLD    POSY
+        LHLD    EPTR
+        LXI     D,0010H
+        DAD     D
+        SHLD    EPTR
+        JMP     SENT
+SEND:   XRA     A                       ; the path's end: a stop, the timer stopped
+        STA     JST
+        CALL    SSTOP
+        CALL    TSTOP
+        LHLD    OUTX
+        SHLD    XAC
+        LHLD    OUTY
+        SHLD    YAC
+        JMP     DONE
+; ; a header: a stop point (unless it is the first), then the group's feed, length and ramp
+SHDR:   MVI     A,01H                   ; a stop point, the entry after the header looked at in
+        STA     JST                     ; its dwell
+        CALL    SSTOP
+        XRA     A
+        STA     JLV
+        STA     DSOK
+        LXI     H,0000H
+        SHLD    KST
+        SHLD    KST+2
+        SHLD    DST
+        SHLD    DST+2
+        LHLD    EPTR
+        INX     H
+        MOV     A,M
+        STA     SFL
+        INX     H
+        MOV     E,M
+        INX     H
+        MOV     D,M
+        INX     H
+        XCHG
+        SHLD    FSV
+        SHLD    FCU
+        XCHG
+        LXI     D,LREM
+        MVI     C,04H
+        CALL    COPYN
+        LXI     H,FMIN
+        SHLD    FLV
+        LDA     SFL
+        RRC
+        JNC     SNXT1
+        ANA     A                       ; the ramp starts at F_MIN, or at F_s below it
+        CALL    SLVL1
+SNXT1:  LHLD    EPTR
+        LXI     D,0010H
+        DAD     D
+        SHLD    EPTR
+        JMP     SENT
+; ; SENDP: CEV = the entry's end point . 0
+SENDP:  CALL    ENDXY
+        LXI     H,0000H
+        SHLD    CEV
+        SHLD    CEV+4
+        LHLD    X2
+        SHLD    CEV+2
+        LHLD    Y2
+        SHLD    CEV+6
+        RET
+; ; an arc: the vertices of eq. 11 from the start pushed out by eps_A (as ARC), a chord to each;
+; ; its set-up and each next vertex computed during the chord before (RUNJ), else here
+SARC:   LDA     JST
+        CPI     01H
+        JNZ     SAL
+        XRA     A
+        STA     JST
+        STA     VRDY
+        LHLD    EPTR
+        MOV     A,M
+        CALL    APAR
+        CALL    ASTX
+        CALL    ASTY
+        LHLD    NCNT
+        MOV     A,H
+        ORA     L
+        JZ      SAL
+        MVI     A,03H
+        STA     JST
+SAL:    LDA     JST                     ; a job the last chord was too short for: finished here
+        ANA     A
+        JZ      SAL1
+        CALL    RUNJ
+        JMP     SAL
+SAL1:   LHLD    NCNT
+        MOV     A,H
+        ORA     L
+        JZ      SALST
+        DCX     H
+        SHLD    NCNT
+        LDA     VRDY
+        ANA     A
+        JNZ     SAL2
+        CALL    AVX
+        CALL    AVY
+SAL2:   XRA     A
+        STA     VRDY
+        LXI     H,NX
+        LXI     D,AX
+        MVI     C,08H
+        CALL    COPYN
+        LXI     H,AX                    ; E = the centre . 0 + the vertex
+        LXI     D,CEV
+        MVI     C,08H
+        CALL    COPYN
+        LHLD    CEV+2
+        XCHG
+        LHLD    CXV
+        DAD     D
+        SHLD    CEV+2
+        LHLD    CEV+6
+        XCHG
+        LHLD    CYV
+        DAD     D
+        SHLD    CEV+6
+        LHLD    NCNT                    ; the next vertex during this chord
+        MOV     A,H
+        ORA     L
+        JZ      SAL3
+        MVI     A,03H
+        STA     JST
+SAL3:   CALL    SCHRD
+        LXI     H,CEV                   ; the next chord starts at this vertex
+        LXI     D,CAV
+        MVI     C,08H
+        CALL    COPYN
+        JMP     SAL
+SALST:  CALL    SENDP                   ; the last chord ends on the end point; the next entry
+        MVI     A,01H                   ; looked at during it
+        STA     JST
+        CALL    SCHRD
+        JMP     SNXT
+; ; APAR: an arc's DIR, C_R, centre and N from its entry (HL at it, A its type)
+APAR:   SUI     03H
+        XRI     01H
+        STA     DIR
+        INX     H
+        MOV     A,M
+        STA     CR
+        LXI     D,0009H
+        DAD     D
+        MOV     E,M
+        INX     H
+        MOV     D,M
+        INX     H
+        XCHG
+        SHLD    CXV
+        XCHG
+        MOV     E,M
+        INX     H
+        MOV     D,M
+        INX     H
+        XCHG
+        SHLD    CYV
+        XCHG
+        MOV     E,M
+        INX     H
+        MOV     D,M
+        XCHG
+        SHLD    NCNT
+        RET
+; ; ASTX, ASTY: AX, AY = the start (XAC, YAC) less the centre, pushed out by eps_A
+ASTX:   LHLD    CXV
+        XCHG
+        LHLD    XAC
+        LXI     B,AX
+        JMP     START
+ASTY:   LHLD    CYV
+        XCHG
+        LHLD    YAC
+        LXI     B,AY
+        JMP     START
+; ; AVX, AVY: the next vertex, eq. 11, to NX and NY
+AVX:    LDA     DIR
+        XRI     01H
+        STA     SIG
+        LXI     H,AX
+        LXI     D,AY
+        LXI     B,NX
+        JMP     STEP3
+AVY:    LDA     DIR
+        STA     SIG
+        LXI     H,AY
+        LXI     D,AX
+        LXI     B,NY
+        JMP     STEP3
+; ; RUNJ: one stage of the job that runs in the samples' spare time (each well within a period):
+; ; 1 the next entry, if an arc: its parameters and X start, 2 its Y start, 3 the next vertex's X,
+; ; 4 its Y
+RUNJ:   LDA     JST
+        DCR     A
+        JZ      JL1
+        DCR     A
+        JZ      JL2
+        DCR     A
+        JZ      JV1
+        CALL    AVY
+        MVI     A,01H
+        STA     VRDY
+        XRA     A
+        STA     JST
+        RET
+JV1:    CALL    AVX
+        MVI     A,04H
+        STA     JST
+        RET
+JL1:    LHLD    EPTR
+        LXI     D,0010H
+        DAD     D
+        MOV     A,M
+        CPI     03H
+        JC      JL0
+        CPI     05H
+        JNC     JL0
+        CALL    APAR
+        LHLD    X2                      ; it starts where this entry ends
+        SHLD    XAC
+        LHLD    Y2
+        SHLD    YAC
+        CALL    ASTX
+        XRA     A
+        STA     VRDY
+        MVI     A,02H
+        STA     JST
+        RET
+JL0:    XRA     A
+        STA     JST
+        RET
+JL2:    CALL    ASTY
+        LHLD    NCNT
+        MOV     A,H
+        ORA     L
+        MVI     A,03H
+        JNZ     JL3
+        XRA     A
+JL3:    STA     JST
+        RET
+;
+; ; TSTART: the 8155 timer from 3FFFH, single-pulse mode (TIMER OUT stays high); TSTOP holds it
+TSTART: MVI     A,0FFH
+        OUT     0FCH
+        MVI     A,0BFH
+        OUT     0FDH
+        MVI     A,0C1H                  ; START; port A out, B and C in (the monitor's 01H)
+        OUT     0F8H
+        RET
+TSTOP:  MVI     A,41H                   ; STOP
+        OUT     0F8H
+        RET
+;
+; ; STICK: waits for the sample's tick, rewinds the timer by one period, sends POUT: the
+; ; directions with the pulses low, then the pulses (both axes in the same OUT)
+STICK:  IN      0FDH
+        ANI     3FH
+        CPI     SKH
+        JNC     STICK
+        MVI     A,41H                   ; STOP: the counter holds its value v
+        OUT     0F8H
+        IN      0FCH
+        MOV     L,A
+        IN      0FDH
+        ANI     3FH
+        MOV     H,A
+        LXI     D,SPER-SDT              ; v + one period less the SDT T-states it stood still
+        DAD     D
+        MOV     A,H
+        ORI     80H                     ; mode: single pulse
+        OUT     0FDH
+        MOV     A,L
+        OUT     0FCH
+        MVI     A,0C1H                  ; START
+        OUT     0F8H
+STOUT:  LDA     POUT
+        MOV     B,A
+        ANI     0AH
+        OUT     0F9H
+        MOV     A,B
+        OUT     0F9H
+        RET
+;
+; ; SSTOP: a stop point: the output catches up with the target, then DWELL samples at rest
+SSTOP:  CALL    STICK
+        LHLD    TPX
+        SHLD    SXV
+        LHLD    TPY
+        SHLD    SYV
+        CALL    CHASE
+        LDA     POUT
+        ANA     A
+        JNZ     SSTOP
+        MVI     C,DWELL
+SST1:   PUSH    B
+        CALL    STICK
+        LDA     JST                     ; the dwell's spare time: the look-ahead
+        ANA     A
+        CNZ     RUNJ
+        POP     B
+        DCR     C
+        JNZ     SST1
+        RET
+;
+; ; SCHRD: one chord from CAV to CEV: its set-up (SDESC), then samples until it ends
+SCHRD:  CALL    SDESC
+SCH1:   CALL    SSAMP
+        LDA     DNF
+        ANA     A
+        RNZ
+        LDA     JST                     ; a job's stage in the sample's spare time (a stage takes
+        ANA     A                       ; at most 4000 T-states): while the counter stands above
+        JZ      SCH1                    ; 3100H (it then ends within 1.7 ms of the next tick), or
+        IN      0FDH                    ; when the chord has fewer than 8 steps to go, so that it
+        ANI     3FH                     ; is seldom left for after the chord
+        CPI     SKJ
+        JNC     SCH2
+        LHLD    KST+2
+        XCHG
+        LHLD    CNV
+        MOV     A,L
+        SUB     E
+        MOV     L,A
+        MOV     A,H
+        SBB     D
+        JNZ     SCH1
+        MOV     A,L
+        CPI     08H
+        JNC     SCH1
+SCH2:   CALL    RUNJ
+        JMP     SCH1
+;
+; ; SSAMP: one sample (the tick, the ramp, eqs. 4-6, POUT for the next tick)
+SSAMP:  CALL    STICK
+SSMP:   LDA     SFL
+        RRC
+        JNC     SS3
+        LXI     D,DST                   ; decelerate when LREM <= DST
+        LXI     H,LREM
+        MVI     B,04H
+        ANA     A
+SS1:    LDAX    D
+        SBB     M
+        INX     D
+        INX     H
+        DCR     B
+        JNZ     SS1
+        ANA     A
+        JM      SACC
+        LDA     JLV                     ; decelerate: DST -= f, one level down
+        ANA     A
+        JZ      SS3
+        DCR     A
+        STA     JLV
+        CALL    DSTSUB
+        LHLD    FLV
+        LXI     D,-AFS
+        DAD     D
+        SHLD    FLV
+        ANA     A
+        CALL    SLVL1
+        JMP     SS3
+SACC:   LHLD    FCU                     ; accelerate while f < F_s: one level up, DST += f
+        XCHG
+        LHLD    FSV
+        MOV     A,E
+        SUB     L
+        MOV     A,D
+        SBB     H
+        JNC     SS3
+        LDA     JLV
+        INR     A
+        STA     JLV
+        LHLD    FLV
+        LXI     D,AFS
+        DAD     D
+        SHLD    FLV
+        CALL    SLVL1
+        LHLD    FCU
+        XCHG
+        LXI     H,DST
+        CALL    ADD16
+        JMP     SS3
+; ; f = min(F_s, FLV), HL = FLV (beyond FFFFH only at the top level: CY from its DAD)
+SLVL1:  JC      SLV2
+        XCHG
+        LHLD    FSV
+        MOV     A,E
+        SUB     L
+        MOV     A,D
+        SBB     H
+        JNC     SLV2
+        XCHG
+        SHLD    FCU
+        JMP     SLV3
+SLV2:   LHLD    FSV
+        SHLD    FCU
+SLV3:   XRA     A
+        STA     DSOK
+        RET
+DSTSUB: LHLD    FCU
+        XCHG
+        LXI     H,DST
+        MOV     A,M
+        SUB     E
+        MOV     M,A
+        INX     H
+        MOV     A,M
+        SBB     D
+        MOV     M,A
+        INX     H
+        MOV     A,M
+        SBI     00H
+        MOV     M,A
+        INX     H
+        MOV     A,M
+        SBI     00H
+        MOV     M,A
+        RET
+; ; ADD16: the 32 bits at HL += DE (unsigned)
+ADD16:  MOV     A,M
+        ADD     E
+        MOV     M,A
+        INX     H
+        MOV     A,M
+        ADC     D
+        MOV     M,A
+        INX     H
+        MOV     A,M
+        ACI     00H
+        MOV     M,A
+        INX     H
+        MOV     A,M
+        ACI     00H
+        MOV     M,A
+        RET
+SS3:    LHLD    FCU                     ; L_rem -= f
+        XCHG
+        LXI     H,LREM
+        MOV     A,M
+        SUB     E
+        MOV     M,A
+        INX     H
+        MOV     A,M
+        SBB     D
+        MOV     M,A
+        INX     H
+        MOV     A,M
+        SBI     00H
+        MOV     M,A
+        INX     H
+        MOV     A,M
+        SBI     00H
+        MOV     M,A
+        LDA     DSOK                    ; dS_x = f C_x, when f or the chord changed
+        ANA     A
+        JNZ     SS4
+        LHLD    FCU
+        MOV     B,H
+        MOV     C,L
+        LHLD    CCX
+        XCHG
+        CALL    MUL16
+        SHLD    DSV
+        MVI     A,01H
+        STA     DSOK
+SS4:    LHLD    DSV                     ; eq. 4: k* += dS_x
+        XCHG
+        LXI     H,KST
+        CALL    ADD16
+        XRA     A
+        STA     DNF
+        LHLD    CNV                     ; k = min(n, floor k*)
+        XCHG
+        LHLD    KST+2
+        MOV     A,L
+        SUB     E
+        MOV     C,A
+        MOV     A,H
+        SBB     D
+        JC      SS5
+        MOV     H,A                     ; reached: k* -= n (the rest carries on), k = n
+        MOV     L,C
+        SHLD    KST+2
+        XCHG
+        MVI     A,01H
+        STA     DNF
+SS5:    PUSH    H                       ; k
+        MOV     A,L                     ; i = k >> 7: a new segment adds Y_d* (eq. 3's Y_i*)
+        RAL
+        MOV     A,H
+        RAL
+        LXI     H,CSEG
+        CMP     M
+        JZ      SS6
+        MOV     M,A
+        LXI     H,CYD
+        LXI     D,CYI
+        CALL    ADD4
+SS6:    POP     H
+        PUSH    H
+        MOV     A,L                     ; x_r = k & 127; C:HL = T_y x_r (eq. 5)
+        ANI     7FH
+        ADD     A
+        ORI     01H
+        MOV     B,A
+        LHLD    CTY
+        XCHG
+        LXI     H,0000H
+        MVI     C,00H
+SM1:    MOV     A,B
+        CPI     80H
+        JZ      SM3
+        DAD     H
+        MOV     A,C
+        RAL
+        MOV     C,A
+        MOV     A,B
+        ADD     A
+        MOV     B,A
+        JNC     SM1
+        DAD     D
+        MOV     A,C
+        ACI     00H
+        MOV     C,A
+        JMP     SM1
+SM3:    XCHG                            ; + frac(Y_i*) + 1/2 = + y0* (eq. 3)
+        LHLD    CYI
+        DAD     D
+        MOV     A,C
+        ACI     00H
+        MOV     C,A
+        MOV     A,H
+        ADI     80H
+        MOV     A,C
+        ACI     00H
+        MOV     E,A                     ; w = floor(Y_i*) + the integer part
+        MVI     D,00H
+        LHLD    CYI+2
+        DAD     D
+        XCHG                            ; DE = w
+        LDA     CSG                     ; target v = P_v +- w
+        ANA     A
+        JZ      SS7
+        XRA     A
+        SUB     E
+        MOV     E,A
+        MVI     A,00H
+        SBB     D
+        MOV     D,A
+SS7:    LHLD    PVV
+        DAD     D
+        POP     D                       ; k
+        PUSH    H                       ; target v
+        LDA     CSU                     ; target u = P_u +- k
+        ANA     A
+        JZ      SS8
+        XRA     A
+        SUB     E
+        MOV     E,A
+        MVI     A,00H
+        SBB     D
+        MOV     D,A
+SS8:    LHLD    PUV
+        DAD     D
+        POP     D                       ; HL = u, DE = v
+        LDA     CMU
+        ANA     A
+        JZ      SS9
+        XCHG
+SS9:    SHLD    SXV
+        XCHG
+        SHLD    SYV
+        CALL    CHASE
+        LDA     DNF
+        ANA     A
+        RZ
+        LHLD    SXV                     ; the chord's end: the next one starts from this target
+        SHLD    TPX
+        LHLD    SYV
+        SHLD    TPY
+        RET
+;
+; ; CHASE: POUT = one pulse per axis toward SXV, SYV where the output is not there (eq. 6)
+CHASE:  MVI     B,00H
+        LHLD    OUTX
+        XCHG
+        LHLD    SXV
+        MOV     A,L
+        SUB     E
+        MOV     L,A
+        MOV     A,H
+        SBB     D
+        MOV     C,A
+        ORA     L
+        JZ      CH2
+        MOV     A,C
+        XCHG
+        RAL                             ; CY: the target is below
+        JC      CH1
+        INX     H
+        MVI     B,03H                   ; X pulse, X +
+        JMP     CH1A
+CH1:    DCX     H
+        MVI     B,01H                   ; X pulse, X -
+CH1A:   SHLD    OUTX
+CH2:    LHLD    OUTY
+        XCHG
+        LHLD    SYV
+        MOV     A,L
+        SUB     E
+        MOV     L,A
+        MOV     A,H
+        SBB     D
+        MOV     C,A
+        ORA     L
+        JZ      CH4
+        MOV     A,C
+        XCHG
+        RAL
+        JC      CH3
+        INX     H
+        MOV     A,B
+        ORI     0CH                     ; Y pulse, Y +
+        MOV     B,A
+        JMP     CH3A
+CH3:    DCX     H
+        MOV     A,B
+        ORI     04H                     ; Y pulse, Y -
+        MOV     B,A
+CH3A:   SHLD    OUTY
+CH4:    MOV     A,B
+        STA     POUT
+        RET
+;
+; ; SDESC: the chord's set-up at its first point (section 2.1-2.2): u, n, T_y, Y_d*, sigma, Y0*
+SDESC:  LXI     H,CEV                   ; UUV = dx, VVV = dy, 16.16
+        LXI     D,UUV
+        MVI     C,04H
+        CALL    COPYN
+        LXI     H,CAV
+        LXI     D,UUV
+        CALL    SUB4
+        LXI     H,CEV+4
+        LXI     D,VVV
+        MVI     C,04H
+        CALL    COPYN
+        LXI     H,CAV+4
+        LXI     D,VVV
+        CALL    SUB4
+        LXI     H,UUV
+        CALL    ABS4
+        STA     DUS
+        LXI     H,VVV
+        CALL    ABS4
+        STA     DVS
+        LXI     D,UUV                   ; |dx| >= |dy|: u = x
+        LXI     H,VVV
+        MVI     B,04H
+        ANA     A
+SD1:    LDAX    D
+        SBB     M
+        INX     D
+        INX     H
+        DCR     B
+        JNZ     SD1
+        MVI     A,00H
+        JNC     SD2
+        LXI     H,UUV                   ; else u = y: swap
+        LXI     D,VVV
+        MVI     C,04H
+SW1:    MOV     B,M
+        LDAX    D
+        MOV     M,A
+        MOV     A,B
+        STAX    D
+        INX     H
+        INX     D
+        DCR     C
+        JNZ     SW1
+        LDA     DUS
+        MOV     B,A
+        LDA     DVS
+        STA     DUS
+        MOV     A,B
+        STA     DVS
+        MVI     A,01H
+SD2:    STA     CMU
+        ANA     A                       ; P_u, P_v
+        LHLD    TPX
+        XCHG
+        LHLD    TPY
+        JZ      SD3
+        XCHG
+SD3:    SHLD    PVV
+        XCHG
+        SHLD    PUV
+        CALL    PTRU                    ; round(E_u): the high word of E_u + 8000H
+        LXI     D,CEV
+        DAD     D
+        MOV     A,M
+        INX     H
+        MOV     A,M
+        ADI     80H
+        INX     H
+        MOV     C,M
+        INX     H
+        MOV     B,M
+        JNC     SD3A
+        INX     B
+SD3A:   LHLD    PUV                     ; n = |round(E_u) - P_u|, su its sign
+        XCHG
+        MOV     A,C
+        SUB     E
+        MOV     L,A
+        MOV     A,B
+        SBB     D
+        MOV     H,A
+        ANA     A
+        MVI     A,00H
+        JP      SD4
+        CALL    NEGHL
+        MVI     A,01H
+SD4:    STA     CSU
+        SHLD    CNV
+        LXI     H,VVV                   ; sigma: + if dv = 0, else sgn(dv) sgn(du) su
+        MOV     A,M
+        INX     H
+        ORA     M
+        INX     H
+        ORA     M
+        INX     H
+        ORA     M
+        JZ      SD5
+        LDA     DUS
+        MOV     B,A
+        LDA     DVS
+        XRA     B
+        MOV     B,A
+        LDA     CSU
+        XRA     B
+SD5:    STA     CSG
+        LHLD    UUV                     ; U, V below 2^15: whole steps from the high words
+        MOV     A,H
+        ORA     L
+        JNZ     SN2
+        LHLD    VVV
+        MOV     A,H
+        ORA     L
+        JNZ     SN2
+        LHLD    UUV+2
+        SHLD    UUV
+        LHLD    VVV+2
+        SHLD    VVV
+        LXI     H,0000H
+        SHLD    UUV+2
+        SHLD    VVV+2
+SN2:    LDA     UUV+3                   ; else both shifted right: in registers while U < 2^24
+        ANA     A
+        JZ      SN5
+        LXI     H,UUV+3
+        CALL    SHR4
+        LXI     H,VVV+3
+        CALL    SHR4
+        JMP     SN2
+SN5:    LHLD    VVV+1                   ; V = C:D:E, U = B:H:L
+        MOV     C,H
+        MOV     D,L
+        LDA     VVV
+        MOV     E,A
+        LHLD    UUV+1
+        MOV     B,H
+        MOV     H,L
+        LDA     UUV
+        MOV     L,A
+SN6:    MOV     A,B
+        ORA     A
+        JNZ     SN7
+        MOV     A,H
+        ORA     A
+        JP      SN4
+SN7:    ORA     A
+        MOV     A,B
+        RAR
+        MOV     B,A
+        MOV     A,H
+        RAR
+        MOV     H,A
+        MOV     A,L
+        RAR
+        MOV     L,A
+        ORA     A
+        MOV     A,C
+        RAR
+        MOV     C,A
+        MOV     A,D
+        RAR
+        MOV     D,A
+        MOV     A,E
+        RAR
+        MOV     E,A
+        JMP     SN6
+SN4:    MOV     A,H                     ; U = HL, V = DE, below 2^15
+        ORA     L
+        JZ      SQZ
+        XCHG                            ; DE = U, HL = V
+        MOV     A,L
+        CMP     E
+        JNZ     SDV
+        MOV     A,H
+        CMP     D
+        JZ      SQE
+SDV:    LXI     B,0001H                 ; Q = floor(2^24 V / U): restoring, remainder in HL; 24
+        XRA     A                       ; steps, until the 1 put below the quotient leaves its top
+        STA     QHV
+SDV1:   DAD     H
+        MOV     A,L
+        SUB     E
+        MOV     L,A
+        MOV     A,H
+        SBB     D
+        MOV     H,A
+        JNC     SDV2
+        DAD     D                       ; restore (CY = 1: the quotient bit 0)
+SDV2:   CMC
+        MOV     A,C
+        RAL
+        MOV     C,A
+        MOV     A,B
+        RAL
+        MOV     B,A
+        LDA     QHV
+        RAL
+        STA     QHV
+        JNC     SDV1
+        MOV     H,B
+        MOV     L,C
+        SHLD    OFV
+        LDA     QHV
+        MOV     L,A
+        MVI     H,00H
+        SHLD    OFV+2
+        JMP     SQD
+SQZ:    LXI     H,0000H                 ; U = 0 (A = E): Q = 0
+        SHLD    OFV
+        SHLD    OFV+2
+        JMP     SQD
+SQE:    LXI     H,0000H                 ; V = U: Q = 2^24
+        SHLD    OFV
+        LXI     H,0100H
+        SHLD    OFV+2
+SQD:    LHLD    OFV                     ; T_y = min(FFFFH, (Q + 80H) >> 8)
+        LXI     D,0080H
+        DAD     D
+        MOV     E,H
+        LDA     OFV+2
+        ACI     00H
+        MOV     D,A
+        LDA     OFV+3
+        ACI     00H
+        XCHG
+        JZ      SQT
+        LXI     H,0FFFFH
+SQT:    SHLD    CTY
+        LXI     H,OFV                   ; Y_d* = (Q + 1) >> 1
+        LXI     D,CYD
+        MVI     C,04H
+        CALL    COPYN
+        LXI     H,CYD
+        MVI     B,04H
+YI1:    INR     M
+        JNZ     YI2
+        INX     H
+        DCR     B
+        JNZ     YI1
+YI2:    LXI     H,CYD+3
+        CALL    SHR4
+        LXI     H,0000H                 ; off = su (P_u . 0 - A_u)
+        SHLD    OF2
+        LHLD    PUV
+        SHLD    OF2+2
+        CALL    PTRU
+        LXI     D,CAV
+        DAD     D
+        LXI     D,OF2
+        CALL    SUB4
+        LDA     CSU
+        ANA     A
+        JZ      SO1
+        LXI     H,OF2
+        CALL    NEG4
+SO1:    LXI     H,OF2                   ; T_y |off| >> 16 = T_y . int + (T_y . frac) >> 16
+        CALL    ABS4
+        STA     DNF                     ; (the sign of off, for a moment)
+        LHLD    CTY
+        MOV     B,H
+        MOV     C,L
+        LHLD    OF2
+        XCHG
+        CALL    MUL16
+        SHLD    OFV
+        LXI     H,0000H
+        SHLD    OFV+2
+        LDA     OF2+2
+        ANA     A
+        JZ      SO3
+SO2:    PUSH    PSW
+        LHLD    CTY
+        XCHG
+        LXI     H,OFV
+        CALL    ADD16
+        POP     PSW
+        DCR     A
+        JNZ     SO2
+SO3:    CALL    PTRU                    ; Y0* = sigma (A_v - P_v . 0) +- T_y |off| (eq. 13)
+        MOV     A,L
+        XRI     04H
+        MOV     L,A
+        LXI     D,CAV
+        DAD     D
+        LXI     D,CYI
+        MVI     C,04H
+        CALL    COPYN
+        LXI     H,0000H
+        SHLD    OF2
+        LHLD    PVV
+        SHLD    OF2+2
+        LXI     H,OF2
+        LXI     D,CYI
+        CALL    SUB4
+        LDA     CSG
+        ANA     A
+        JZ      SY1
+        LXI     H,CYI
+        CALL    NEG4
+SY1:    LXI     H,OFV
+        LXI     D,CYI
+        LDA     DNF
+        ANA     A
+        JNZ     SY2
+        CALL    ADD4
+        JMP     SY3
+SY2:    CALL    SUB4
+SY3:    LDA     CTY+1                   ; C_x from the table, by T_y's top 6 bits
+        RRC
+        ANI     7EH
+        MOV     E,A
+        MVI     D,00H
+        LXI     H,CXTAB
+        DAD     D
+        MOV     E,M
+        INX     H
+        MOV     D,M
+        XCHG
+        SHLD    CCX
+        XRA     A
+        STA     CSEG
+        STA     DSOK
+        STA     DNF
+        RET
+; ; PTRU: HL = 4 CMU (the u coordinate's offset in CAV, CEV)
+PTRU:   LDA     CMU
+        ADD     A
+        ADD     A
+        MOV     L,A
+        MVI     H,00H
+        RET
+; ; NEGHL: HL = -HL
+NEGHL:  XRA     A
+        SUB     L
+        MOV     L,A
+        MVI     A,00H
+        SBB     H
+        MOV     H,A
+        RET
+; ; ADD4, SUB4: the 32 bits at DE += / -= those at HL
+ADD4:   MVI     B,04H
+        ANA     A
+AD41:   LDAX    D
+        ADC     M
+        STAX    D
+        INX     D
+        INX     H
+        DCR     B
+        JNZ     AD41
+        RET
+SUB4:   MVI     B,04H
+        ANA     A
+SB41:   LDAX    D
+        SBB     M
+        STAX    D
+        INX     D
+        INX     H
+        DCR     B
+        JNZ     SB41
+        RET
+; ; NEG4: the 32 bits at HL negated; ABS4: made positive, A = 1 if they were negative
+NEG4:   MVI     B,04H
+        ANA     A
+NG41:   MVI     A,00H
+        SBB     M
+        MOV     M,A
+        INX     H
+        DCR     B
+        JNZ     NG41
+        RET
+ABS4:   PUSH    H
+        INX     H
+        INX     H
+        INX     H
+        MOV     A,M
+        POP     H
+        ANA     A
+        MVI     A,00H
+        RP
+        CALL    NEG4
+        MVI     A,01H
+        RET
+; ; SHR4: the 32 bits ending at HL (the top byte) shifted right, unsigned
+SHR4:   MVI     B,04H
+        ANA     A
+SR41:   MOV     A,M
+        RAR
+        MOV     M,A
+        DCX     H
+        DCR     B
+        JNZ     SR41
+        RET
+; ; MUL16: HL = (BC x DE) >> 16, unsigned: 16 steps, shifting right
+MUL16:  LXI     H,0000H
+        MVI     A,10H
+MU1:    PUSH    PSW
+        XRA     A
+        MOV     A,D
+        RAR
+        MOV     D,A
+        MOV     A,E
+        RAR
+        MOV     E,A
+        JNC     MU2
+        DAD     B
+MU2:    MOV     A,H
+        RAR
+        MOV     H,A
+        MOV     A,L
+        RAR
+        MOV     L,A
+        POP     PSW
+        DCR     A
+        JNZ     MU1
+        RET
+; ; C_x = 1 / sqrt(1 + T^2) at the middle of each 1/64 of T_y (0.16): eq. 4's dS_x = C_x f
+CXTAB:   DW      0FFFEH,0FFEEH,0FFCEH,0FF9EH,0FF5FH,0FF0FH,0FEB1H,0FE43H
+        DW      0FDC6H,0FD3AH,0FC9FH,0FBF7H,0FB41H,0FA7DH,0F9ACH,0F8CFH
+        DW      0F7E5H,0F6EFH,0F5EEH,0F4E3H,0F3CCH,0F2ACH,0F183H,0F050H
+        DW      0EF15H,0EDD1H,0EC87H,0EB35H,0E9DCH,0E87EH,0E719H,0E5B0H
+        DW      0E441H,0E2CFH,0E158H,0DFDEH,0DE61H,0DCE0H,0DB5EH,0D9D9H
+        DW      0D853H,0D6CBH,0D543H,0D3B9H,0D22FH,0D0A5H,0CF1BH,0CD91H
+        DW      0CC08H,0CA80H,0C8F8H,0C772H,0C5EDH,0C46AH,0C2E8H,0C168H
+        DW      0BFEAH,0BE6EH,0BCF5H,0BB7EH,0BA09H,0B897H,0B727H,0B5BAH
+;
+MEND    EQU     $
+        IF      $ GT 3D00H
+        ERROR   "the master program does not fit 3000H-3CFFH"
         ENDIF
         END

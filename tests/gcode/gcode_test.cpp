@@ -147,6 +147,49 @@ TEST(PathTable, BytesAndHex) {
     for (int i = 16; i < 32; ++i) EXPECT_EQ(b[i], 0) << i;
     // One record: 02 bytes at 3800H, checksum = -(02+38+00+00+AB+CD) mod 256 = 0x4E.
     EXPECT_EQ(intel_hex(0x3800, {0xAB, 0xCD}), ":02380000ABCD4E\n:00000001FF\n");
+    EXPECT_EQ(kTableBase, 0x3D00);  // after the master program's 3000H-3CFFH
+    EXPECT_EQ(kTableBase + kTableSize, 0x4000);
+}
+
+// The sampling method's table (docs/contours.md "Sampling"): headers where the tool must stop, the
+// feed as steps a 2 ms sample and the group's length to its stop, by hand.
+TEST(GcodeSampling, DirectivesChooseTheMethodAndTheRamp) {
+    const Parsed p = parse("(METHOD SAMPLING)\n( ramp off )\nG01 X1 F750\n");
+    ASSERT_FALSE(p.error);
+    ASSERT_TRUE(p.method && p.ramp);
+    EXPECT_EQ(*p.method, Method::Sampling);
+    EXPECT_FALSE(*p.ramp);
+    EXPECT_FALSE(parse("(a comment)\nG01 X1 F750\n").method);
+    const Parsed bad = parse("G21\n  (METHOD FAST)\n");
+    ASSERT_TRUE(bad.error);
+    EXPECT_EQ(bad.error->line, 2);
+    EXPECT_EQ(bad.error->column, 3);
+    EXPECT_TRUE(parse("(RAMP SLOW)\n").error);
+}
+
+TEST(GcodeSampling, HeadersAtStopsWithFeedAndLength) {
+    // A line of 300 x 400 steps (500 long) at 750 mm/min, then on at the same heading (no stop),
+    // then back (a reversal: a stop), then a Z move (a stop).
+    const Parsed p = parse("G21 G90\nG01 X15 Y20 F750\nX30 Y40\nX15 Y20\nZ5\n");
+    ASSERT_FALSE(p.error);
+    const auto s = sampling_path(p.entries, true);
+    ASSERT_EQ(s.size(), 7u);
+    EXPECT_EQ(s[0].kind, Kind::Sample);
+    EXPECT_EQ(s[0].cr, 1);  // the ramp
+    EXPECT_EQ(s[0].feed, 32768);  // 750 mm/min = 250 steps/s = 0.5 step a sample
+    // 1000 steps, less 1000/128 + 4: 988.1875 steps in 16.16
+    const double l0 = s[0].y + s[0].x / 65536.0;
+    EXPECT_NEAR(l0, 1000 - 1000 / 128.0 - 4, 1.0 / 65536);
+    EXPECT_EQ(s[1].kind, Kind::Line);
+    EXPECT_EQ(s[2].kind, Kind::Line);
+    EXPECT_EQ(s[3].kind, Kind::Sample);  // the reversal
+    EXPECT_NEAR(s[3].y + s[3].x / 65536.0, 500 - 500 / 128.0 - 4, 1.0 / 65536);
+    EXPECT_EQ(s[4].kind, Kind::Line);
+    EXPECT_EQ(s[5].kind, Kind::Sample);  // before the Z move
+    EXPECT_EQ(s[6].z, 100);
+    EXPECT_EQ(sampling_path(p.entries, false)[0].cr, 0);
+    // 1500 mm/min is one step a sample, kept to FFFFH
+    EXPECT_EQ(sampling_path(parse("G01 X1 F1500\n").entries, true)[0].feed, 0xFFFF);
 }
 
 }  // namespace

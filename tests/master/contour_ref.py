@@ -12,7 +12,7 @@ master hands to the thesis line routine, and the paper's bounds for each move.
 """
 import math
 
-TABLE = 0x3800
+TABLE = 0x3D00
 ENTRY = 16
 
 
@@ -109,6 +109,22 @@ def polygon(e, start):
         ax, ay = step3(ax, ay, -s, k), step3(ay, ax, s, k)
         pts.append((e["cx"] + ax / 65536.0, e["cy"] + ay / 65536.0))
     pts.append((float(e["x"]), float(e["y"])))
+    return pts
+
+
+def polygon_fixed(e, start):
+    """The same polygon as 16.16 absolute coordinates (the sampling method's chords run between
+    these exact vertices): the start, each vertex, the end."""
+    k, s = e["cr"], (1 if e["kind"] == 4 else -1)
+    ax = (start[0] - e["cx"]) << 16
+    ay = (start[1] - e["cy"]) << 16
+    ax += rsh(ax, 2 * k + 4)
+    ay += rsh(ay, 2 * k + 4)
+    pts = [(start[0] << 16, start[1] << 16)]
+    for _ in range(e["n"]):
+        ax, ay = step3(ax, ay, -s, k), step3(ay, ax, s, k)
+        pts.append(((e["cx"] << 16) + ax, (e["cy"] << 16) + ay))
+    pts.append((e["x"] << 16, e["y"] << 16))
     return pts
 
 

@@ -1,0 +1,108 @@
+// Watanabe and Iwai's Figs. 6, 9 and 10 for docs/contours.md, drawn with the project's plot library
+// (emu/plot) as SVG and PNG:
+//   Fig. 6: eq. 7's eps_L,max against C_L (C_x = 1, the worst: a line near an axis), for the paper's
+//           B = 16, M = 20 and the ALP 85's B = 16, M = 15;
+//   Fig. 9: eq. 17 (the largest error around a full circle) and eq. 18 (its 0.01 % confidence limit)
+//           against C_R, for the paper's M = 20 (R = 1.049 m at dX = 1 um) and M_R = 10, and for the
+//           ALP 85's 16.16 arithmetic (dX' = 2^-16 step) at its largest radius, 2047 steps;
+//   Fig. 10: the time occupation rate measured on the emulated 8085 (fig10.csv, written by
+//           tests/master/fig10_measure.py): T-states of a 2 ms sample's work / 6144.
+//
+//   sampling_figures OUT_DIR FIG10_CSV
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "emu/plot/plot.h"
+
+namespace {
+
+using alp85::plot::Chart;
+using alp85::plot::Point;
+using alp85::plot::Series;
+
+// eq. 7 with C_x = 1, in dX
+double eq7(int m, int b, int cl) { return std::ldexp(1.0, 2 * m - 3 * b + 2 + cl) + std::ldexp(1.0, -cl - 1) + 0.5; }
+
+// eq. 17 (confidence = false) or eq. 18, in dX; r_bits: R = 2^r_bits; lsb: dX'/dX as a power of two
+// (the paper's 2^(M-2B): its double precision word spans the largest radius)
+double eq17(int r_bits, int lsb_pow, int cr, bool confidence) {
+    const double pi = std::numbers::pi;
+    const double r = std::ldexp(1.0, r_bits);
+    const double poly = r * std::ldexp(1.0, -2 * cr - 4) + pi * r * std::ldexp(1.0, -5 * cr - 6);
+    const double k = 1 + std::ldexp(1.0, -cr) + std::ldexp(1.0, -2 * cr - 1);
+    const double round_off = confidence ? 3.2 * std::sqrt(pi) * std::ldexp(1.0, lsb_pow + 1) * std::pow(2.0, 0.5 * cr) * k
+                                        : std::ldexp(1.0, lsb_pow + cr + 4) * k;
+    return poly + round_off + 0.5;
+}
+
+void both(const Chart& c, const std::string& out, const std::string& name) {
+    alp85::plot::write(c, out + "/" + name + ".svg");
+    alp85::plot::write(c, out + "/" + name + ".png");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: sampling_figures OUT_DIR FIG10_CSV\n");
+        return 2;
+    }
+    const std::string out = argv[1];
+    try {
+        Chart f6{.title = "Fig. 6: eps_L,max (eq. 7, C_x = 1) against C_L", .x_label = "C_L", .y_label = "eps_L,max (dX)", .series = {}};
+        Series p6{"paper: B 16, M 20", {}, true, false}, a6{"ALP 85: B 16, M 15", {}, true, false};
+        for (int cl = 0; cl <= 14; ++cl) {
+            p6.points.push_back({double(cl), std::min(eq7(20, 16, cl), 1.2)});
+            a6.points.push_back({double(cl), std::min(eq7(15, 16, cl), 1.2)});
+        }
+        f6.series = {p6, a6};
+        both(f6, out, "fig6");
+
+        Chart f9{.title = "Fig. 9: path error around a full circle against C_R", .x_label = "C_R", .y_label = "error (dX), above 8 cut", .series = {}};
+        Series m20{"eq. 17, paper M 20", {}, true, false}, c20{"eq. 18, paper M 20", {}, true, true},
+            c10{"eq. 18, paper M_R 10", {}, true, true}, alp{"eq. 17, ALP 85 R 2047, dX' 2^-16", {}, true, false};
+        for (int cr = 1; cr <= 16; ++cr) {
+            const auto clip = [](double v) { return std::min(v, 8.0); };
+            m20.points.push_back({double(cr), clip(eq17(20, 20 - 32, cr, false))});
+            c20.points.push_back({double(cr), clip(eq17(20, 20 - 32, cr, true))});
+            c10.points.push_back({double(cr), clip(eq17(10, 20 - 32, cr, true))});
+            alp.points.push_back({double(cr), clip(eq17(11, -16, cr, false))});
+        }
+        f9.series = {m20, c20, c10, alp};
+        both(f9, out, "fig9");
+
+        Chart f10{.title = "Fig. 10: time occupation rate, 2 ms period, 8085 at 3.072 MHz", .x_label = "feedrate (mm/min)",
+                  .y_label = "occupation rate", .series = {}};
+        Series l10{"sampling, line", {}, true, false}, r10{"sampling, arc R 20 mm C_R 3", {}, true, false},
+            d10{"DDA (tests/master/dda.asm), every 2 ms", {}, true, true};
+        std::ifstream in(argv[2]);
+        std::string line;
+        std::getline(in, line);  // header: feed,line_t,arc_t,dda_t
+        while (std::getline(in, line)) {
+            std::istringstream s(line);
+            double f = 0, lt = 0, at = 0, dt = 0;
+            char c = 0;
+            if (s >> f >> c >> lt >> c >> at >> c >> dt) {
+                l10.points.push_back({f, lt / 6144});
+                r10.points.push_back({f, at / 6144});
+                d10.points.push_back({f, dt / 6144});
+            }
+        }
+        f10.series = {l10, r10, d10};
+        f10.legend = Chart::Legend::BottomRight;
+        both(f10, out, "fig10");
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "sampling_figures: %s\n", e.what());
+        return 1;
+    }
+    for (int cr = 1; cr <= 16; ++cr)
+        std::printf("C_R %2d: eq17 M20 %.3f  eq18 M20 %.3f  eq18 M_R10 %.3f  eq17 ALP85 %.3f\n", cr, eq17(20, -12, cr, false),
+                    eq17(20, -12, cr, true), eq17(10, -12, cr, true), eq17(11, -16, cr, false));
+    for (int cl = 0; cl <= 14; ++cl) std::printf("C_L %2d: eq7 M20 %.4f  M15 %.4f\n", cl, eq7(20, 16, cl), eq7(15, 16, cl));
+    return 0;
+}
