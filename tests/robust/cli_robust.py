@@ -310,7 +310,20 @@ def disasm():
     check(a == b, f"the --source output assembles to other bytes:\n{a}\n{b}")
 
 
-{"same_path": same_path, "signals": signals, "bad_input": bad_input, "messages": messages, "disasm": disasm,
+def determinism():
+    """The same inputs give the same bytes: a trace and a recording made twice are identical."""
+    d = fresh("determinism")
+    write(d, "t.alp", "monitor\nfirmware thesis-fixed\nreset\nwait display \"-ALP 85-\" timeout 1s\n"
+                      "type R 7 0 8 0 0 EXEC\nrun 20ms\n")
+    outs = []
+    for n in ("a", "b"):
+        rc, _, err = run([ALP85, "script", "t.alp", "--trace", f"{n}.csv"], d)
+        check(rc == 0, f"script --trace {n}: {rc} {err}")
+        outs.append(open(os.path.join(d, f"{n}.csv"), "rb").read() if rc == 0 else b"")
+    check(outs[0] == outs[1] and len(outs[0]) > 100000, f"two traces differ ({len(outs[0])} and {len(outs[1])} bytes)")
+
+
+{"determinism": determinism, "same_path": same_path, "signals": signals, "bad_input": bad_input, "messages": messages, "disasm": disasm,
  "debug_interrupt": debug_interrupt}[CASE]()
 if failures:
     print(f"{len(failures)} failure(s)")
