@@ -177,6 +177,17 @@ def signals():
     check(p.returncode == 4 and os.path.exists(os.path.join(d, "n.csv")), f"cpm with SIGHUP ignored: {p.returncode}")
 
 
+def debug_expressions():
+    """alp85 debug --batch: the expressions that trapped give a value or an error (status 1)."""
+    d = fresh("debug_expressions")
+    rc, out, err = run([ALP85, "debug", "--batch", "--no-history"], d, stdin="print (1<<63)/-1\nprint 7 % -1\n")
+    check(rc == 0 and "= -9223372036854775808\n" in out and "(0)" in out, f"debug: (1<<63)/-1: {rc}\n{out}{err}")
+    for text, why in [("(" * 3000 + "1" + ")" * 3000, "nested too deeply"), ("+".join(["1"] * 200000), "too long"),
+                      ("1/0", "division by zero")]:
+        rc, out, err = run([ALP85, "debug", "--batch", "--no-history"], d, stdin=f"print {text}\nprint 6*7\n")
+        check(rc == 1 and why in out + err and "(42)" in out, f"debug: print {text[:10]}...: {rc} {(out + err)[-300:]}")
+
+
 def debug_interrupt():
     """Ctrl-C in alp85 debug --batch interrupts the run (as at the prompt); the session goes on."""
     d = fresh("debug_interrupt")
@@ -323,7 +334,7 @@ def determinism():
     check(outs[0] == outs[1] and len(outs[0]) > 100000, f"two traces differ ({len(outs[0])} and {len(outs[1])} bytes)")
 
 
-{"determinism": determinism, "same_path": same_path, "signals": signals, "bad_input": bad_input, "messages": messages, "disasm": disasm,
+{"determinism": determinism, "debug_expressions": debug_expressions, "same_path": same_path, "signals": signals, "bad_input": bad_input, "messages": messages, "disasm": disasm,
  "debug_interrupt": debug_interrupt}[CASE]()
 if failures:
     print(f"{len(failures)} failure(s)")
