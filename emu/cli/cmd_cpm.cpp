@@ -2,6 +2,7 @@
 // Runs a CP/M .COM program (e.g. the period 8080/8085 CPU diagnostics) on the CP/M machine.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <charconv>
@@ -68,8 +69,8 @@ int run_cpm(const CpmArgs& args) {
         return kUsageError;
     }
     if (refuse_output_clash("cpm", {{args.program, "the program"}}, {{args.trace, "--trace"}})) return kUsageError;
-    if (const std::string why = input_file_problem(args.program); !why.empty()) {
-        std::fprintf(stderr, "alp85 cpm: %s\n", why.c_str());
+    if (std::filesystem::is_directory(args.program)) {
+        std::fprintf(stderr, "alp85 cpm: %s\n", input_file_problem(args.program).c_str());
         return 1;
     }
     std::ifstream in(args.program, std::ios::binary);
@@ -138,7 +139,7 @@ void add_cpm_command(CLI::App& app, int& status) {
     CLI::App* cmd = app.add_subcommand("cpm", "Run a CP/M .COM program (loaded at 0100H) with a small BDOS");
     cmd->add_option("program", args->program, "the .COM file")->required();
     add_cpu_option(cmd, args->cpu, "processor variant");
-    cmd->add_option("--max-tstates", args->max_tstates, "stop with an error after N T-states (0 = no limit)");
+    cmd->add_option("--max-tstates", args->max_tstates, "stop with an error after N T-states (0 = no limit)")->type_name("UINT");
     cmd->add_option("--max-cycles", args->max_tstates, "the old name of --max-tstates")->group("");  // hidden alias
     cmd->add_flag("--stats", args->stats, "print instructions, T-states, wall time and T-states per second");
     auto* trace = cmd->add_option("--trace", args->trace, "write every executed instruction as CSV (T-state, PC, "

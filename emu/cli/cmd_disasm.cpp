@@ -3,6 +3,7 @@
 // Disassembles a program image as a listing, or as asm85 source that assembles back to the same
 // bytes (emu/disasm_listing.h).
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -60,8 +61,7 @@ int run_disasm(const DisasmArgs& args) {
         for (const std::string& m : args.maps) inputs.push_back({m, "the map"});
         if (refuse_output_clash("disasm", inputs, {{args.output, "-o"}})) return 2;
     }
-    if (!args.image.empty())
-        if (const std::string why = input_file_problem(args.image); !why.empty()) return fail(why, 1);
+    if (!args.image.empty() && std::filesystem::is_directory(args.image)) return fail(input_file_problem(args.image), 1);
 
     SymbolTable symbols;
     std::vector<ImageSegment> segments;

@@ -75,9 +75,9 @@ void add_script_command(CLI::App& app, int& status) {
             }
             o.out_dir = args->out_dir;
         }
-        for (const std::string& f : args->files)
-            if (const std::string why = input_file_problem(f); !why.empty()) {
-                std::cerr << fmt::format("alp85 script: {}; nothing was run\n", why);
+        for (const std::string& f : args->files)  // a missing one: prepare() says so, with the others
+            if (std::filesystem::is_directory(f)) {
+                std::cerr << fmt::format("alp85 script: {}; nothing was run\n", input_file_problem(f));
                 status = 2;
                 return;
             }
