@@ -8,6 +8,7 @@
 #include "asm/lexer.h"
 #include "asm/version.h"
 #include "emu/util/atomic_file.h"
+#include "emu/util/output_paths.h"
 
 namespace {
 
@@ -21,7 +22,8 @@ constexpr const char* kExamples = R"(Examples:
 Diagnostics are written as file:line:col: error: message.
 Exit status: 0 success; 1 an error in the source (or a source that cannot be read) or an output
 that cannot be written, and then no output file is written; 2 a usage error (an unknown option,
-a bad --cpu, --bin-start, --bin-end or --fill), and nothing is written either.)";
+a bad --cpu, --bin-start, --bin-end, --fill or -D, an output that is the source or an INCLUDEd
+file, two outputs on one file), and nothing is written either.)";
 
 constexpr int kUsageError = 2;
 
@@ -80,6 +82,25 @@ int main(int argc, char** argv) {
     }
     for (auto& i : includes) opt.include_dirs.emplace_back(i);
 
+    if (hex_out.empty() && !no_hex) hex_out = std::filesystem::path(source).replace_extension(".hex").string();
+    if (no_hex) hex_out.clear();
+    // An output on an input (or on another output) is refused before anything is read or written.
+    const std::vector<alp85::NamedPath> outs = {{hex_out, "-o"}, {bin_out, "--bin"}, {lst_out, "--lst"}, {map_out, "--map"}};
+    if (const std::string clash = alp85::output_clash({{source, "the source"}}, outs); !clash.empty()) {
+        std::cerr << "asm85: error: " << clash << "; nothing written\n";
+        return kUsageError;
+    }
+    // A -D whose value is not an expression is a usage error, named as the user typed it.
+    if (!opt.defines.empty()) {
+        const Result d = assemble_string("", opt, "<command line>");
+        if (!d.ok()) {
+            for (const auto& diag : d.diagnostics)
+                if (diag.severity == Severity::Error) std::cerr << "asm85: error: " << diag.message << '\n';
+            std::cerr << "asm85: a bad -D; nothing written\n";
+            return kUsageError;
+        }
+    }
+
     Result r = assemble_file(source, opt);
     bool shown = true;  // a note goes with the diagnostic before it
     for (auto& d : r.diagnostics) {
@@ -105,8 +126,12 @@ int main(int argc, char** argv) {
         return kUsageError;
     }
 
-    if (hex_out.empty() && !no_hex) hex_out = std::filesystem::path(source).replace_extension(".hex").string();
-    if (no_hex) hex_out.clear();
+    std::vector<alp85::NamedPath> inputs;
+    for (std::size_t i = 1; i < r.files.size(); ++i) inputs.push_back({r.files[i], "the INCLUDEd file"});
+    if (const std::string clash = alp85::output_clash(inputs, outs); !clash.empty()) {
+        std::cerr << "asm85: error: " << clash << "; nothing written\n";
+        return kUsageError;
+    }
     // Every output is made first, then all are written together or none is (make relies on it).
     alp85::AtomicFileGroup outputs;
     if (!hex_out.empty()) outputs.add(hex_out, write_intel_hex(r.image));

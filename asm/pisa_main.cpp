@@ -6,6 +6,7 @@
 #include "asm/pisa_asm.h"
 #include "asm/version.h"
 #include "emu/util/atomic_file.h"
+#include "emu/util/output_paths.h"
 
 int main(int argc, char** argv) {
     using namespace alp85;
@@ -23,7 +24,8 @@ int main(int argc, char** argv) {
                          "Print the version (and the git commit of the build) and exit");
     app.footer("Diagnostics are written as file:line:col: error: message.\n"
                "Exit status: 0 success; 1 an error in the source or an output that cannot be written (then no\n"
-               "output file is written); 2 a usage error.");
+               "output file is written); 2 a usage error (an output that is the source, two outputs on one file,\n"
+               "a bad -D: nothing is written).");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -34,6 +36,22 @@ int main(int argc, char** argv) {
         auto eq = d.find('=');
         opt.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "" : d.substr(eq + 1));
     }
+    if (rom_out.empty() && !no_rom) rom_out = std::filesystem::path(source).replace_extension(".rom").string();
+    if (no_rom) rom_out.clear();
+    const std::vector<NamedPath> outs = {{rom_out, "-o"}, {lst_out, "--lst"}, {map_out, "--map"}};
+    if (const std::string clash = output_clash({{source, "the source"}}, outs); !clash.empty()) {
+        std::cerr << "pisa-asm: error: " << clash << "; nothing written\n";
+        return 2;
+    }
+    if (!opt.defines.empty()) {  // a -D whose value is not an expression: a usage error
+        const auto d = pisa_asm::assemble_string("", opt, "<command line>");
+        if (!d.ok()) {
+            for (const auto& diag : d.out.diagnostics)
+                if (diag.severity == asm85::Severity::Error) std::cerr << "pisa-asm: error: " << diag.message << '\n';
+            std::cerr << "pisa-asm: a bad -D; nothing written\n";
+            return 2;
+        }
+    }
     auto r = pisa_asm::assemble_file(source, opt);
     for (auto& d : r.out.diagnostics) std::cerr << asm85::format_diagnostic(d);
     if (!r.ok()) {
@@ -41,8 +59,6 @@ int main(int argc, char** argv) {
                   << ", no output written\n";
         return 1;
     }
-    if (rom_out.empty() && !no_rom) rom_out = std::filesystem::path(source).replace_extension(".rom").string();
-    if (no_rom) rom_out.clear();
     AtomicFileGroup outputs;
     if (!rom_out.empty()) outputs.add(rom_out, pisa_asm::write_rom_text(r));
     if (!lst_out.empty()) outputs.add(lst_out, asm85::write_listing(r.out, pisa_asm::output_format()));

@@ -2,10 +2,13 @@
 // Runs a CP/M .COM program (e.g. the period 8080/8085 CPU diagnostics) on the CP/M machine.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <charconv>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +23,7 @@ namespace {
 struct CpmArgs {
     std::string program;
     std::string cpu = "8085";
-    std::uint64_t max_tstates = 0;
+    std::string max_tstates = "0";  // checked by run_cpm: CLI11 would take -1 as 2^64 - 1
     bool stats = false;
     std::string trace;
     std::size_t trace_last = 0;  // 0: every instruction
@@ -49,7 +52,27 @@ private:
     std::size_t count_ = 0;
 };
 
+// A whole number of T-states, 0 to 2^64 - 1, in decimal.
+std::optional<std::uint64_t> parse_tstates(const std::string& text) {
+    std::uint64_t v = 0;
+    const char* end = text.data() + text.size();
+    const auto [p, ec] = std::from_chars(text.data(), end, v);
+    if (ec != std::errc() || p != end || text.empty()) return std::nullopt;
+    return v;
+}
+
 int run_cpm(const CpmArgs& args) {
+    const auto max_tstates = parse_tstates(args.max_tstates);
+    if (!max_tstates) {
+        std::fprintf(stderr, "alp85 cpm: error: --max-tstates '%s' is not a number of T-states (0 to %llu; 0 = no limit)\n",
+                     args.max_tstates.c_str(), static_cast<unsigned long long>(UINT64_MAX));
+        return kUsageError;
+    }
+    if (refuse_output_clash("cpm", {{args.program, "the program"}}, {{args.trace, "--trace"}})) return kUsageError;
+    if (std::filesystem::is_directory(args.program)) {
+        std::fprintf(stderr, "alp85 cpm: %s\n", input_file_problem(args.program).c_str());
+        return 1;
+    }
     std::ifstream in(args.program, std::ios::binary);
     if (!in) {
         std::fprintf(stderr, "alp85 cpm: cannot open %s\n", args.program.c_str());
@@ -81,7 +104,7 @@ int run_cpm(const CpmArgs& args) {
         });
     }
     const Stopwatch watch;
-    const CpmMachine::Result r = machine.run(args.max_tstates, [](char ch) {
+    const CpmMachine::Result r = machine.run(*max_tstates, [](char ch) {
         std::fputc(ch, stdout);
         if (ch == '\n') std::fflush(stdout);
     });
@@ -116,7 +139,7 @@ void add_cpm_command(CLI::App& app, int& status) {
     CLI::App* cmd = app.add_subcommand("cpm", "Run a CP/M .COM program (loaded at 0100H) with a small BDOS");
     cmd->add_option("program", args->program, "the .COM file")->required();
     add_cpu_option(cmd, args->cpu, "processor variant");
-    cmd->add_option("--max-tstates", args->max_tstates, "stop with an error after N T-states (0 = no limit)");
+    cmd->add_option("--max-tstates", args->max_tstates, "stop with an error after N T-states (0 = no limit)")->type_name("UINT");
     cmd->add_option("--max-cycles", args->max_tstates, "the old name of --max-tstates")->group("");  // hidden alias
     cmd->add_flag("--stats", args->stats, "print instructions, T-states, wall time and T-states per second");
     auto* trace = cmd->add_option("--trace", args->trace, "write every executed instruction as CSV (T-state, PC, "
@@ -126,7 +149,8 @@ void add_cpm_command(CLI::App& app, int& status) {
         ->check(CLI::Range(std::size_t{1}, std::size_t{10'000'000}));  // the ring is kept in memory
     cmd->footer(
         "Exit status: 0 the program ended by warm boot (JMP 0 or BDOS 0), 1 the program or the trace\n"
-        "file cannot be read or written, 2 a usage error or a HLT outside the BDOS, 3 an undefined BDOS\n"
+        "file cannot be read or written, 2 a usage error (a bad number, a --trace that is the program)\n"
+        "or a HLT outside the BDOS, 3 an undefined BDOS\n"
         "function, 4 the T-state limit was reached, 5 stopped by a debug hook.");
     cmd->callback([args, &status] { status = run_cpm(*args); });
 }

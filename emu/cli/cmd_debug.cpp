@@ -129,7 +129,7 @@ void add_debug_command(CLI::App& app, int& status) {
         "Exit status: 0, 1 a command failed in a batch session, 2 a usage error.");
     cmd->callback([args, &status] {
         if (!args->script.empty() && !std::filesystem::is_regular_file(args->script)) {
-            std::cerr << fmt::format("alp85 debug:{}: error: no such script '{}'\n", column_of(args->script), args->script);
+            std::cerr << argument_error("alp85 debug", args->script, fmt::format("no such script '{}'", args->script));
             status = kUsageError;
             return;
         }
@@ -153,9 +153,8 @@ void add_debug_command(CLI::App& app, int& status) {
                 continue;
             }
             if (!std::filesystem::is_regular_file(f)) {
-                std::cerr << fmt::format("alp85 debug:{}: error: '{}' is neither built-in firmware (thesis-fixed, thesis) "
-                                         "nor a file\n",
-                                         column_of(f), f);
+                std::cerr << argument_error(
+                    "alp85 debug", f, fmt::format("'{}' is neither built-in firmware (thesis-fixed, thesis) nor a file", f));
                 status = kUsageError;
                 return;
             }
@@ -177,6 +176,10 @@ void add_debug_command(CLI::App& app, int& status) {
         struct sigaction sa {};
         sa.sa_handler = on_sigint;
         sigemptyset(&sa.sa_mask);
+        // Reading commands from a file or a pipe, a Ctrl-C between commands must not end the
+        // input (a read interrupted by it is resumed); at the prompt libedit needs the
+        // interruption to start a fresh line.
+        if (args->batch || !isatty(STDIN_FILENO)) sa.sa_flags = SA_RESTART;
         struct sigaction old {};
         sigaction(SIGINT, &sa, &old);
 

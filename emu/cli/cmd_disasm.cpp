@@ -3,6 +3,7 @@
 // Disassembles a program image as a listing, or as asm85 source that assembles back to the same
 // bytes (emu/disasm_listing.h).
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -55,6 +56,12 @@ int run_disasm(const DisasmArgs& args) {
         return status;
     };
     if (args.monitor == !args.image.empty()) return fail("give either an image file or --monitor", 2);
+    {
+        std::vector<NamedPath> inputs = {{args.image, "the image"}};
+        for (const std::string& m : args.maps) inputs.push_back({m, "the map"});
+        if (refuse_output_clash("disasm", inputs, {{args.output, "-o"}})) return 2;
+    }
+    if (!args.image.empty() && std::filesystem::is_directory(args.image)) return fail(input_file_problem(args.image), 1);
 
     SymbolTable symbols;
     std::vector<ImageSegment> segments;
@@ -89,6 +96,7 @@ int run_disasm(const DisasmArgs& args) {
     ImageDisasmOptions o;
     o.variant = variant_of(args.cpu);
     o.symbols = args.no_symbols ? nullptr : &symbols;
+    o.label_targets = args.source && !args.no_symbols;  // source a person reads: JNZ L0802, END START
     std::string error;
     if (!args.from.empty() && !(o.from = parse_address(args.from, symbols, error))) return fail("--from: " + error, 2);
     if (!args.to.empty() && !(o.to = parse_address(args.to, symbols, error))) return fail("--to: " + error, 2);
@@ -133,7 +141,8 @@ void add_disasm_command(CLI::App& app, int& status) {
         "  alp85 disasm prog.hex --map prog.json\n"
         "  alp85 disasm rom.bin --org 0 --source -o rom.asm\n"
         "Exit status: 0 success, 1 an image or map that cannot be read, no bytes in the range, or an\n"
-        "output that cannot be written, 2 a usage error (a bad address, range or option).");
+        "output that cannot be written, 2 a usage error (a bad address, range or option, an output that\n"
+        "is the image or a map).");
     cmd->callback([args, &status] { status = run_disasm(*args); });
 }
 

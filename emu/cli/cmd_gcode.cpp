@@ -40,14 +40,26 @@ void add_gcode_command(CLI::App& app, int& status) {
         "  alp85 gcode scripts/master/circle.nc -o circle.hex\n"
         "  alp85 gcode --method sampling scripts/master/circle.nc -o circle.hex\n"
         "Exit status: 0 the table was written, 1 a file was refused (its errors are shown as\n"
-        "file:line:col: error: ...; nothing is written), 2 a usage error.");
+        "file:line:col: error: ...; nothing is written), 2 a usage error (-o naming a G-code file: nothing\n"
+        "is written).");
     cmd->callback([args, &status] {
+        std::vector<NamedPath> inputs;
+        for (const std::string& f : args->files) inputs.push_back({f, "the G-code file"});
+        if (refuse_output_clash("gcode", inputs, {{args->out, "-o"}})) {
+            status = kUsageError;
+            return;
+        }
         std::vector<std::vector<gcode::Entry>> paths;
         bool failed = false;
         for (const std::string& f : args->files) {
             std::ifstream in(f, std::ios::binary);
             std::stringstream text;
             text << in.rdbuf();
+            if (!in) {
+                std::cerr << fmt::format("alp85 gcode: cannot read {}\n", f);
+                failed = true;
+                continue;
+            }
             gcode::Parsed p = gcode::parse(text.str());
             if (p.error) {
                 std::cerr << fmt::format("{}:{}:{}: error: {}\n", f, p.error->line, p.error->column, p.error->message);

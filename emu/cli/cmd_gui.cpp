@@ -1,8 +1,11 @@
 // alp85 gui [FIRMWARE...]: the ALP 85 and its machine tool in a window (emu/gui). Exit status: 0,
-// 1 the script (--script) or --expect-display failed, 2 a usage error or no display.
+// 1 the script (--script) or --expect-display failed or the screenshot cannot be written, 2 a
+// usage error or no display.
 #include <filesystem>
 #include <iostream>
 #include <memory>
+
+#include <unistd.h>
 
 #include "emu/cli/commands.h"
 #include "emu/gui/app.h"
@@ -37,8 +40,8 @@ void add_gui_command(CLI::App& app, int& status) {
     cmd->add_option("--screenshot", args->o.screenshot,
                     "Save the window as PNG when the script and the clicks are done, then quit");
     cmd->add_option("--expect-display", args->o.expect_display, "At exit the display must read this (else status 1)");
-    cmd->add_option("--frames", args->frames, "Quit after this many frames");
-    cmd->add_option("--seconds", args->seconds, "Quit after this many seconds");
+    cmd->add_option("--frames", args->frames, "Quit after this many frames")->check(CLI::PositiveNumber);
+    cmd->add_option("--seconds", args->seconds, "Quit after this many seconds")->check(CLI::PositiveNumber);
     cmd->add_option("--scale", args->o.scale,
                     "The window's first size as a multiple of 1280x800 (2 on a HiDPI screen); default: as large as the "
                     "screen allows, at most 1 (the window can be resized)")
@@ -54,8 +57,27 @@ void add_gui_command(CLI::App& app, int& status) {
         "Examples:\n"
         "  alp85 gui                       the monitor and thesis-fixed; type R 7 0800 EXEC\n"
         "  alp85 gui --script scripts/demo/thesis.alp --screenshot gui.png\n"
-        "Without a display it exits with status 2; use `alp85 run` or `alp85 script` there.");
+        "Without a display it exits with status 2; use `alp85 run` or `alp85 script` there.\n"
+        "Exit status: 0, 1 the script or --expect-display failed or the screenshot cannot be written,\n"
+        "2 a usage error (a bad number, a --screenshot that is an input) or no display.");
     cmd->callback([args, &status] {
+        std::vector<NamedPath> inputs = {{args->o.script, "the script"}};
+        for (const std::string& f : args->o.firmware)  // a file, not a built-in name
+            if (std::filesystem::exists(f)) inputs.push_back({f, "the firmware source"});
+        if (refuse_output_clash("gui", inputs, {{args->o.screenshot, "--screenshot"}})) {
+            status = kUsageError;
+            return;
+        }
+        if (!args->o.screenshot.empty()) {  // found out now, not after the whole script has run
+            const std::filesystem::path dir = std::filesystem::absolute(args->o.screenshot).parent_path();
+            std::error_code ec;
+            if (!std::filesystem::is_directory(dir, ec) || ::access(dir.c_str(), W_OK) != 0 ||
+                std::filesystem::is_directory(args->o.screenshot, ec)) {
+                std::cerr << "alp85 gui: cannot write the screenshot '" << args->o.screenshot << "'\n";
+                status = 1;
+                return;
+            }
+        }
         args->o.motor = motor_model_of(args->motor);
         if (!args->o.out_dir.empty()) {
             std::error_code ec;

@@ -26,6 +26,7 @@ namespace alp85::cli {
 namespace {
 
 std::optional<std::string> read_text(const std::string& path) {
+    if (std::filesystem::is_directory(path)) return std::nullopt;  // opens, but reads as an error
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
     std::stringstream ss;
@@ -38,14 +39,23 @@ std::optional<std::string> read_text(const std::string& path) {
 std::string plot_bytes(const std::string& target, const std::string& title, const pisa::Tape& tape,
                        const pisa::RunResult& r) {
     plot::Chart c = pisa::toolpath_chart(title, tape, r);
-    std::filesystem::path tmp = std::filesystem::path(target).parent_path() /
-                                ("." + std::filesystem::path(target).stem().string() + ".plot-tmp" +
-                                 std::filesystem::path(target).extension().string());
-    plot::write(c, tmp.string());
+    const std::filesystem::path to(target);
+    const std::string stem = "." + to.stem().string() + ".plot-tmp";
+    const std::filesystem::path tmp = to.parent_path() / (stem + to.extension().string());
+    // plot::write draws to its own ".STEM.partial.EXT" first: both are removed if a signal ends us.
+    const TemporaryGuard guard(tmp), partial(to.parent_path() / ("." + stem + ".partial" + to.extension().string()));
+    try {
+        plot::write(c, tmp.string());
+    } catch (const std::exception& e) {
+        std::string msg = e.what();  // the plot the user asked for, not our temporary
+        for (auto at = msg.find(tmp.string()); at != std::string::npos; at = msg.find(tmp.string(), at + target.size()))
+            msg.replace(at, tmp.string().size(), target);
+        throw std::runtime_error(msg);
+    }
     auto bytes = read_text(tmp.string());
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
-    if (!bytes) throw std::runtime_error("cannot read back the plot");
+    if (!bytes) throw std::runtime_error("cannot read back the plot " + target);
     return *bytes;
 }
 
@@ -65,7 +75,8 @@ void add_pisa_command(CLI::App& app, int& status) {
         "Example:\n"
         "  alp85 pisa scripts/pisa/contour.tape --record contour.csv --plot contour.svg\n"
         "Exit status: 0 the tape ran to its end; 1 a bad tape or program (file:line:col: error: ...,\n"
-        "nothing written), a run that did not end, or an output that cannot be written; 2 a usage error.");
+        "nothing written), a run that did not end, or an output that cannot be written; 2 a usage error\n"
+        "(an output that is the tape or the program, --record and --plot on one file: nothing written).");
     cmd->callback([args, &status] {
         auto ext = std::filesystem::path(args->plot).extension().string();
         if (!args->plot.empty() && ext != ".svg" && ext != ".png") {
@@ -73,9 +84,15 @@ void add_pisa_command(CLI::App& app, int& status) {
             status = kUsageError;
             return;
         }
+        if (refuse_output_clash("pisa", {{args->tape, "the tape"}, {args->rom, "the ROM program"}},
+                                {{args->record, "--record"}, {args->plot, "--plot"}})) {
+            status = kUsageError;
+            return;
+        }
         auto text = read_text(args->tape);
         if (!text) {
-            std::cerr << fmt::format("alp85 pisa: cannot read {}\n", args->tape);
+            const std::string why = input_file_problem(args->tape);
+            std::cerr << fmt::format("alp85 pisa: cannot read {}{}\n", args->tape, why.empty() ? "" : ": " + why);
             status = 1;
             return;
         }

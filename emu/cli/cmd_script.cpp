@@ -14,6 +14,24 @@
 #include "emu/script/runner.h"
 
 namespace alp85::cli {
+namespace {
+
+// The thesis and master firmware call the monitor's routines and are entered through its RST
+// vectors: loaded alone, the CPU runs into empty EPROM and the display stays blank. A script that
+// forgets `monitor` gets told so before it times out.
+void warn_firmware_without_monitor(const std::vector<script::Command>& program) {
+    bool monitor = false;
+    for (const script::Command& c : program) {
+        if (c.op == script::Op::Monitor || (c.op == script::Op::Firmware && c.text == "monitor")) monitor = true;
+        if (c.op != script::Op::Firmware || c.text == "monitor" || monitor) continue;
+        std::cerr << fmt::format("{}:{}:{}: warning: firmware {} calls the monitor's routines (display, keypad, RST "
+                                 "vectors): put `monitor` before it, or the CPU runs into empty EPROM at RESET\n",
+                                 c.where.file, c.where.line, c.where.col, c.text);
+        return;
+    }
+}
+
+}  // namespace
 
 void add_script_command(CLI::App& app, int& status) {
     struct Args {
@@ -37,8 +55,9 @@ void add_script_command(CLI::App& app, int& status) {
         "Examples:\n"
         "  alp85 script scripts/monitor/*.alp\n"
         "  alp85 script test.alp --junit report.xml -v\n"
-        "Exit status: 0 every script passed, 1 an expectation failed, 2 a usage or script error (then\n"
-        "nothing runs) or an output that could not be written.");
+        "Exit status: 0 every script passed, 1 an expectation failed or an output (--trace, --junit)\n"
+        "could not be written, 2 a usage or script error (a script that is missing or a directory, an\n"
+        "output that is a script or a file it loads, --trace and --junit on one file): then nothing runs.");
     cmd->callback([args, &status] {
         script::RunnerOptions o;
         if (firmware::have_monitor()) o.monitor_rom = firmware::monitor;
@@ -56,10 +75,30 @@ void add_script_command(CLI::App& app, int& status) {
             }
             o.out_dir = args->out_dir;
         }
+        for (const std::string& f : args->files)  // a missing one: prepare() says so, with the others
+            if (std::filesystem::is_directory(f)) {
+                std::cerr << fmt::format("alp85 script: {}; nothing was run\n", input_file_problem(f));
+                status = 2;
+                return;
+            }
         // Every script is checked before any runs: a script error stops everything (status 2).
         std::vector<std::vector<script::Command>> programs(args->files.size());
         std::vector<script::ParseError> errors;
         for (std::size_t i = 0; i < args->files.size(); ++i) script::prepare(args->files[i], programs[i], errors, o);
+        std::vector<NamedPath> inputs;
+        for (std::size_t i = 0; i < args->files.size(); ++i) {
+            inputs.push_back({args->files[i], "the script"});
+            const std::filesystem::path dir = std::filesystem::path(args->files[i]).parent_path();
+            for (const script::Command& c : programs[i])
+                if (c.op == script::Op::Load && !c.text.empty())
+                    inputs.push_back({(std::filesystem::path(c.text).is_absolute() ? std::filesystem::path(c.text) : dir / c.text).string(),
+                                      "a program the script loads"});
+        }
+        if (refuse_output_clash("script", inputs, {{args->trace, "--trace"}, {args->junit, "--junit"}})) {
+            status = 2;
+            return;
+        }
+        for (std::size_t i = 0; i < args->files.size(); ++i) warn_firmware_without_monitor(programs[i]);
         if (!errors.empty()) {
             for (const auto& e : errors) std::cerr << e.format();
             std::cerr << fmt::format("alp85 script: {} error(s); nothing was run\n", errors.size());
@@ -73,7 +112,7 @@ void add_script_command(CLI::App& app, int& status) {
                 trace = std::make_unique<AtomicOutput>(args->trace);
             } catch (const std::exception& e) {
                 std::cerr << "alp85 script: trace: " << e.what() << '\n';
-                status = 2;
+                status = 1;
                 return;
             }
             o.trace = &trace->stream();
@@ -97,7 +136,7 @@ void add_script_command(CLI::App& app, int& status) {
                 trace->commit();
             } catch (const std::exception& e) {
                 std::cerr << "alp85 script: trace: " << e.what() << '\n';
-                status = 2;
+                status = 1;
                 return;
             }
         }
@@ -106,7 +145,7 @@ void add_script_command(CLI::App& app, int& status) {
                 write_atomic(args->junit, script::junit_xml(results));
             } catch (const std::exception& e) {
                 std::cerr << "alp85 script: " << e.what() << '\n';
-                status = 2;
+                status = 1;
                 return;
             }
         }

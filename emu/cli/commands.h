@@ -3,9 +3,11 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "emu/util/output_paths.h"
 #include "emu/util/stopwatch.h"
 
 #include "peripherals/machine_tool.h"
@@ -25,6 +27,19 @@ const std::string& command_line();
 // 1-based column of `argument` in command_line() (also as the value of --option=argument); 1 if
 // it is not there.
 int column_of(std::string_view argument);
+
+// An output that is one of the inputs, or two outputs on one file: reported as
+// `alp85 COMMAND: error: ...; nothing written` and true (the caller exits with kUsageError before
+// it writes anything).
+bool refuse_output_clash(std::string_view command, const std::vector<NamedPath>& inputs,
+                         const std::vector<NamedPath>& outputs);
+// "" when `path` can be opened as an input file; else why not, naming it ("'x.com' is a
+// directory", "no such file 'x.com'").
+std::string input_file_problem(const std::string& path);
+
+// A report on one argument, as `alp85 run` gives it: "WHO:1:COL: error: MESSAGE", the command
+// line, and a caret under the argument.
+std::string argument_error(std::string_view who, std::string_view argument, const std::string& message);
 
 // --cpu 8080|8085 on a command (the processor to emulate or decode as), into `cpu`, which keeps
 // its default; variant_of() gives the Variant it names.

@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <filesystem>
+#include <iostream>
 
 #include "emu/cli/commands.h"
 
@@ -29,6 +31,28 @@ void set_command_line(int argc, const char* const* argv) {
 }
 
 const std::string& command_line() { return g_line; }
+
+std::string argument_error(std::string_view who, std::string_view argument, const std::string& message) {
+    const int col = column_of(argument);
+    return std::string(who) + ":1:" + std::to_string(col) + ": error: " + message + "\n " + g_line + "\n " +
+           std::string(static_cast<std::size_t>(col - 1), ' ') + "^\n";
+}
+
+bool refuse_output_clash(std::string_view command, const std::vector<NamedPath>& inputs,
+                         const std::vector<NamedPath>& outputs) {
+    const std::string clash = output_clash(inputs, outputs);
+    if (clash.empty()) return false;
+    std::cerr << "alp85 " << command << ": error: " << clash << "; nothing written\n";
+    return true;
+}
+
+std::string input_file_problem(const std::string& path) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(st)) return "no such file '" + path + "'";
+    if (std::filesystem::is_directory(st)) return "'" + path + "' is a directory, not a file";
+    return {};
+}
 
 CLI::Option* add_cpu_option(CLI::App* cmd, std::string& cpu, const std::string& help) {
     return cmd->add_option("--cpu", cpu, help)->check(CLI::IsMember({"8080", "8085"}))->capture_default_str();

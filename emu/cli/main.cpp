@@ -1,6 +1,7 @@
 // alp85: the ALP 85 emulator's command-line front end.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "asm/version.h"
 #include "emu/cli/commands.h"
@@ -25,6 +26,22 @@ int main(int argc, char** argv) {
     alp85::cli::add_dap_command(app, status);
 
     alp85::cli::set_command_line(argc, argv);
+    // CLI11 would say only "A subcommand is required": name the word that is not a command.
+    if (argc > 1 && argv[1][0] != '-') {
+        std::string names;
+        bool known = false;
+        for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+            known = known || sub->check_name(argv[1]);
+            names += (names.empty() ? "" : ", ") + sub->get_name();
+        }
+        if (!known) {
+            std::fputs(alp85::cli::argument_error("alp85", argv[1],
+                                                  std::string("'") + argv[1] + "' is not a command (" + names + ")")
+                           .c_str(),
+                       stderr);
+            return alp85::cli::kUsageError;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

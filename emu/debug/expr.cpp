@@ -26,6 +26,14 @@ constexpr std::array<FlagName, 7> kFlags = {{{"S", isa::F_S},
                                              {"V", isa::F_V},
                                              {"K", isa::F_K}}};
 bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '?' || c == '@'; }
+
+// Parsing and evaluating recurse: a bound on the depth keeps a hostile text ("((((...", a
+// 200 000-term sum) from exhausting the stack. No expression a person types comes near it.
+constexpr int kMaxDepth = 256;
+
+// Two's-complement arithmetic, as the 64-bit machine word does it: no overflow is undefined.
+std::int64_t wrap(std::uint64_t v) { return static_cast<std::int64_t>(v); }
+std::uint64_t u(std::int64_t v) { return static_cast<std::uint64_t>(v); }
 }  // namespace
 
 std::optional<RegId> register_named(std::string_view n) {
@@ -106,9 +114,14 @@ private:
         while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
     }
     int add(Expr::Node n) {
+        int d = 1;
+        if (n.a >= 0) d = std::max(d, depth_of(n.a) + 1);
+        if (n.b >= 0) d = std::max(d, depth_of(n.b) + 1);
         e_->nodes_.push_back(n);
+        depth_.push_back(d);
         return static_cast<int>(e_->nodes_.size()) - 1;
     }
+    int depth_of(int n) const { return depth_[static_cast<std::size_t>(n)]; }
     int width_of(int n) const {
         const Expr::Node& x = e_->nodes_[static_cast<std::size_t>(n)];
         switch (x.kind) {
@@ -141,6 +154,15 @@ private:
         return nullptr;
     }
 
+    // Entered for each parenthesis, bracket and prefix operator: the parser's own recursion.
+    struct Nest {
+        ExprParser& p;
+        explicit Nest(ExprParser& parser) : p(parser) { ++p.nesting_; }
+        ~Nest() { --p.nesting_; }
+    };
+    bool too_deep() const { return nesting_ > kMaxDepth; }
+    int fail_deep() { return fail(fmt::format("the expression is nested too deeply (more than {} levels)", kMaxDepth)); }
+
     int binary(int level) {
         if (level == kLevels) return unary();
         int left = binary(level + 1);
@@ -151,6 +173,9 @@ private:
             const int right = binary(level + 1);
             if (right < 0) return -1;
             left = add({op->kind, 0, left, right, col});
+            if (depth_of(left) > kMaxDepth)  // evaluation recurses once per level of the tree
+                return fail(fmt::format("the expression is too long (more than {} operations in a chain)", kMaxDepth),
+                            col);
         }
         return left;
     }
@@ -160,20 +185,22 @@ private:
         if (i_ >= s_.size()) return fail("expected a value");
         const char c = s_[i_];
         const int col = static_cast<int>(i_);
-        if (c == '-' || c == '!' || c == '~') {
+        if (c == '-' || c == '!' || c == '~' || c == '+') {
+            const Nest nest(*this);
+            if (too_deep()) return fail_deep();
             ++i_;
             const int a = unary();
             if (a < 0) return -1;
+            if (c == '+') return a;
+            if (a < 0) return -1;
             return add({c == '-' ? K::Neg : c == '!' ? K::Not : K::Compl, 0, a, -1, col});
-        }
-        if (c == '+') {
-            ++i_;
-            return unary();
         }
         return primary();
     }
 
     int bracket(K kind, int col) {  // after '['
+        const Nest nest(*this);
+        if (too_deep()) return fail_deep();
         const int a = binary(0);
         if (a < 0) return -1;
         skip();
@@ -186,6 +213,8 @@ private:
         const char c = s_[i_];
         const int col = static_cast<int>(i_);
         if (c == '(') {
+            const Nest nest(*this);
+            if (too_deep()) return fail_deep();
             ++i_;
             const int a = binary(0);
             if (a < 0) return -1;
@@ -264,6 +293,8 @@ private:
     const Expr::Variables* vars_;
     Expr* e_ = nullptr;
     std::size_t i_ = 0;
+    int nesting_ = 0;
+    std::vector<int> depth_;  // of each node's subtree, parallel to e_->nodes_
 };
 
 std::optional<Expr> Expr::parse(std::string_view text, const SymbolTable& symbols, ExprError& error, Names names,
@@ -287,19 +318,21 @@ std::int64_t Expr::eval(const Machine& m, int i) const {
             const auto addr = static_cast<std::uint16_t>(a());
             return m.peek(addr) | m.peek(static_cast<std::uint16_t>(addr + 1)) << 8;
         }
-        case Kind::Neg: return -a();
+        case Kind::Neg: return wrap(0 - u(a()));
         case Kind::Not: return a() == 0;
         case Kind::Compl: return ~a();
-        case Kind::Mul: return a() * b();
+        case Kind::Mul: return wrap(u(a()) * u(b()));
         case Kind::Div:
         case Kind::Mod: {
             const std::int64_t x = a(), y = b();
             if (y == 0) throw ExprError{n.col + 1, "division by zero"};
+            // x / -1 is -x, x % -1 is 0: the hardware division of INT64_MIN by -1 traps.
+            if (y == -1) return n.kind == Kind::Div ? wrap(0 - u(x)) : 0;
             return n.kind == Kind::Div ? x / y : x % y;
         }
-        case Kind::Add: return a() + b();
-        case Kind::Sub: return a() - b();
-        case Kind::Shl: return a() << (b() & 63);
+        case Kind::Add: return wrap(u(a()) + u(b()));
+        case Kind::Sub: return wrap(u(a()) - u(b()));
+        case Kind::Shl: return wrap(u(a()) << (b() & 63));
         case Kind::Shr: return a() >> (b() & 63);
         case Kind::Lt: return a() < b();
         case Kind::Le: return a() <= b();

@@ -28,6 +28,7 @@ struct Word {
 };
 
 constexpr const char* kAxisNames = "XYZ";
+constexpr double kMaxWord = 100000;
 
 class Parser {
 public:
@@ -87,6 +88,11 @@ private:
                 const std::string num(s.substr(start, j - start));
                 if (std::count(num.begin(), num.end(), '.') > 1) return fail(col, fmt::format("bad number '{}'", num));
                 w.value = std::strtod(num.c_str(), nullptr);
+                // Five digits before the point, as NC controls read words: anything larger is
+                // no length, feed or G number of this machine (and would overflow the steps).
+                if (!(std::fabs(w.value) < kMaxWord))
+                    return fail(col, fmt::format("{}{} is out of range (a word is below 100000)", w.letter,
+                                                 num.size() > 24 ? num.substr(0, 20) + "..." : num));
                 ws.push_back(w);
                 i = j;
             } else {

@@ -615,7 +615,7 @@ int App::loop() {
                 ui_.add_log("screenshot " + pending_shot_);
             } catch (const std::exception& x) {
                 std::cerr << "alp85 gui: " << x.what() << '\n';
-                status_ = 2;
+                status_ = 1;  // a file that cannot be written (README: exit statuses)
             }
             pending_shot_.clear();
         }

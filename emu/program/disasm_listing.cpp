@@ -9,7 +9,52 @@
 
 namespace alp85 {
 
+namespace {
+
+// The jumps and calls with a 16-bit target (JMP, CALL, Jcc, Ccc; the 8085's JNK and JK).
+bool transfers_control(std::uint8_t op, Variant v) {
+    if (op == 0xC3 || op == 0xCD) return true;
+    if ((op & 0xC7) == 0xC2 || (op & 0xC7) == 0xC4) return true;  // Jcc, Ccc
+    return v == Variant::I8085 && (op == 0xDD || op == 0xFD);
+}
+
+DisasmResult decode(const std::vector<ImageSegment>& segments, const ImageDisasmOptions& options);
+
+}  // namespace
+
 DisasmResult disassemble_image(const std::vector<ImageSegment>& segments, const ImageDisasmOptions& options) {
+    if (!options.label_targets) return decode(segments, options);
+    // Decode once to see where lines start and what jumps where, then again with the labels.
+    ImageDisasmOptions plain = options;
+    plain.label_targets = false;
+    const DisasmResult first = decode(segments, plain);
+    if (first.blocks.empty()) return first;
+    std::set<std::uint16_t> starts;
+    for (const DisasmBlock& b : first.blocks)
+        for (const DisasmLine& l : b.lines) starts.insert(l.address);
+    SymbolTable labels;
+    if (options.symbols) labels.add_table(*options.symbols);
+    const auto has_label = [&](std::uint16_t a) { return labels.label_at(a).has_value(); };
+    const auto add_label = [&](std::uint16_t a, std::string name) {
+        if (labels.value_of(name)) name = fmt::format("L{:04X}", a);
+        while (labels.value_of(name)) name += '_';
+        labels.add(name, a, "label");
+    };
+    const std::uint16_t entry = first.blocks.front().lines.front().address;
+    if (!has_label(entry)) add_label(entry, "START");
+    for (const DisasmBlock& b : first.blocks)
+        for (const DisasmLine& l : b.lines) {
+            if (l.bytes.size() != 3 || !transfers_control(l.bytes[0], options.variant)) continue;
+            const auto target = static_cast<std::uint16_t>(l.bytes[1] | l.bytes[2] << 8);
+            if (starts.count(target) && !has_label(target)) add_label(target, fmt::format("L{:04X}", target));
+        }
+    plain.symbols = &labels;
+    return decode(segments, plain);
+}
+
+namespace {
+
+DisasmResult decode(const std::vector<ImageSegment>& segments, const ImageDisasmOptions& options) {
     std::array<std::uint8_t, 0x10000> mem{};
     std::bitset<0x10000> present;
     for (const ImageSegment& s : segments)
@@ -50,8 +95,9 @@ DisasmResult disassemble_image(const std::vector<ImageSegment>& segments, const 
             if (auto l = options.symbols->label_at(line.address)) line.label = *l;
         // Decode first without names, so a split instruction does not count the names it would use.
         const asm85::Disassembly plain = asm85::disassemble(read, line.address, {.symbol = {}, .cpu8080 = dopt.cpu8080, .data_symbol = {}});
-        unsigned n = 0;
-        while (n < plain.length && inside(a + n)) ++n;
+        // The first byte is in range; the operands may follow `to` (an instruction is not split there).
+        unsigned n = 1;
+        while (n < plain.length && a + n <= 0xFFFF && present.test(a + n)) ++n;
         // A label inside the instruction marks where code (or data) really starts: stop there.
         if (options.symbols)
             for (unsigned i = 1; i < n; ++i)
@@ -72,6 +118,8 @@ DisasmResult disassemble_image(const std::vector<ImageSegment>& segments, const 
     }
     return out;
 }
+
+}  // namespace
 
 std::string format_listing(const DisasmResult& result) {
     std::string s;
@@ -113,7 +161,10 @@ std::string format_source(const DisasmResult& result, const ImageDisasmOptions& 
             s += fmt::format("                {:<24}; {:04X}\n", l.text, l.address);
         }
     }
-    s += "\n                END\n";
+    const std::string* start = nullptr;  // the first line's label: where a reader starts
+    if (!result.blocks.empty() && !result.blocks.front().lines.empty() && !result.blocks.front().lines.front().label.empty())
+        start = &result.blocks.front().lines.front().label;
+    s += start ? fmt::format("\n                END {}\n", *start) : "\n                END\n";
     return s;
 }
 

@@ -38,7 +38,11 @@ struct ImageDisasmOptions {
     Variant variant = Variant::I8085;
     const SymbolTable* symbols = nullptr;  // names for labels and 16-bit operands; may be null
     std::optional<std::uint16_t> from;     // first address decoded (decoding starts exactly here)
-    std::optional<std::uint16_t> to;       // last address decoded (inclusive)
+    std::optional<std::uint16_t> to;       // last address at which an instruction starts (decoded whole)
+    // For source a person reads: every JMP, CALL and conditional target that is the start of a
+    // decoded line gets a label (L0802, where the symbols have none), and so does the first line
+    // (START), which END then names.
+    bool label_targets = false;
 };
 
 struct DisasmResult {
@@ -47,8 +51,9 @@ struct DisasmResult {
     std::size_t bytes = 0;             // bytes covered
 };
 
-// Decodes the bytes of `segments` (overlapping segments: the later one wins) inside from..to.
-// An instruction whose operand bytes are not all in the block, or which a label cuts, is DB.
+// Decodes the bytes of `segments` (overlapping segments: the later one wins) from `from`; the
+// instruction that starts at `to` is decoded whole (its operand bytes may lie beyond `to`).
+// An instruction whose operand bytes are not all in the image, or which a label cuts, is DB.
 DisasmResult disassemble_image(const std::vector<ImageSegment>& segments, const ImageDisasmOptions& options);
 
 // "0800  31 00 20   LXI SP,2000H" lines, a "NAME:" line before each labelled address, and a
@@ -56,7 +61,8 @@ DisasmResult disassemble_image(const std::vector<ImageSegment>& segments, const 
 std::string format_listing(const DisasmResult& result);
 
 // asm85 source: a header naming `origin`, EQU lines for every name used as an operand but not
-// placed as a label, ORG per block, labels, instructions, END.
+// placed as a label, ORG per block, labels, instructions, END (naming the first line's label, if
+// it has one, as the start address).
 std::string format_source(const DisasmResult& result, const ImageDisasmOptions& options, const std::string& origin);
 
 }  // namespace alp85

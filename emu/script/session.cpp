@@ -41,10 +41,13 @@ Session::Session(SessionOptions options)
     });
     // The text front ends (alp85 script, alp85 run) read the events as they always printed them.
     if (std::ostream* out = options_.out) {
-        debugger_.listen([out](const debug::Event& e) {
+        debugger_.listen([out, verbose = options_.verbose](const debug::Event& e) {
             switch (e.kind) {
                 case debug::Event::Kind::Output: *out << e.text << '\n'; break;
                 case debug::Event::Kind::Stopped:
+                    // A stop the script goes on from (and checks with expect reg PC) is progress:
+                    // shown with -v only, so that a passing script is quiet.
+                    if (!verbose) break;
                     *out << fmt::format("{}:{}: stopped at {} {}\n", e.origin.file, e.origin.line, debug::name(e.stop.reason),
                                         hex(e.stop.reason == debug::StopReason::Watchpoint ? *e.stop.data : e.stop.pc, 4));
                     break;

@@ -14,6 +14,27 @@
 
 namespace alp85 {
 
+// A temporary file that this process removes if SIGINT, SIGTERM or SIGHUP ends it: a process-wide
+// table of live temporaries, emptied by a handler that uses async-signal-safe calls only (unlink)
+// and then re-raises the signal with its default action, so that the exit status still says which
+// signal ended the process. The handler is installed, at the first temporary, only for the signals
+// whose action is still the default: a front end's own handler (alp85 debug's Ctrl-C, which stops
+// a run) and an ignored signal (nohup) are left as they are.
+class TemporaryGuard {
+public:
+    TemporaryGuard() = default;
+    explicit TemporaryGuard(const std::filesystem::path& path) { guard(path); }
+    TemporaryGuard(const TemporaryGuard&) = delete;
+    TemporaryGuard& operator=(const TemporaryGuard&) = delete;
+    ~TemporaryGuard() { release(); }
+    void guard(const std::filesystem::path& path);  // at most one path per guard
+    // The file is gone or renamed to its target: the handler must no longer remove it.
+    void release();
+
+private:
+    int slot_ = -1;  // -1: nothing guarded (or the table was full)
+};
+
 // For output written piece by piece (traces): write to stream(), then commit(). Destroyed
 // without commit() (an error, an exception), it removes the temporary file.
 class AtomicOutput {
@@ -28,6 +49,7 @@ public:
 
 private:
     std::filesystem::path path_, tmp_;  // tmp_ empty when writing through
+    TemporaryGuard guard_;
     std::ofstream out_;
     bool done_ = false;
 };

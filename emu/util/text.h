@@ -75,8 +75,10 @@ inline std::optional<std::int64_t> parse_int(std::string_view text) {
     if (text.empty()) return std::nullopt;
     std::string s = to_upper(text);
     int base = 10;
+    bool prefixed = false;  // 0x: the prefix, not a leading digit, says it is a number
     if (s.size() > 2 && s[0] == '0' && s[1] == 'X') {
         base = 16;
+        prefixed = true;
         s = s.substr(2);
     } else if (s.size() > 1 && s.back() == 'H') {
         base = 16;
@@ -90,17 +92,17 @@ inline std::optional<std::int64_t> parse_int(std::string_view text) {
     } else if (s.size() > 1 && s.back() == 'D') {
         s.pop_back();
     }
-    if (s.empty() || s.size() > 16 || !std::isdigit(static_cast<unsigned char>(s[0]))) return std::nullopt;
-    std::int64_t v = 0;
+    if (s.empty() || s.size() > 16 || (!prefixed && !std::isdigit(static_cast<unsigned char>(s[0])))) return std::nullopt;
+    std::uint64_t v = 0;  // 16 hex digits fill all 64 bits: kept as the machine word's bits
     for (char ch : s) {
         int d;
         if (ch >= '0' && ch <= '9') d = ch - '0';
         else if (ch >= 'A' && ch <= 'F') d = ch - 'A' + 10;
         else return std::nullopt;
         if (d >= base) return std::nullopt;
-        v = v * base + d;
+        v = v * static_cast<std::uint64_t>(base) + static_cast<std::uint64_t>(d);
     }
-    return v;
+    return static_cast<std::int64_t>(v);
 }
 
 }  // namespace alp85

@@ -32,12 +32,27 @@ TEST(DisasmImage, BlocksFollowTheSegments) {
 TEST(DisasmImage, FromAndToLimitTheRange) {
     ImageDisasmOptions o;
     o.from = 0x0802;
-    o.to = 0x0803;  // cuts the JMP after its opcode and first operand byte
+    o.to = 0x0803;  // inside the JMP that starts at 0802H: it is decoded whole (issue 23, 14)
     const DisasmResult r = disassemble_image(small_image(), o);
     ASSERT_EQ(r.blocks.size(), 1u);
     ASSERT_EQ(r.blocks[0].lines.size(), 1u);
-    EXPECT_EQ(r.blocks[0].lines[0].text, "DB 0C3H,00H");
-    EXPECT_EQ(r.bytes, 2u);
+    EXPECT_EQ(r.blocks[0].lines[0].text, "JMP 0800H");
+    EXPECT_EQ(r.bytes, 3u);
+}
+
+TEST(DisasmImage, SourceLabelsEveryTargetItSeesAndEndsWithTheStart) {
+    // 0800 MVI A,5 / 0802 DCR A / 0803 JNZ 0802H / 0806 CALL 0800H / 0809 JMP 4000H (outside)
+    ImageDisasmOptions o;
+    o.label_targets = true;
+    const DisasmResult r = disassemble_image(
+        {{0x0800, {0x3E, 0x05, 0x3D, 0xC2, 0x02, 0x08, 0xCD, 0x00, 0x08, 0xC3, 0x00, 0x40}}}, o);
+    const std::string s = format_source(r, o, "t.hex");
+    EXPECT_NE(s.find("START:\n                MVI A,05H"), std::string::npos) << s;
+    EXPECT_NE(s.find("L0802:\n                DCR A"), std::string::npos) << s;
+    EXPECT_NE(s.find("JNZ L0802"), std::string::npos) << s;
+    EXPECT_NE(s.find("CALL START"), std::string::npos) << s;
+    EXPECT_NE(s.find("JMP 4000H"), std::string::npos) << s;  // no line there: no label
+    EXPECT_NE(s.find("END START\n"), std::string::npos) << s;
 }
 
 TEST(DisasmImage, LabelsNameOperandsAndCutInstructions) {
@@ -107,7 +122,7 @@ TEST(DisasmImage, SourceDefinesWhatItUses) {
     EXPECT_NE(s.find("ORG 0800H\nSTART:\n                CALL BDOS"), std::string::npos) << s;
     EXPECT_NE(s.find("JMP START"), std::string::npos) << s;
     EXPECT_NE(s.find("asm85 --cpu 8085u"), std::string::npos) << s;
-    EXPECT_NE(s.rfind("END\n"), std::string::npos) << s;
+    EXPECT_NE(s.rfind("END START\n"), std::string::npos) << s;  // the first line's label is the start
 }
 
 }  // namespace
