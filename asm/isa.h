@@ -31,6 +31,20 @@ enum class Set : std::uint8_t {
     Undoc8085,  // the ten undocumented 8085 instructions
 };
 
+// How an instruction changes the flow of control: what steppers, backtraces and reverse execution
+// need to know. The `...If` kinds are conditional (RSTV restarts only when V is set). An
+// interrupt acknowledge is not an opcode's flow: it is the CPU's.
+enum class Flow : std::uint8_t {
+    Next,          // falls through to the next instruction
+    Jump, JumpIf,  // JMP, Jcc (JNK/JK included)
+    JumpIndirect,  // PCHL
+    Call, CallIf,  // CALL, Ccc: push the return address
+    Restart,       // RST n: pushes the return address
+    RestartIf,     // RSTV (8085): RST 8 at 0040H when V is set
+    Return, ReturnIf,
+    Halt,
+};
+
 struct OpInfo {
     std::string_view mnemonic;  // Intel mnemonic
     // Operand template, comma separated. Register and pair names stand for themselves
@@ -45,6 +59,7 @@ struct OpInfo {
     Set set;
     std::uint8_t alias8080;      // the opcode an 8080 executes for this byte (itself if Common)
     std::string_view alt;        // second mnemonic the assembler accepts (JNX5, JX5), or empty
+    Flow flow = Flow::Next;      // of the 8085's instruction (an 8080 executes alias8080's)
 };
 
 // clang-format off
@@ -167,7 +182,7 @@ inline constexpr std::array<OpInfo, 256> kOpcodes{{
     {"MOV", "M,E", 1, 7, 7, 7, 7, Set::Common, 0x73, ""},  // 73
     {"MOV", "M,H", 1, 7, 7, 7, 7, Set::Common, 0x74, ""},  // 74
     {"MOV", "M,L", 1, 7, 7, 7, 7, Set::Common, 0x75, ""},  // 75
-    {"HLT", "", 1, 5, 5, 7, 7, Set::Common, 0x76, ""},  // 76
+    {"HLT", "", 1, 5, 5, 7, 7, Set::Common, 0x76, "", Flow::Halt},  // 76
     {"MOV", "M,A", 1, 7, 7, 7, 7, Set::Common, 0x77, ""},  // 77
     {"MOV", "A,B", 1, 4, 4, 5, 5, Set::Common, 0x78, ""},  // 78
     {"MOV", "A,C", 1, 4, 4, 5, 5, Set::Common, 0x79, ""},  // 79
@@ -241,71 +256,84 @@ inline constexpr std::array<OpInfo, 256> kOpcodes{{
     {"CMP", "L", 1, 4, 4, 4, 4, Set::Common, 0xBD, ""},  // BD
     {"CMP", "M", 1, 7, 7, 7, 7, Set::Common, 0xBE, ""},  // BE
     {"CMP", "A", 1, 4, 4, 4, 4, Set::Common, 0xBF, ""},  // BF
-    {"RNZ", "", 1, 6, 12, 5, 11, Set::Common, 0xC0, ""},  // C0
+    {"RNZ", "", 1, 6, 12, 5, 11, Set::Common, 0xC0, "", Flow::ReturnIf},  // C0
     {"POP", "B", 1, 10, 10, 10, 10, Set::Common, 0xC1, ""},  // C1
-    {"JNZ", "a16", 3, 7, 10, 10, 10, Set::Common, 0xC2, ""},  // C2
-    {"JMP", "a16", 3, 10, 10, 10, 10, Set::Common, 0xC3, ""},  // C3
-    {"CNZ", "a16", 3, 9, 18, 11, 17, Set::Common, 0xC4, ""},  // C4
+    {"JNZ", "a16", 3, 7, 10, 10, 10, Set::Common, 0xC2, "", Flow::JumpIf},  // C2
+    {"JMP", "a16", 3, 10, 10, 10, 10, Set::Common, 0xC3, "", Flow::Jump},  // C3
+    {"CNZ", "a16", 3, 9, 18, 11, 17, Set::Common, 0xC4, "", Flow::CallIf},  // C4
     {"PUSH", "B", 1, 12, 12, 11, 11, Set::Common, 0xC5, ""},  // C5
     {"ADI", "d8", 2, 7, 7, 7, 7, Set::Common, 0xC6, ""},  // C6
-    {"RST", "0", 1, 12, 12, 11, 11, Set::Common, 0xC7, ""},  // C7
-    {"RZ", "", 1, 6, 12, 5, 11, Set::Common, 0xC8, ""},  // C8
-    {"RET", "", 1, 10, 10, 10, 10, Set::Common, 0xC9, ""},  // C9
-    {"JZ", "a16", 3, 7, 10, 10, 10, Set::Common, 0xCA, ""},  // CA
-    {"RSTV", "", 1, 6, 12, 10, 10, Set::Undoc8085, 0xC3, ""},  // CB
-    {"CZ", "a16", 3, 9, 18, 11, 17, Set::Common, 0xCC, ""},  // CC
-    {"CALL", "a16", 3, 18, 18, 17, 17, Set::Common, 0xCD, ""},  // CD
+    {"RST", "0", 1, 12, 12, 11, 11, Set::Common, 0xC7, "", Flow::Restart},  // C7
+    {"RZ", "", 1, 6, 12, 5, 11, Set::Common, 0xC8, "", Flow::ReturnIf},  // C8
+    {"RET", "", 1, 10, 10, 10, 10, Set::Common, 0xC9, "", Flow::Return},  // C9
+    {"JZ", "a16", 3, 7, 10, 10, 10, Set::Common, 0xCA, "", Flow::JumpIf},  // CA
+    {"RSTV", "", 1, 6, 12, 10, 10, Set::Undoc8085, 0xC3, "", Flow::RestartIf},  // CB
+    {"CZ", "a16", 3, 9, 18, 11, 17, Set::Common, 0xCC, "", Flow::CallIf},  // CC
+    {"CALL", "a16", 3, 18, 18, 17, 17, Set::Common, 0xCD, "", Flow::Call},  // CD
     {"ACI", "d8", 2, 7, 7, 7, 7, Set::Common, 0xCE, ""},  // CE
-    {"RST", "1", 1, 12, 12, 11, 11, Set::Common, 0xCF, ""},  // CF
-    {"RNC", "", 1, 6, 12, 5, 11, Set::Common, 0xD0, ""},  // D0
+    {"RST", "1", 1, 12, 12, 11, 11, Set::Common, 0xCF, "", Flow::Restart},  // CF
+    {"RNC", "", 1, 6, 12, 5, 11, Set::Common, 0xD0, "", Flow::ReturnIf},  // D0
     {"POP", "D", 1, 10, 10, 10, 10, Set::Common, 0xD1, ""},  // D1
-    {"JNC", "a16", 3, 7, 10, 10, 10, Set::Common, 0xD2, ""},  // D2
+    {"JNC", "a16", 3, 7, 10, 10, 10, Set::Common, 0xD2, "", Flow::JumpIf},  // D2
     {"OUT", "p8", 2, 10, 10, 10, 10, Set::Common, 0xD3, ""},  // D3
-    {"CNC", "a16", 3, 9, 18, 11, 17, Set::Common, 0xD4, ""},  // D4
+    {"CNC", "a16", 3, 9, 18, 11, 17, Set::Common, 0xD4, "", Flow::CallIf},  // D4
     {"PUSH", "D", 1, 12, 12, 11, 11, Set::Common, 0xD5, ""},  // D5
     {"SUI", "d8", 2, 7, 7, 7, 7, Set::Common, 0xD6, ""},  // D6
-    {"RST", "2", 1, 12, 12, 11, 11, Set::Common, 0xD7, ""},  // D7
-    {"RC", "", 1, 6, 12, 5, 11, Set::Common, 0xD8, ""},  // D8
+    {"RST", "2", 1, 12, 12, 11, 11, Set::Common, 0xD7, "", Flow::Restart},  // D7
+    {"RC", "", 1, 6, 12, 5, 11, Set::Common, 0xD8, "", Flow::ReturnIf},  // D8
     {"SHLX", "", 1, 10, 10, 10, 10, Set::Undoc8085, 0xC9, ""},  // D9
-    {"JC", "a16", 3, 7, 10, 10, 10, Set::Common, 0xDA, ""},  // DA
+    {"JC", "a16", 3, 7, 10, 10, 10, Set::Common, 0xDA, "", Flow::JumpIf},  // DA
     {"IN", "p8", 2, 10, 10, 10, 10, Set::Common, 0xDB, ""},  // DB
-    {"CC", "a16", 3, 9, 18, 11, 17, Set::Common, 0xDC, ""},  // DC
-    {"JNK", "a16", 3, 7, 10, 17, 17, Set::Undoc8085, 0xCD, "JNX5"},  // DD
+    {"CC", "a16", 3, 9, 18, 11, 17, Set::Common, 0xDC, "", Flow::CallIf},  // DC
+    {"JNK", "a16", 3, 7, 10, 17, 17, Set::Undoc8085, 0xCD, "JNX5", Flow::JumpIf},  // DD
     {"SBI", "d8", 2, 7, 7, 7, 7, Set::Common, 0xDE, ""},  // DE
-    {"RST", "3", 1, 12, 12, 11, 11, Set::Common, 0xDF, ""},  // DF
-    {"RPO", "", 1, 6, 12, 5, 11, Set::Common, 0xE0, ""},  // E0
+    {"RST", "3", 1, 12, 12, 11, 11, Set::Common, 0xDF, "", Flow::Restart},  // DF
+    {"RPO", "", 1, 6, 12, 5, 11, Set::Common, 0xE0, "", Flow::ReturnIf},  // E0
     {"POP", "H", 1, 10, 10, 10, 10, Set::Common, 0xE1, ""},  // E1
-    {"JPO", "a16", 3, 7, 10, 10, 10, Set::Common, 0xE2, ""},  // E2
+    {"JPO", "a16", 3, 7, 10, 10, 10, Set::Common, 0xE2, "", Flow::JumpIf},  // E2
     {"XTHL", "", 1, 16, 16, 18, 18, Set::Common, 0xE3, ""},  // E3
-    {"CPO", "a16", 3, 9, 18, 11, 17, Set::Common, 0xE4, ""},  // E4
+    {"CPO", "a16", 3, 9, 18, 11, 17, Set::Common, 0xE4, "", Flow::CallIf},  // E4
     {"PUSH", "H", 1, 12, 12, 11, 11, Set::Common, 0xE5, ""},  // E5
     {"ANI", "d8", 2, 7, 7, 7, 7, Set::Common, 0xE6, ""},  // E6
-    {"RST", "4", 1, 12, 12, 11, 11, Set::Common, 0xE7, ""},  // E7
-    {"RPE", "", 1, 6, 12, 5, 11, Set::Common, 0xE8, ""},  // E8
-    {"PCHL", "", 1, 6, 6, 5, 5, Set::Common, 0xE9, ""},  // E9
-    {"JPE", "a16", 3, 7, 10, 10, 10, Set::Common, 0xEA, ""},  // EA
+    {"RST", "4", 1, 12, 12, 11, 11, Set::Common, 0xE7, "", Flow::Restart},  // E7
+    {"RPE", "", 1, 6, 12, 5, 11, Set::Common, 0xE8, "", Flow::ReturnIf},  // E8
+    {"PCHL", "", 1, 6, 6, 5, 5, Set::Common, 0xE9, "", Flow::JumpIndirect},  // E9
+    {"JPE", "a16", 3, 7, 10, 10, 10, Set::Common, 0xEA, "", Flow::JumpIf},  // EA
     {"XCHG", "", 1, 4, 4, 4, 4, Set::Common, 0xEB, ""},  // EB
-    {"CPE", "a16", 3, 9, 18, 11, 17, Set::Common, 0xEC, ""},  // EC
+    {"CPE", "a16", 3, 9, 18, 11, 17, Set::Common, 0xEC, "", Flow::CallIf},  // EC
     {"LHLX", "", 1, 10, 10, 17, 17, Set::Undoc8085, 0xCD, ""},  // ED
     {"XRI", "d8", 2, 7, 7, 7, 7, Set::Common, 0xEE, ""},  // EE
-    {"RST", "5", 1, 12, 12, 11, 11, Set::Common, 0xEF, ""},  // EF
-    {"RP", "", 1, 6, 12, 5, 11, Set::Common, 0xF0, ""},  // F0
+    {"RST", "5", 1, 12, 12, 11, 11, Set::Common, 0xEF, "", Flow::Restart},  // EF
+    {"RP", "", 1, 6, 12, 5, 11, Set::Common, 0xF0, "", Flow::ReturnIf},  // F0
     {"POP", "PSW", 1, 10, 10, 10, 10, Set::Common, 0xF1, ""},  // F1
-    {"JP", "a16", 3, 7, 10, 10, 10, Set::Common, 0xF2, ""},  // F2
+    {"JP", "a16", 3, 7, 10, 10, 10, Set::Common, 0xF2, "", Flow::JumpIf},  // F2
     {"DI", "", 1, 4, 4, 4, 4, Set::Common, 0xF3, ""},  // F3
-    {"CP", "a16", 3, 9, 18, 11, 17, Set::Common, 0xF4, ""},  // F4
+    {"CP", "a16", 3, 9, 18, 11, 17, Set::Common, 0xF4, "", Flow::CallIf},  // F4
     {"PUSH", "PSW", 1, 12, 12, 11, 11, Set::Common, 0xF5, ""},  // F5
     {"ORI", "d8", 2, 7, 7, 7, 7, Set::Common, 0xF6, ""},  // F6
-    {"RST", "6", 1, 12, 12, 11, 11, Set::Common, 0xF7, ""},  // F7
-    {"RM", "", 1, 6, 12, 5, 11, Set::Common, 0xF8, ""},  // F8
+    {"RST", "6", 1, 12, 12, 11, 11, Set::Common, 0xF7, "", Flow::Restart},  // F7
+    {"RM", "", 1, 6, 12, 5, 11, Set::Common, 0xF8, "", Flow::ReturnIf},  // F8
     {"SPHL", "", 1, 6, 6, 5, 5, Set::Common, 0xF9, ""},  // F9
-    {"JM", "a16", 3, 7, 10, 10, 10, Set::Common, 0xFA, ""},  // FA
+    {"JM", "a16", 3, 7, 10, 10, 10, Set::Common, 0xFA, "", Flow::JumpIf},  // FA
     {"EI", "", 1, 4, 4, 4, 4, Set::Common, 0xFB, ""},  // FB
-    {"CM", "a16", 3, 9, 18, 11, 17, Set::Common, 0xFC, ""},  // FC
-    {"JK", "a16", 3, 7, 10, 17, 17, Set::Undoc8085, 0xCD, "JX5"},  // FD
+    {"CM", "a16", 3, 9, 18, 11, 17, Set::Common, 0xFC, "", Flow::CallIf},  // FC
+    {"JK", "a16", 3, 7, 10, 17, 17, Set::Undoc8085, 0xCD, "JX5", Flow::JumpIf},  // FD
     {"CPI", "d8", 2, 7, 7, 7, 7, Set::Common, 0xFE, ""},  // FE
-    {"RST", "7", 1, 12, 12, 11, 11, Set::Common, 0xFF, ""},  // FF
+    {"RST", "7", 1, 12, 12, 11, 11, Set::Common, 0xFF, "", Flow::Restart},  // FF
 }};
 // clang-format on
+
+// The flow of the instruction a processor executes for `op` (the 8080 runs alias8080: CB is its
+// JMP, DD and FD its CALL).
+constexpr Flow flow_of(std::uint8_t op, bool i8080) {
+    return kOpcodes[i8080 ? kOpcodes[op].alias8080 : op].flow;
+}
+// CALL, Ccc, RST and RSTV: the instruction may push a return address and go elsewhere (a step
+// "over" it runs the routine whole).
+constexpr bool may_call(Flow f) {
+    return f == Flow::Call || f == Flow::CallIf || f == Flow::Restart || f == Flow::RestartIf;
+}
+constexpr bool may_return(Flow f) { return f == Flow::Return || f == Flow::ReturnIf; }
+constexpr bool may_jump(Flow f) { return f == Flow::Jump || f == Flow::JumpIf || f == Flow::JumpIndirect; }
 
 }  // namespace alp85::isa

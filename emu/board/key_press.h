@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "emu/board/board_map.h"
 #include "emu/board/machine.h"
@@ -15,25 +16,24 @@ inline constexpr std::uint64_t kKeyGap = board::tstates_from_ms(30);
 // The keypad's matrix keys, and the two keys outside it (RESET IN, VECT INTR = RST 7.5).
 enum class Button : std::uint8_t { Matrix, Reset, Vect };
 
-// Schedules a press of `button` (for Matrix: `key`) at the machine's present time and its release
-// `hold` later; returns when the gap after it ends (now + hold + gap): run the machine until then.
-inline std::uint64_t schedule_press(Machine& m, Button button, periph::Key key, std::uint64_t hold = kKeyHold,
-                                    std::uint64_t gap = kKeyGap) {
-    const std::uint64_t t = m.now();
+// The one place a key's level is scheduled: a keypad matrix key, RESET or VECT INTR, pressed
+// (`down`) or released at machine time `at`.
+inline void schedule_key(Machine& m, Button button, periph::Key key, bool down, std::uint64_t at) {
     switch (button) {
-        case Button::Matrix:
-            m.key_at(key, true, t);
-            m.key_at(key, false, t + hold);
-            break;
-        case Button::Reset:
-            m.reset_key_at(true, t);
-            m.reset_key_at(false, t + hold);
-            break;
-        case Button::Vect:
-            m.vect_intr_at(true, t);
-            m.vect_intr_at(false, t + hold);
-            break;
+        case Button::Matrix: m.key_at(key, down, at); break;
+        case Button::Reset: m.reset_key_at(down, at); break;
+        case Button::Vect: m.vect_intr_at(down, at); break;
     }
+}
+
+// Schedules a press of `button` (for Matrix: `key`) at `at` (default: the machine's present time)
+// and its release `hold` later; returns when the gap after it ends (at + hold + gap): run the
+// machine until then, or schedule the next press there.
+inline std::uint64_t schedule_press(Machine& m, Button button, periph::Key key, std::uint64_t hold = kKeyHold,
+                                    std::uint64_t gap = kKeyGap, std::optional<std::uint64_t> at = {}) {
+    const std::uint64_t t = at.value_or(m.now());
+    schedule_key(m, button, key, true, t);
+    schedule_key(m, button, key, false, t + hold);
     return t + hold + gap;
 }
 

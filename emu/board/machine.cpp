@@ -399,6 +399,10 @@ void Machine::step() {
     sync_parts(now());
 }
 
+bool Machine::can_wake() const {
+    return cpu_.interrupts_enabled() || rio_.state().running || !inputs_.empty();
+}
+
 void Machine::key_at(periph::Key key, bool down, std::uint64_t at) {
     inputs_.schedule(at, InputKind::Key, static_cast<std::uint16_t>(key), down);
 }

@@ -107,6 +107,10 @@ public:
     // ignoring breakpoints at the current PC.
     void step();
 
+    // Whether anything but a reset can still end a HLT: maskable interrupts enabled (a key, VECT
+    // INTR), the 8155's timer running (TIMER OUT is wired to TRAP), or an input still to come.
+    bool can_wake() const;
+
     // ---- outside inputs ----------------------------------------------------------------------
     void key_at(periph::Key key, bool down, std::uint64_t at);
     void vect_intr_at(bool down, std::uint64_t at);

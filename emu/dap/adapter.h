@@ -47,7 +47,7 @@ public:
     // While a run is in progress: runs one slice. Returns how long (ms) the caller may wait for
     // messages before the next slice: 0 to go on at once, more when pacing to real time.
     int advance();
-    bool running() const { return run_.active; }
+    bool running() const { return session_ && session_->debugger().running(); }
     // The client said disconnect (answered): the server may close.
     bool finished() const { return finished_; }
 
@@ -88,10 +88,6 @@ private:
     void resolve(Breakpoint& b, const std::string& path);
     bool check_options(Breakpoint& b);  // condition and hit condition; false: unverified, says why
     Json breakpoint_json(const Breakpoint& b, const std::string& path) const;
-    // At a breakpoint hit: counts hits, writes log points; true when the run is to stop there
-    // (the ids of the breakpoints that stop it in `ids`).
-    bool stop_at_breakpoint(std::uint16_t pc, std::vector<int>& ids);
-    bool stop_at_data(const debug::Stop& s, std::vector<int>& ids);
     void report(const debug::Stop& s, std::string_view step_reason);  // a finished step or reverse run
 
     // ---- running (run.cpp) ---------------------------------------------------------------------
@@ -107,8 +103,7 @@ private:
     void require_stopped();
     void stopped(std::string_view reason, const std::string& description = {}, std::vector<int> hit_ids = {},
                  const std::string& text = {});
-    void start_run();
-    void end_run();  // the run is over: the step's temporary breakpoint goes
+    void started(std::optional<debug::Stop> s, std::string_view step_reason);
 
     // ---- state (state.cpp) ---------------------------------------------------------------------
     void threads(const Json& args, Json& body);
@@ -121,8 +116,6 @@ private:
     Json source_of(const std::string& file) const;  // a DAP Source for a file of the map
     // A name the client may watch (a firmware variable, a symbol, an address): address and size.
     std::optional<std::pair<std::uint16_t, std::uint16_t>> data_target(const std::string& name, std::int64_t ref);
-    // A log point's message with each {expression} replaced by its value.
-    std::string interpolate(const std::string& message);
     // The value of an expression as text (watch, hover, log points); RequestError if it has none.
     std::string value_text(const std::string& expression);
     Json variables_of(std::int64_t ref);
@@ -151,21 +144,12 @@ private:
     bool in_request_ = false;  // events wait in deferred_ until the response is sent
     std::vector<Json> deferred_;
 
-    // A run in progress (continue, or a step over a call, or a step out).
+    // The run in progress (the Debugger's): how its end is reported, and real-time pacing.
     struct Run {
-        bool active = false;
-        enum class Kind : std::uint8_t { Continue, Over, Out } kind = Kind::Continue;
-        std::uint16_t target = 0;   // Over/Out: the return address
-        std::uint16_t sp = 0;       // Over/Out: SP once returned (at least)
-        int temporary = 0;          // Over/Out: the Debugger's breakpoint at target
-        std::uint64_t started_at = 0;  // machine time at the start (real-time pacing)
+        std::string step_reason = "step";
+        std::uint64_t started_at = 0;  // machine time at the start
         double host_start = 0;         // host seconds at the start
     } run_;
-    void run_until_return(std::uint16_t target, std::uint16_t sp, Run::Kind kind);
-    std::optional<std::uint16_t> runaway_;  // an instruction fetched where nothing is loaded
-    bool runaway_armed_ = true;             // off after a runaway until the PC is back in code
-    std::optional<std::uint16_t> stack_base_;  // SP as the last LXI SP / SPHL left it
-    bool resetting_sp_ = false;                // the instruction about to run sets SP
 };
 
 }  // namespace alp85::dap

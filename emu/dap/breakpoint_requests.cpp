@@ -69,26 +69,36 @@ void Adapter::resolve_breakpoints() {
     arm();
 }
 
-// The Debugger's own breakpoints and watchpoints stand for the client's (its conditions are
-// theirs, so reverseContinue stops where continue would); hit conditions and log points are the
-// adapter's, counted at each stop. Points made in the debug console are left alone.
+// The Debugger's own breakpoints and watchpoints stand for the client's: conditions, hit
+// conditions and log points are theirs, so a run (forward or back) stops where the client asked,
+// counted once. Hit counts survive re-arming. Points made in the debug console are left alone.
 void Adapter::arm() {
     if (!session_) return;
     debug::Debugger& d = session_->debugger();
-    for (const int n : engine_points_) d.remove(n);
+    std::map<std::pair<int, std::uint16_t>, unsigned> hits;  // (DAP id, address) -> hits so far
+    for (const int n : engine_points_) {
+        if (const debug::Breakpoint* b = d.breakpoint(n)) hits[{engine_to_dap_[n], b->address}] = b->hits;
+        else if (const debug::Watchpoint* w = d.watchpoint(n)) hits[{engine_to_dap_[n], w->first}] = w->hits;
+        d.remove(n);
+    }
     engine_points_.clear();
     engine_to_dap_.clear();
-    auto keep = [&](int number, int id, const std::string& condition) {
+    auto keep = [&](int number, int id, std::uint16_t at, const std::string& condition, const std::string& hit,
+                    const std::string& log) {
         if (number == 0) return;
         int col = 0;
         if (!condition.empty()) d.set_condition(number, condition, col);
+        if (!hit.empty()) d.set_hit_condition(number, hit);
+        if (!log.empty()) d.set_log_message(number, log);
+        if (const auto it = hits.find({id, at}); it != hits.end()) d.set_hits(number, it->second);
         engine_points_.push_back(number);
         engine_to_dap_[number] = id;
     };
     auto add = [&](const std::vector<Breakpoint>& list) {
         for (const Breakpoint& b : list)
             if (b.verified)
-                for (const std::uint16_t a : b.addresses) keep(d.add_breakpoint_at(a).number, b.id, b.condition);
+                for (const std::uint16_t a : b.addresses)
+                    keep(d.add_breakpoint_at(a).number, b.id, a, b.condition, b.hit_condition, b.log_message);
     };
     for (const auto& [path, list] : bps_.source) add(list);
     add(bps_.function);
@@ -102,7 +112,7 @@ void Adapter::arm() {
         spec.first = x.address;
         spec.last = static_cast<std::uint16_t>(x.address + x.length - 1);
         spec.what = x.what;
-        keep(d.add_watchpoint(spec).number, x.id, x.condition);
+        keep(d.add_watchpoint(spec).number, x.id, x.address, x.condition, x.hit_condition, {});
     }
 }
 
@@ -116,15 +126,15 @@ void read_options(const Json& spec, Breakpoint& b) {
 }
 
 // A condition is the debugger's expression (docs/debugging.md): "" or why it is not one.
-std::string condition_error(const SymbolTable& symbols, const std::string& condition) {
+std::string condition_error(const debug::Debugger& d, const std::string& condition) {
     if (condition.empty()) return {};
     debug::ExprError err;
-    if (debug::Expr::parse(condition, symbols, err)) return {};
+    if (debug::Expr::parse(condition, d.program(), err, debug::Expr::Names::RegistersFirst, 0, &d.variables())) return {};
     return fmt::format("condition '{}': {} (column {})", condition, err.message, err.col);
 }
 
 std::string hit_condition_error(const std::string& hit) {
-    if (hit.empty() || hit_condition_met(hit, 0)) return {};
+    if (hit.empty() || debug::HitCondition::parse(hit)) return {};
     return fmt::format("hit condition '{}' is not N, ==N, >=N, >N, <N, <=N or %N", hit);
 }
 
@@ -132,7 +142,7 @@ std::string hit_condition_error(const std::string& hit) {
 
 bool Adapter::check_options(Breakpoint& b) {
     std::string why = hit_condition_error(b.hit_condition);
-    if (why.empty() && session_) why = condition_error(session_->debugger().program(), b.condition);
+    if (why.empty() && session_) why = condition_error(session_->debugger(), b.condition);
     if (why.empty()) return true;
     b.verified = false;
     b.message = why;
@@ -218,7 +228,7 @@ void Adapter::set_exception_breakpoints(const Json& args, Json&) {
         else throw RequestError(fmt::format("no exception filter '{}' (there is \"runaway\")", f.get<std::string>()));
     }
     config_.stop_on_runaway = runaway;
-    runaway_armed_ = runaway;
+    if (session_) session_->debugger().set_runaway_guard(runaway ? &map_.code : nullptr);
 }
 
 void Adapter::data_breakpoint_info(const Json& args, Json& body) {
@@ -251,7 +261,7 @@ void Adapter::set_data_breakpoints(const Json& args, Json& body) {
         else if (d.access != "read" && d.access != "write" && d.access != "readWrite")
             d.message = fmt::format("accessType '{}' is not read, write or readWrite", d.access);
         else if (!session_) d.message = "no program yet: send 'launch' first";
-        else if (const std::string why = condition_error(session_->debugger().program(), d.condition); !why.empty()) d.message = why;
+        else if (const std::string why = condition_error(session_->debugger(), d.condition); !why.empty()) d.message = why;
         else if (const std::string why2 = hit_condition_error(d.hit_condition); !why2.empty()) d.message = why2;
         else {
             const auto name = session_->debugger().program().name_at(parsed->first);
@@ -282,38 +292,6 @@ void Adapter::breakpoint_locations(const Json& args, Json& body) {
             if (!t.addresses_of(canonical(path), l).empty()) out.push_back({{"line", l - base}});
     }
     body = {{"breakpoints", out}};
-}
-
-bool Adapter::stop_at_breakpoint(std::uint16_t pc, std::vector<int>& ids) {
-    bool stop = false;
-    for (Breakpoint* b : bps_.at(pc)) {
-        if (!b->condition.empty()) {  // the Debugger checked the one that stopped; the others here too
-            const auto v = session_->debugger().evaluate(b->condition);
-            if (v.error.empty() && v.value == 0) continue;
-        }
-        ++b->hits;
-        if (!b->hit_condition.empty() && !hit_condition_met(b->hit_condition, b->hits).value_or(false)) continue;
-        if (!b->log_message.empty()) {
-            output("console", interpolate(b->log_message));
-            continue;
-        }
-        stop = true;
-        ids.push_back(b->id);
-    }
-    return stop;
-}
-
-bool Adapter::stop_at_data(const debug::Stop& s, std::vector<int>& ids) {
-    const auto it = engine_to_dap_.find(s.number);
-    if (it == engine_to_dap_.end()) return true;  // a watchpoint of the console's
-    bool stop = false;
-    for (DataBreakpoint* d : bps_.data_with(it->second)) {
-        ++d->hits;
-        if (!d->hit_condition.empty() && !hit_condition_met(d->hit_condition, d->hits).value_or(false)) continue;
-        stop = true;
-        ids.push_back(d->id);
-    }
-    return stop;
 }
 
 }  // namespace alp85::dap

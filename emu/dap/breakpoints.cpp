@@ -6,18 +6,6 @@
 #include <fmt/format.h>
 
 namespace alp85::dap {
-namespace {
-
-std::optional<std::uint64_t> number(std::string_view s) {
-    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
-    while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
-    std::uint64_t n = 0;
-    const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
-    if (ec != std::errc{} || p != s.data() + s.size() || s.empty()) return std::nullopt;
-    return n;
-}
-
-}  // namespace
 
 std::vector<Breakpoint*> BreakpointTable::at(std::uint16_t pc) {
     std::vector<Breakpoint*> out;
@@ -36,25 +24,6 @@ std::vector<DataBreakpoint*> BreakpointTable::data_with(int id) {
     for (DataBreakpoint& d : data)
         if (d.verified && d.id == id) out.push_back(&d);
     return out;
-}
-
-std::optional<bool> hit_condition_met(const std::string& text, std::uint64_t hits) {
-    std::string_view s = text;
-    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
-    for (const std::string_view op : {">=", "<=", "==", ">", "<", "%", "="}) {
-        if (!s.starts_with(op)) continue;
-        const auto n = number(s.substr(op.size()));
-        if (!n) return std::nullopt;
-        if (op == ">=") return hits >= *n;
-        if (op == "<=") return hits <= *n;
-        if (op == ">") return hits > *n;
-        if (op == "<") return hits < *n;
-        if (op == "%") return *n != 0 && hits % *n == 0;
-        return hits == *n;
-    }
-    const auto n = number(s);
-    if (!n) return std::nullopt;
-    return hits == *n;
 }
 
 std::string data_id(std::uint16_t address, std::uint16_t length) { return fmt::format("{:04X}H:{}", address, length); }

@@ -48,9 +48,6 @@ struct BreakpointTable {
     std::vector<DataBreakpoint*> data_with(int id);
 };
 
-// DAP's hitCondition, as debuggers write it: "5" or "==5" (the fifth hit), ">=5", ">5", "<5",
-// "<=5", "%5" (every fifth). nullopt when `text` is none of these.
-std::optional<bool> hit_condition_met(const std::string& text, std::uint64_t hits);
 
 // "1B32H:2" <-> address and length (dataBreakpointInfo's dataId).
 std::string data_id(std::uint16_t address, std::uint16_t length);

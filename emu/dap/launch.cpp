@@ -119,23 +119,7 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
         std::size_t at = 0;
         std::uint64_t t = m.now() + config.boot;
         const auto keys = script::parse_key_list(config.keys, why, at).value_or(std::vector<script::KeyRef>{});
-        for (const script::KeyRef& k : keys) {
-            switch (k.kind) {
-                case script::KeyRef::Kind::Matrix:
-                    m.key_at(k.key, true, t);
-                    m.key_at(k.key, false, t + kKeyHold);
-                    break;
-                case script::KeyRef::Kind::Reset:
-                    m.reset_key_at(true, t);
-                    m.reset_key_at(false, t + kKeyHold);
-                    break;
-                case script::KeyRef::Kind::Vect:
-                    m.vect_intr_at(true, t);
-                    m.vect_intr_at(false, t + kKeyHold);
-                    break;
-            }
-            t += kKeyHold + kKeyGap;
-        }
+        for (const script::KeyRef& k : keys) t = schedule_press(m, script::button_of(k), k.key, kKeyHold, kKeyGap, t);
     }
 }
 

@@ -299,27 +299,17 @@ std::optional<std::string> expression_value(const debug::Debugger& d, const std:
     return v.width <= 8 ? fmt::format("{:02X}H ({})", v.value, v.value) : fmt::format("{:04X}H ({})", v.value, v.value);
 }
 
-std::vector<debug::Frame> live_frames(const debug::Debugger& d, std::optional<std::uint16_t> stack_base) {
-    std::vector<debug::Frame> frames = d.backtrace();
-    if (stack_base)
-        for (std::size_t i = 1; i < frames.size(); ++i)
-            if (frames[i].slot >= *stack_base) {
-                frames.resize(i);
-                break;
-            }
-    return frames;
-}
-
-std::vector<CallFrame> call_frames(const debug::Debugger& d, std::optional<std::uint16_t> stack_base) {
+std::vector<CallFrame> call_frames(const debug::Debugger& d) {
     const Machine& m = d.machine();
     std::vector<CallFrame> out;
-    for (const debug::Frame& f : live_frames(d, stack_base)) {
+    const bool i8080 = m.cpu().variant() == Variant::I8080;
+    for (const debug::Frame& f : d.backtrace()) {
         // A caller is shown at its CALL (or RST), the line the user reads as "called from here".
         std::uint16_t at = f.pc;
         if (!out.empty()) {
             const auto call = static_cast<std::uint16_t>(f.pc - 3);
-            const std::uint8_t op = m.peek(call);
-            at = op == 0xCD || (op & 0xC7) == 0xC4 ? call : static_cast<std::uint16_t>(f.pc - 1);
+            const isa::Flow flow = isa::flow_of(m.peek(call), i8080);
+            at = flow == isa::Flow::Call || flow == isa::Flow::CallIf ? call : static_cast<std::uint16_t>(f.pc - 1);
         }
         // The routine by its name (a caller's, at its CALL, without an offset); an address that no
         // routine holds is named by the address alone, not twice.

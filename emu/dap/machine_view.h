@@ -50,8 +50,7 @@ struct CallFrame {
 };
 // Innermost first: the Debugger's backtrace, callers whose return address lies at or above
 // `stack_base` (the top the program gave its stack) left out as stale.
-std::vector<CallFrame> call_frames(const debug::Debugger& d, std::optional<std::uint16_t> stack_base);
+std::vector<CallFrame> call_frames(const debug::Debugger& d);
 // The same frames as the Debugger gives them (return address and its slot).
-std::vector<debug::Frame> live_frames(const debug::Debugger& d, std::optional<std::uint16_t> stack_base);
 
 }  // namespace alp85::dap

@@ -56,9 +56,6 @@ void Adapter::launch(const Json& args, Json&) {
 
 void Adapter::start_session() {
     run_ = {};
-    runaway_.reset();
-    stack_base_.reset();
-    resetting_sp_ = false;
     script::SessionOptions so;
     so.base_dir = config_.cwd;
     if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
@@ -73,23 +70,10 @@ void Adapter::start_session() {
     for (const std::string& w : warnings) output("stderr", w);
     debug::Debugger& d = session_->debugger();
     d.set_history(true);  // stepBack and reverseContinue from the first instruction on
-    {
-        Machine& m = session_->machine();
-        m.set_trace([this, &m, &d](const I8085& cpu) {
-            const std::uint16_t pc = cpu.regs().pc;
-            // The stack's top as the program set it (LXI SP / SPHL): return addresses above it
-            // are left over from earlier code (the monitor's), not callers.
-            if (resetting_sp_) stack_base_ = cpu.regs().sp;
-            const std::uint8_t op = m.peek(pc);
-            resetting_sp_ = op == 0x31 || op == 0xF9;
-            if (!config_.stop_on_runaway || d.replaying()) return;
-            if (map_.code[pc]) runaway_armed_ = true;
-            else if (runaway_armed_ && !runaway_) {
-                runaway_ = pc;
-                m.cpu().request_stop();
-            }
-        });
-    }
+    // The stack's top as the program set it (LXI SP / SPHL): return addresses above it are left
+    // over from earlier code (the monitor's), not callers.
+    d.track_stack_base(true);
+    d.set_runaway_guard(config_.stop_on_runaway ? &map_.code : nullptr);
     resolve_breakpoints();
 }
 
@@ -128,7 +112,7 @@ void Adapter::begin() {
         }
     }
     if (config_.stop_on_entry) stopped("entry");
-    else start_run();
+    else started(session_->debugger().begin_continue(~std::uint64_t{0}), "step");
 }
 
 void Adapter::restart(const Json& args, Json&) {
@@ -141,12 +125,12 @@ void Adapter::restart(const Json& args, Json&) {
 }
 
 void Adapter::disconnect(const Json&, Json&) {
-    run_.active = false;
+    if (session_) session_->debugger().pause();
     finished_ = true;
 }
 
 void Adapter::terminate(const Json&, Json&) {
-    run_.active = false;
+    if (session_) session_->debugger().pause();
     event("terminated");
 }
 

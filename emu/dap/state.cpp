@@ -26,7 +26,7 @@ void Adapter::stack_trace(const Json& args, Json& body) {
     require_stopped();
     const std::int64_t start = std::max<std::int64_t>(0, opt_int(args, "startFrame").value_or(0));
     const std::int64_t levels = opt_int(args, "levels").value_or(0);
-    const std::vector<CallFrame> frames = call_frames(session_->debugger(), stack_base_);
+    const std::vector<CallFrame> frames = call_frames(session_->debugger());
     Json out = Json::array();
     for (std::size_t i = static_cast<std::size_t>(start); i < frames.size(); ++i) {
         if (levels > 0 && static_cast<std::int64_t>(out.size()) >= levels) break;
@@ -103,25 +103,6 @@ std::string Adapter::value_text(const std::string& expression) {
     return *v;
 }
 
-std::string Adapter::interpolate(const std::string& message) {
-    std::string out;
-    std::size_t i = 0;
-    while (i < message.size()) {
-        const std::size_t open = message.find('{', i);
-        if (open == std::string::npos) break;
-        const std::size_t close = message.find('}', open);
-        if (close == std::string::npos) break;
-        out.append(message, i, open - i);
-        const std::string expr = message.substr(open + 1, close - open - 1);
-        std::string error;
-        const auto v = expression_value(session_->debugger(), expr, error);
-        out += v ? *v : "<" + error + ">";
-        i = close + 1;
-    }
-    out.append(message, i, std::string::npos);
-    return out;
-}
-
 void Adapter::evaluate(const Json& args, Json& body) {
     session();
     const std::string expression = need_string(args, "expression");
@@ -145,7 +126,7 @@ void Adapter::evaluate(const Json& args, Json& body) {
             body = {{"result", *v}, {"variablesReference", 0}};
             return;
         }
-    if (run_.active) throw RequestError("the program is running: pause it before a console command");
+    if (running()) throw RequestError("the program is running: pause it before a console command");
     const std::uint64_t before = machine().now();
     const std::uint16_t pc = machine().cpu().regs().pc;
     const int errors = shell_->console().errors();

@@ -35,7 +35,7 @@ std::pair<std::string_view, std::string_view> split_if(std::string_view s, int& 
 }
 }  // namespace
 
-Console::Console(Debugger& d) : d_(d) {
+Console::Console(Debugger& d) : d_(d), vars_(d.variables()) {
     read_source_ = [](const std::string& file) -> std::optional<std::string> {
         std::ifstream in(file, std::ios::binary);
         if (!in) return std::nullopt;
@@ -263,6 +263,9 @@ std::string Console::describe(const Stop& s) {
         case StopReason::Interrupted: out += "\nInterrupted (Ctrl-C) at "; break;
         case StopReason::HistoryStart: out += fmt::format("\n{}: at ", s.message); break;
         case StopReason::Error: out += fmt::format("\nStopped: {}\n", s.message); break;
+        case StopReason::Runaway: out += fmt::format("\nStopped: {}\n", s.message); break;
+        case StopReason::Halted: out += fmt::format("\n[{}]\n", s.message); break;
+        case StopReason::Paused: out += "\nPaused at "; break;
         case StopReason::Deadline:
             if (!s.message.empty()) out += fmt::format("{}: at ", s.message);
             break;

@@ -156,7 +156,7 @@ private:
     SourceReader read_source_;
     std::map<std::string, std::vector<std::string>> sources_;  // file -> lines
     std::vector<Display> displays_;
-    Expr::Variables vars_;  // set $NAME = EXPR
+    Expr::Variables& vars_;  // set $NAME = EXPR: the Debugger's, read by conditions too
     int last_display_ = 0;
     int print_count_ = 0;
     bool quit_ = false;

@@ -1,6 +1,8 @@
 // Running under the debugger: the run loop, steps with CALL/RET tracking, stops as values.
 #include "emu/debug/debugger.h"
 
+#include <chrono>
+
 #include <fmt/format.h>
 
 #include "asm/isa.h"
@@ -20,6 +22,9 @@ std::string_view name(StopReason reason) {
         case StopReason::Interrupted: return "interrupted";
         case StopReason::HistoryStart: return "history-start";
         case StopReason::Error: return "error";
+        case StopReason::Halted: return "halted";
+        case StopReason::Runaway: return "runaway";
+        case StopReason::Paused: return "paused";
     }
     return "?";
 }
@@ -78,67 +83,150 @@ Stop Debugger::finish_stop(Stop s) {
 namespace {
 Stop from_hit(Stop s, const Hit& h) {
     s.number = h.number;
+    s.numbers = h.numbers;
     s.changes = h.changes;
     s.data = h.data;
     s.after = h.after;
     return s;
 }
+std::string runaway_message(const Machine& m, std::uint16_t pc, std::optional<std::uint16_t> after) {
+    const Variant v = m.cpu().variant();
+    std::string text = fmt::format("the program ran away: it fetched an instruction at {:04X}H ({}), where no program is",
+                                   pc, disassemble(m.bus(), pc, v).text);
+    if (after) text += fmt::format(", after {:04X}H ({})", *after, disassemble(m.bus(), *after, v).text);
+    return text;
+}
 }  // namespace
 
-Stop Debugger::drive(std::uint64_t until, const std::function<bool()>& condition, bool skip_first) {
+std::optional<Stop> Debugger::drive(const Budget& budget) {
+    Active& run = *active_;
     check_inputs();
     Monitor& mon = *monitor_;
-    mon.skip_at = skip_first ? std::optional<std::uint64_t>(m_.now()) : std::nullopt;
+    mon.skip_at = run.first ? std::optional<std::uint64_t>(m_.now()) : std::nullopt;
+    run.first = false;
     mon.stop_hit.reset();
     mon.pending.clear();
     mon.error.clear();
     mon.target_reached = false;
     rebaseline();
     arm();
-    const auto stop_condition = [&] { return interrupt_.load() || (condition && condition()); };
+    const auto started = std::chrono::steady_clock::now();
+    const std::uint64_t slice_end = budget.tstates < run.until - std::min(run.until, m_.now()) ? m_.now() + budget.tstates : run.until;
+    const auto stop_condition = [&] { return interrupt_.load() || halted_ || (run.condition && run.condition()); };
     for (;;) {
-        std::uint64_t chunk = std::min(until, m_.now() + kHistoryInterval);  // Ctrl-C is seen between chunks
+        std::uint64_t chunk = std::min(slice_end, m_.now() + kHistoryInterval);  // Ctrl-C is seen between chunks
         if (history_on_) {
             if (history_->due(m_.now())) history_->take(m_);
-            chunk = std::min(until, std::max(history_->next_due(), m_.now() + 1));
+            chunk = std::min(slice_end, std::max(history_->next_due(), m_.now() + 1));
         }
         switch (m_.run_until(chunk, stop_condition)) {
             case Machine::Stop::Condition:
-                if (interrupt_.exchange(false)) return here(StopReason::Interrupted);
-                return here(StopReason::Condition);
+                if (interrupt_.exchange(false)) return end_run(here(StopReason::Interrupted));
+                if (halted_) {
+                    Stop s = here(StopReason::Halted);
+                    s.message = fmt::format("the CPU halted: HLT at {:04X}H", static_cast<std::uint16_t>(s.pc - 1));
+                    return end_run(s);
+                }
+                return end_run(here(StopReason::Condition));
             case Machine::Stop::Deadline:
-                if (m_.now() >= until) return here(StopReason::Deadline);
+                if (m_.now() >= run.until) return end_run(here(StopReason::Deadline));
+                if (m_.now() >= slice_end) return std::nullopt;
+                if (budget.seconds > 0 &&
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >= budget.seconds)
+                    return std::nullopt;
                 continue;
-            case Machine::Stop::Breakpoint: return here(StopReason::Breakpoint);  // the machine's own
-            case Machine::Stop::Watchpoint: return here(StopReason::Watchpoint);
-            case Machine::Stop::Target: return here(StopReason::Target);
+            case Machine::Stop::Breakpoint: return end_run(here(StopReason::Breakpoint));  // the machine's own
+            case Machine::Stop::Watchpoint: return end_run(here(StopReason::Watchpoint));
+            case Machine::Stop::Target: return end_run(here(StopReason::Target));
             case Machine::Stop::Monitor: break;
         }
         if (!mon.error.empty()) {
             Stop s = here(StopReason::Error);
             s.message = mon.error;
-            return s;
+            return end_run(s);
         }
-        if (mon.stop_hit) return finish_stop(from_hit(here(mon.stop_hit->reason), *mon.stop_hit));
+        if (mon.stop_hit) {
+            Stop s = from_hit(here(mon.stop_hit->reason), *mon.stop_hit);
+            if (s.reason == StopReason::Runaway) s.message = runaway_message(m_, s.pc, s.after);
+            return end_run(s);
+        }
         if (!mon.pending.empty()) {
             const std::vector<Hit> kept = mon.decide_pending(true);
             if (!kept.empty()) {
                 Stop s = from_hit(here(StopReason::Watchpoint), kept.front());
                 for (std::size_t i = 1; i < kept.size(); ++i)
                     s.changes.insert(s.changes.end(), kept[i].changes.begin(), kept[i].changes.end());
-                return s;
+                return end_run(s);
             }
         }
-        if (mon.target_reached) return here(StopReason::Target);
+        if (mon.target_reached) return end_run(here(StopReason::Target));
         mon.skip_at.reset();  // a watch whose condition was false: on, a breakpoint here still stops
     }
 }
 
-Stop Debugger::run_until(std::uint64_t until, const std::function<bool()>& condition, const Origin& origin) {
-    const Stop s = drive(until, condition, true);
-    if (s.reason == StopReason::Breakpoint || s.reason == StopReason::Watchpoint || s.reason == StopReason::Error)
-        emit({Event::Kind::Stopped, s, {}, origin});
+std::optional<Stop> Debugger::begin(Active a, std::function<bool(const I8085&)> target) {
+    if (active_) pause();
+    if (a.stop_at_halt && m_.cpu().halted() && !m_.can_wake()) {
+        // Nothing can end the HLT but RESET: a run would only idle (gdb: the program is not running).
+        Stop s = here(StopReason::Halted);
+        s.message = fmt::format("the CPU is halted (HLT at {:04X}H) with nothing to wake it: only RESET does",
+                                static_cast<std::uint16_t>(s.pc - 1));
+        return s;
+    }
+    if (target) {
+        const std::uint64_t start = m_.now();
+        monitor_->target = [start, t = std::move(target)](const I8085& cpu) { return cpu.tstates() != start && t(cpu); };
+    }
+    halted_ = false;
+    if (a.stop_at_halt) m_.cpu().on_halt = [this] {
+        halted_ = true;
+        m_.cpu().request_stop();
+    };
+    active_ = std::move(a);
+    return std::nullopt;
+}
+
+Stop Debugger::end_run(Stop s) {
+    const Active run = std::move(*active_);
+    active_.reset();
+    monitor_->target = nullptr;
+    m_.cpu().on_halt = nullptr;
+    halted_ = false;
+    arm();
+    if (run.target_as && s.reason == StopReason::Target) s.reason = *run.target_as;
+    if (run.limit && s.reason == StopReason::Deadline)
+        s.message = fmt::format("no breakpoint or watchpoint stopped the run within {:.0f} s of simulated time",
+                                board::ms_from_tstates(run.limit) / 1000.0);
+    s = finish_stop(std::move(s));
+    if (run.emit_stops && (s.reason == StopReason::Breakpoint || s.reason == StopReason::Watchpoint ||
+                           s.reason == StopReason::Error || s.reason == StopReason::Runaway))
+        emit({Event::Kind::Stopped, s, {}, run.origin});
     return s;
+}
+
+std::optional<Stop> Debugger::resume(const Budget& budget) {
+    if (!active_) return here(StopReason::Paused);
+    return drive(budget);
+}
+
+Stop Debugger::pause() {
+    if (!active_) return here(StopReason::Paused);
+    return end_run(here(StopReason::Paused));
+}
+
+Stop Debugger::complete(std::optional<Stop> begun) {
+    if (begun) return *begun;
+    for (;;)
+        if (auto s = drive({})) return *s;
+}
+
+Stop Debugger::run_until(std::uint64_t until, const std::function<bool()>& condition, const Origin& origin) {
+    Active a;
+    a.until = until;
+    a.condition = condition;
+    a.emit_stops = true;
+    a.origin = origin;
+    return complete(begin(std::move(a)));
 }
 
 Stop Debugger::run_to(std::uint16_t pc, std::uint64_t until) {
@@ -155,20 +243,23 @@ Stop Debugger::run_to(std::uint16_t pc, std::uint64_t until) {
     }
 }
 
-Stop Debugger::cont(std::uint64_t limit) {
-    Stop s = drive(m_.now() + limit, {}, true);
-    if (s.reason == StopReason::Deadline)
-        s.message = fmt::format("no breakpoint or watchpoint stopped the run within {:.0f} s of simulated time",
-                                board::ms_from_tstates(limit) / 1000.0);
-    return s;
+std::optional<Stop> Debugger::begin_continue(std::uint64_t limit, bool stop_at_halt) {
+    Active a;
+    a.until = limit > ~std::uint64_t{0} - m_.now() ? ~std::uint64_t{0} : m_.now() + limit;
+    a.limit = limit;
+    a.stop_at_halt = stop_at_halt;
+    return begin(std::move(a));
 }
 
 namespace {
-bool is_call(std::uint8_t op) { return op == 0xCD || (op & 0xC7) == 0xC4; }  // CALL, Ccc
-bool is_rst(std::uint8_t op) { return (op & 0xC7) == 0xC7; }
+// The flow class of the instruction at the PC, as this CPU decodes it (asm/isa.h).
+isa::Flow flow_at(const Machine& m, std::uint16_t pc) {
+    return isa::flow_of(m.peek(pc), m.cpu().variant() == Variant::I8080);
+}
 }  // namespace
 
 Stop Debugger::stepi() {
+    if (active_) pause();
     check_inputs();
     if (history_on_ && history_->due(m_.now())) history_->take(m_);
     Monitor& mon = *monitor_;
@@ -190,42 +281,42 @@ Stop Debugger::stepi() {
     return here(StopReason::Step);
 }
 
-Stop Debugger::run_with_target(std::function<bool(const I8085&)> target, StopReason reason) {
-    const std::uint64_t start = m_.now();
-    monitor_->target = [start, t = std::move(target)](const I8085& cpu) { return cpu.tstates() != start && t(cpu); };
-    Stop s = drive(m_.now() + kContinueLimit, {}, true);
-    monitor_->target = nullptr;
-    arm();
-    if (s.reason == StopReason::Target) s.reason = reason;
-    return s;
+std::optional<Stop> Debugger::begin_with_target(std::function<bool(const I8085&)> target, StopReason reason) {
+    Active a;
+    a.until = m_.now() + kContinueLimit;
+    a.stop_at_halt = true;
+    a.target_as = reason;
+    return begin(std::move(a), std::move(target));
 }
 
-Stop Debugger::step() {
+std::optional<Stop> Debugger::begin_step() {
     const Registers before = m_.cpu().regs();
-    const std::uint8_t op = m_.peek(before.pc);
+    const isa::Flow flow = flow_at(m_, before.pc);
     Stop s = stepi();
     if (s.reason != StopReason::Step) return s;
     const Registers& now = m_.cpu().regs();
     // Into a routine without source lines (the monitor's, say) from one with: run it whole.
-    const bool entered = (is_call(op) || is_rst(op)) && now.sp == static_cast<std::uint16_t>(before.sp - 2);
+    const bool entered = isa::may_call(flow) && now.sp == static_cast<std::uint16_t>(before.sp - 2);
     if (entered && !program_.line_of(now.pc) && program_.line_of(before.pc)) {
-        s = finish();
-        if (s.reason == StopReason::Finished) s.reason = StopReason::Step;
+        const auto slot = return_slot();
+        if (!slot) return s;
+        const std::uint32_t above = *slot + 2u;
+        return begin_with_target([above](const I8085& cpu) { return cpu.regs().sp >= above; }, StopReason::Step);
     }
     return s;
 }
 
-Stop Debugger::next() {
+std::optional<Stop> Debugger::begin_next() {
     const Registers r = m_.cpu().regs();
     const std::uint8_t op = m_.peek(r.pc);
-    if (!is_call(op) && !is_rst(op)) return stepi();
+    if (!isa::may_call(flow_at(m_, r.pc))) return stepi();
     const auto ret = static_cast<std::uint16_t>(r.pc + isa::kOpcodes[op].length);
     const std::uint16_t sp = r.sp;
-    return run_with_target([ret, sp](const I8085& cpu) { return cpu.regs().pc == ret && cpu.regs().sp >= sp; },
-                           StopReason::Step);
+    return begin_with_target([ret, sp](const I8085& cpu) { return cpu.regs().pc == ret && cpu.regs().sp >= sp; },
+                             StopReason::Step);
 }
 
-Stop Debugger::finish() {
+std::optional<Stop> Debugger::begin_finish() {
     const auto slot = return_slot();
     if (!slot) {
         Stop s = here(StopReason::Error);
@@ -233,31 +324,43 @@ Stop Debugger::finish() {
         return s;
     }
     const std::uint32_t above = *slot + 2u;  // the return address popped: the routine has returned
-    return run_with_target([above](const I8085& cpu) { return cpu.regs().sp >= above; }, StopReason::Finished);
+    return begin_with_target([above](const I8085& cpu) { return cpu.regs().sp >= above; }, StopReason::Finished);
 }
 
-Stop Debugger::advance(std::uint16_t pc) {
-    return run_with_target([pc](const I8085& cpu) { return cpu.regs().pc == pc; }, StopReason::Target);
+std::optional<Stop> Debugger::begin_advance(std::uint16_t pc) {
+    return begin_with_target([pc](const I8085& cpu) { return cpu.regs().pc == pc; }, StopReason::Target);
 }
 
-Stop Debugger::until(std::optional<std::uint16_t> pc) {
+std::optional<Stop> Debugger::begin_until(std::optional<std::uint16_t> pc) {
     const auto slot = return_slot();
     const std::uint32_t above = slot ? *slot + 2u : 0x10000u;
     if (pc) {
         const std::uint16_t to = *pc;
-        return run_with_target([to, above](const I8085& cpu) { return cpu.regs().pc == to || cpu.regs().sp >= above; },
-                               StopReason::Target);
+        return begin_with_target([to, above](const I8085& cpu) { return cpu.regs().pc == to || cpu.regs().sp >= above; },
+                                 StopReason::Target);
     }
     // Past the current instruction in this routine: out of a loop whose jump goes back.
     const Registers r = m_.cpu().regs();
-    const std::uint8_t op = m_.peek(r.pc);
-    if (is_call(op) || is_rst(op)) return next();
+    if (isa::may_call(flow_at(m_, r.pc))) return begin_next();
     const std::uint16_t from = r.pc, sp = r.sp;
-    return run_with_target(
+    return begin_with_target(
         [from, sp, above](const I8085& cpu) {
             return (cpu.regs().pc > from && cpu.regs().sp == sp) || cpu.regs().sp >= above;
         },
         StopReason::Step);
+}
+
+void Debugger::set_runaway_guard(const std::bitset<0x10000>* code) {
+    if (code) code_ = *code;
+    else code_.reset();
+    monitor_->runaway_armed = false;
+    arm();
+}
+
+void Debugger::track_stack_base(bool on) {
+    monitor_->track_stack = on;
+    if (!on) stack_base_.reset();
+    arm();
 }
 
 // ---- looking ---------------------------------------------------------------------------------------
@@ -265,7 +368,7 @@ Stop Debugger::until(std::optional<std::uint16_t> pc) {
 Debugger::Value Debugger::evaluate(std::string_view expression) const {
     Value v;
     ExprError err;
-    const auto e = Expr::parse(expression, program_, err);
+    const auto e = Expr::parse(expression, program_, err, Expr::Names::RegistersFirst, 0, &vars_);
     if (!e) {
         v.error = err.message;
         v.col = err.col;

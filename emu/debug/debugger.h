@@ -20,6 +20,7 @@
 #pragma once
 
 #include <atomic>
+#include <bitset>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -45,6 +46,9 @@ enum class StopReason : std::uint8_t {
     Interrupted,  // interrupt() (Ctrl-C) ended the run
     HistoryStart, // a reverse run reached the oldest snapshot: no more history
     Error,        // a breakpoint's condition could not be evaluated, or a command could not run
+    Halted,       // the CPU executed HLT (or is halted with nothing to wake it): like an exited program
+    Runaway,      // the CPU fetched an instruction where no program is (set_runaway_guard)
+    Paused,       // pause() ended a resumable run between its slices
 };
 std::string_view name(StopReason reason);  // "deadline", "breakpoint", ...
 
@@ -64,9 +68,21 @@ struct Stop {
     std::optional<std::uint16_t> data;   // Watchpoint: the address or port accessed
     std::optional<SourceLine> line;      // the source line of pc, when a loaded program has one
     int number = 0;                      // the breakpoint or watchpoint that stopped it
+    std::vector<int> numbers;            // Breakpoint: every breakpoint that stopped it (number first)
     std::vector<Change> changes;         // watchpoints: what changed
-    std::optional<std::uint16_t> after;  // watchpoints: the instruction that made the change
-    std::string message;                 // Error, HistoryStart: what happened
+    std::optional<std::uint16_t> after;  // watchpoints, runaway: the instruction that made the change
+    std::string message;                 // Error, HistoryStart, Halted, Runaway: what happened
+};
+
+// A hit condition (DAP's hitCondition): "N" or "==N" (the Nth hit), ">=N", ">N", "<N", "<=N", "%N"
+// (every Nth). Hits are counted after the condition holds and the ignore count has passed.
+struct HitCondition {
+    enum class Op : std::uint8_t { Eq, Ge, Gt, Lt, Le, Every };
+    Op op = Op::Eq;
+    std::uint64_t n = 0;
+    std::string text;
+    bool met(std::uint64_t hits) const;
+    static std::optional<HitCondition> parse(std::string_view text);  // nullopt: not one of the forms
 };
 
 // Where a command came from (a script's file and line), for front ends that print it.
@@ -97,6 +113,8 @@ struct Breakpoint {
     std::optional<Expr> condition;
     unsigned ignore = 0;                 // hits still to pass
     unsigned hits = 0;                   // stops (and ignored passes) so far
+    std::optional<HitCondition> hit_condition;  // stops only on the hits it allows
+    std::string log_message;             // a log point: prints this ({expr} replaced) and goes on
     std::vector<std::string> commands;   // run by the front end at a stop (commands ... end)
 };
 
@@ -126,6 +144,7 @@ struct Watchpoint {
     std::optional<Expr> condition;
     unsigned ignore = 0;
     unsigned hits = 0;
+    std::optional<HitCondition> hit_condition;
     std::vector<std::string> commands;
     std::int64_t last_value = 0;          // Write, Tool, Chip: the value at the last check
     std::vector<std::uint8_t> shadow;     // Write over more than a word: the bytes at the last check
@@ -156,6 +175,12 @@ struct Executed {
     std::uint64_t at = 0;
     std::uint16_t pc = 0;
     Registers before, after;
+};
+
+// How long one slice of a resumable run may go on (Debugger::resume).
+struct Budget {
+    std::uint64_t tstates = ~std::uint64_t{0};  // machine time in this slice, at most
+    double seconds = 0;                         // host time in this slice, at most (0: no limit)
 };
 
 struct Boundary;    // emu/debug/monitor.h, the debugger's inside
@@ -193,21 +218,49 @@ public:
     // Runs until the PC reaches `pc` (Target) or `until` (Deadline); breakpoints do not stop it.
     Stop run_to(std::uint16_t pc, std::uint64_t until);
     // Until a breakpoint, a watchpoint, interrupt(), or `limit` T-states (Deadline).
-    Stop cont(std::uint64_t limit = kContinueLimit);
+    Stop cont(std::uint64_t limit = kContinueLimit) { return complete(begin_continue(limit)); }
     Stop stepi();    // one instruction (into CALL and RST)
-    Stop step();     // one source line: into a CALL or RST, but over routines without source lines
-    Stop next();     // one instruction, a CALL or RST run whole
-    Stop finish();   // until the current routine returns to its caller
+    Stop step() { return complete(begin_step()); }      // one source line: into a CALL or RST, over routines without lines
+    Stop next() { return complete(begin_next()); }      // one instruction, a CALL, RST or RSTV run whole
+    Stop finish() { return complete(begin_finish()); }  // until the current routine returns to its caller
     // advance: until the PC reaches `pc` (or a breakpoint). until: the same, and also stops when the
     // current routine returns; without `pc`, until the PC passes the current one in this routine
     // (out of a loop).
-    Stop advance(std::uint16_t pc);
-    Stop until(std::optional<std::uint16_t> pc = {});
+    Stop advance(std::uint16_t pc) { return complete(begin_advance(pc)); }
+    Stop until(std::optional<std::uint16_t> pc = {}) { return complete(begin_until(pc)); }
     Stop here(StopReason reason) const;  // a Stop describing the machine now
     // Ends a run from another thread or a signal handler (Ctrl-C); the run returns Interrupted.
     void interrupt() { interrupt_.store(true); }
     void interrupt_clear() { interrupt_.store(false); }
-    static constexpr std::uint64_t kContinueLimit = 600ull * 3'072'000;  // 10 minutes simulated
+    static constexpr std::uint64_t kContinueLimit = 600ull * board::kCpuHz;  // 10 minutes simulated
+
+    // ---- resumable runs ----------------------------------------------------------------------------
+    // The same runs cut into slices, for front ends that draw or read messages between them (the
+    // GUI, DAP). begin_X starts X and returns its Stop when X ended at once (a single step, an
+    // error); otherwise nullopt, and resume() carries it on for at most a budget, returning the
+    // Stop once it has ended. pause() ends it between slices. Breakpoint conditions, hit conditions,
+    // log points and the runaway guard are decided here, the same for every front end.
+    // stop_at_halt false: a HLT does not end it (a board left running, woken by a key or RESET).
+    std::optional<Stop> begin_continue(std::uint64_t limit = kContinueLimit, bool stop_at_halt = true);
+    std::optional<Stop> begin_step();
+    std::optional<Stop> begin_next();
+    std::optional<Stop> begin_finish();
+    std::optional<Stop> begin_advance(std::uint16_t pc);
+    std::optional<Stop> begin_until(std::optional<std::uint16_t> pc = {});
+    std::optional<Stop> resume(const Budget& budget = {});
+    bool running() const { return active_.has_value(); }
+    Stop pause();  // ends the run under way (Paused); with none, a Stop describing now
+    // Runs a begun run to its end (the blocking forms above).
+    Stop complete(std::optional<Stop> begun);
+
+    // Stop when the CPU fetches an instruction outside `code` (an address where a program was
+    // loaded) after having run inside it: the Stop names the instruction that ran away (`after`).
+    // nullptr: off.
+    void set_runaway_guard(const std::bitset<0x10000>* code);
+    // SP as the program last set it (LXI SP, SPHL), tracked while on: return addresses above it
+    // are older code's (the monitor's), and backtraces end there.
+    void track_stack_base(bool on);
+    std::optional<std::uint16_t> stack_base() const { return stack_base_; }
 
     // ---- reverse execution -------------------------------------------------------------------------
     // Snapshots every `interval` T-states while on; the machine can then be taken back to any
@@ -262,7 +315,14 @@ public:
     // An empty condition removes it; otherwise the error (with column) or "".
     std::string set_condition(int number, std::string_view condition, int& col);
     bool set_ignore(int number, unsigned count);
+    bool set_hits(int number, unsigned hits);  // a front end re-making its points keeps their counts
     bool set_commands(int number, std::vector<std::string> commands);
+    // A hit condition (HitCondition's forms; empty removes it): "" or why the text is not one.
+    std::string set_hit_condition(int number, std::string_view text);
+    // A breakpoint becomes a log point (an empty message makes it a breakpoint again).
+    bool set_log_message(int number, std::string message);
+    // `message` with each {expression} replaced by its value (log points); "<error>" where one fails.
+    std::string interpolate(std::string_view message) const;
     const std::vector<Breakpoint>& breakpoints() const { return breakpoints_; }
     const std::vector<Watchpoint>& watchpoints() const { return watchpoints_; }
     const Breakpoint* breakpoint(int number) const;
@@ -278,6 +338,10 @@ public:
         int col = 0;
     };
     Value evaluate(std::string_view expression) const;
+    // Convenience variables ($NAME, `set $N = 3`): one set for the console, conditions, log points
+    // and DAP; an expression reads them when it is evaluated.
+    Expr::Variables& variables() { return vars_; }
+    const Expr::Variables& variables() const { return vars_; }
     // The current value of a machine-tool quantity or chip register (no side effects).
     std::int64_t tool_value(ToolQuantity q, periph::MachineTool::Axis axis) const;
     std::int64_t chip_value(ChipRegister r) const;
@@ -292,9 +356,23 @@ private:
     friend class Monitor;
     friend class History;
 
-    // The one run loop: chunks up to the next snapshot time, monitor armed as needed.
-    Stop drive(std::uint64_t until, const std::function<bool()>& condition, bool skip_first);
-    Stop run_with_target(std::function<bool(const I8085&)> target, StopReason reason);
+    // A run begun and not yet ended (resumable).
+    struct Active {
+        std::uint64_t until = 0;
+        std::function<bool()> condition;
+        bool first = true;                    // the first slice: a breakpoint at the start does not stop
+        bool stop_at_halt = false;            // continue and steps: HLT ends them
+        std::optional<StopReason> target_as;  // what reaching the target is called
+        std::uint64_t limit = 0;              // continue: its limit, for the message at the deadline
+        bool emit_stops = false;              // run_until: stops are also Stopped events
+        Origin origin;
+    };
+    // The one run loop: a slice of chunks up to the next snapshot time, monitor armed as needed;
+    // nullopt when the slice's budget ran out before the run ended.
+    std::optional<Stop> drive(const Budget& budget);
+    std::optional<Stop> begin(Active a, std::function<bool(const I8085&)> target = {});
+    Stop end_run(Stop s);
+    std::optional<Stop> begin_with_target(std::function<bool(const I8085&)> target, StopReason reason);
     // Re-execution: the machine back at checkpoint `c`, then run to `t` (a position of this
     // timeline), recording boundaries and/or hits on the way; nothing stops it.
     void replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits);
@@ -324,6 +402,11 @@ private:
     bool replaying_ = false;
     std::uint64_t seen_seq_ = 0;  // the input queue's numbering at the last run
     std::atomic<bool> interrupt_{false};
+    std::optional<Active> active_;
+    Expr::Variables vars_;
+    bool halted_ = false;  // set by the CPU's HLT while a run that stops there is under way
+    std::optional<std::uint16_t> stack_base_;
+    std::optional<std::bitset<0x10000>> code_;  // the runaway guard's map (nullopt: off)
 };
 
 }  // namespace alp85::debug

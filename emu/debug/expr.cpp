@@ -129,6 +129,7 @@ private:
             case K::Flag:
             case K::Mem8: return 8;
             case K::Number: return x.value >= -128 && x.value <= 255 ? 8 : 16;
+            case K::Var: return 16;
             case K::Time: return 16;
             case K::Lt: case K::Le: case K::Gt: case K::Ge: case K::Eq: case K::Ne: case K::Not: case K::And: case K::Or:
                 return 8;  // 0 or 1
@@ -272,8 +273,11 @@ private:
         if (dollar) {
             const int n = machine_name();
             if (n >= 0) return n;
-            if (vars_)
-                if (auto it = vars_->find(name); it != vars_->end()) return add({K::Number, it->second, -1, -1, col});
+            if (vars_ && vars_->contains(name)) {  // read at each evaluation: a condition sees the value of now
+                e_->vars_ = vars_;
+                e_->var_names_.push_back(name);
+                return add({K::Var, static_cast<std::int64_t>(e_->var_names_.size() - 1), -1, -1, col});
+            }
             return fail(fmt::format("no register, flag or variable '${}'", name), col);
         }
         if (amp) {
@@ -310,6 +314,12 @@ std::int64_t Expr::eval(const Machine& m, int i) const {
     auto b = [&] { return eval(m, n.b); };
     switch (n.kind) {
         case Kind::Number: return n.value;
+        case Kind::Var: {
+            const std::string& name = var_names_[static_cast<std::size_t>(n.value)];
+            const auto it = vars_->find(name);
+            if (it == vars_->end()) throw ExprError{n.col, fmt::format("no variable '${}'", name)};
+            return it->second;
+        }
         case Kind::Reg: return read_register(m, static_cast<RegId>(n.value));
         case Kind::Flag: return (m.cpu().regs().f & n.value) ? 1 : 0;
         case Kind::Time: return static_cast<std::int64_t>(m.now());

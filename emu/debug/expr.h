@@ -55,6 +55,7 @@ public:
 
     enum class Kind : std::uint8_t {
         Number, Reg, Flag, Time, Mem8, Mem16,
+        Var,  // a convenience variable ($NAME), read when evaluated
         Neg, Not, Compl,
         Mul, Div, Mod, Add, Sub, Shl, Shr, Lt, Le, Gt, Ge, Eq, Ne, BitAnd, BitXor, BitOr, And, Or,
     };
@@ -69,6 +70,8 @@ private:
     std::int64_t eval(const Machine& m, int node) const;
 
     std::vector<Node> nodes_;
+    std::vector<std::string> var_names_;       // Var nodes: their names (value: the index)
+    const Variables* vars_ = nullptr;          // where Var nodes are read
     int root_ = -1;
     int width_ = 16;
     std::string text_;

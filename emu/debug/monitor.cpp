@@ -45,6 +45,7 @@ void Debugger::Monitor::rebuild() {
         }
     }
     any_bp_ = bp_.any();
+    guard_ = d_.code_.has_value();
     accesses_ = read_.any() || write_.any() || port_in_.any() || port_out_.any();
 }
 
@@ -54,8 +55,22 @@ bool Debugger::Monitor::before_instruction(const I8085& cpu) {
     if (!pending.empty() && hits) flush_pending(t);
     if (record) record->push_back({t, r, d_.m_.peek(r.pc)});
     if (replay && !hits) return false;
+    if (track_stack) {
+        if (setting_sp) d_.stack_base_ = r.sp;
+        const std::uint8_t op = d_.m_.peek(r.pc);
+        setting_sp = op == 0x31 || op == 0xF9;  // LXI SP / SPHL
+    }
     // The machine tool and the chips changed during the instruction at last_pc (stop after it).
     if (state_watches_ && check_state(cpu)) return true;
+    if (guard_ && !replay) {
+        if ((*d_.code_)[r.pc]) {
+            runaway_armed = true;
+        } else if (runaway_armed) {  // stop before running what is not a program
+            runaway_armed = false;
+            stop_hit = Hit{t, StopReason::Runaway, 0, {}, {}, last_pc, {}};
+            return true;
+        }
+    }
     last_pc = r.pc;
     if (any_bp_ && bp_[r.pc] && check_breakpoint(cpu)) return true;
     if (target && target(cpu)) {
@@ -68,7 +83,7 @@ bool Debugger::Monitor::before_instruction(const I8085& cpu) {
 bool Debugger::Monitor::check_breakpoint(const I8085& cpu) {
     const std::uint64_t t = cpu.tstates();
     if (skip_at && *skip_at == t) return false;
-    int stop_number = 0;
+    std::vector<int> stopping;
     for (Breakpoint& b : d_.breakpoints_) {
         if (!b.enabled || b.address != cpu.regs().pc) continue;
         if (b.condition) {
@@ -78,23 +93,29 @@ bool Debugger::Monitor::check_breakpoint(const I8085& cpu) {
                 if (hits) continue;
                 error = "breakpoint " + std::to_string(b.number) + ": the condition '" + b.condition->text() +
                         "' cannot be evaluated: " + e.message;
-                stop_number = b.number;
+                stopping = {b.number};
                 break;
             }
         }
-        if (hits) {  // re-execution: a position, nothing counted
-            hits->push_back({t, StopReason::Breakpoint, b.number, {}, {}, {}});
+        if (hits) {  // re-execution: a position, nothing counted (a log point is no stop)
+            if (b.log_message.empty()) hits->push_back({t, StopReason::Breakpoint, b.number, {}, {}, {}, {b.number}});
             continue;
         }
-        ++b.hits;
         if (b.ignore > 0) {
+            ++b.hits;
             --b.ignore;
             continue;
         }
-        if (!stop_number) stop_number = b.number;
+        ++b.hits;
+        if (b.hit_condition && !b.hit_condition->met(b.hits)) continue;
+        if (!b.log_message.empty()) {
+            d_.emit({Event::Kind::Output, {}, d_.interpolate(b.log_message), {}});
+            continue;
+        }
+        stopping.push_back(b.number);
     }
-    if (!stop_number) return false;
-    stop_hit = Hit{t, StopReason::Breakpoint, stop_number, {}, {}, {}};
+    if (stopping.empty()) return false;
+    stop_hit = Hit{t, StopReason::Breakpoint, stopping.front(), {}, {}, {}, stopping};
     return true;
 }
 
@@ -121,6 +142,7 @@ bool Debugger::Monitor::check_state(const I8085& cpu) {
                 --w.ignore;
                 continue;
             }
+            if (w.hit_condition && !w.hit_condition->met(w.hits)) continue;
         }
         if (!hit.number) hit.number = w.number;
         hit.changes.push_back({w.number, w.what, old, v, w.kind == WatchKind::Tool ? 0 : 2, false});
@@ -212,6 +234,7 @@ std::vector<Hit> Debugger::Monitor::decide_pending(bool count) {
                 --w->ignore;
                 continue;
             }
+            if (w->hit_condition && !w->hit_condition->met(w->hits)) continue;
         }
         kept.push_back(std::move(h));
     }

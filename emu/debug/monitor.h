@@ -28,6 +28,7 @@ struct Hit {
     std::vector<Change> changes;
     std::optional<std::uint16_t> data;
     std::optional<std::uint16_t> after;
+    std::vector<int> numbers{};  // breakpoints: all that stop here
 };
 
 class Debugger::Monitor final : public RunMonitor {
@@ -36,7 +37,9 @@ public:
 
     // What is armed, rebuilt by Debugger::arm() from the breakpoint and watchpoint lists.
     void rebuild();
-    bool needed() const { return any_bp_ || accesses_ || state_watches_ || target || record != nullptr; }
+    bool needed() const {
+        return any_bp_ || accesses_ || state_watches_ || target || record != nullptr || guard_ || track_stack;
+    }
 
     bool before_instruction(const I8085& cpu) override;
     bool on_read(std::uint16_t addr, std::uint8_t value) override;
@@ -56,6 +59,9 @@ public:
     std::vector<Boundary>* record = nullptr;
     std::vector<Hit>* hits = nullptr;
     std::uint16_t last_pc = 0;  // the instruction running (for "after" in watch reports)
+    bool runaway_armed = false;  // the runaway guard: the PC has been in code since the last runaway
+    bool track_stack = false;    // Debugger::track_stack_base
+    bool setting_sp = false;     // the instruction running sets SP (LXI SP, SPHL)
 
     // Watch hits of the last instruction that survive their conditions and ignore counts (counted).
     std::vector<Hit> decide_pending(bool count);
@@ -71,7 +77,7 @@ private:
     Debugger& d_;
     std::bitset<0x10000> bp_, read_, write_;
     std::bitset<256> port_in_, port_out_;
-    bool any_bp_ = false, accesses_ = false, state_watches_ = false;
+    bool any_bp_ = false, accesses_ = false, state_watches_ = false, guard_ = false;
 };
 
 // Snapshots every interval of simulated time, for reverse execution.

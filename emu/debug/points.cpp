@@ -7,6 +7,7 @@
 #include "asm/isa.h"
 #include "emu/debug/debugger.h"
 #include "emu/debug/monitor.h"
+#include "emu/util/text.h"
 
 namespace alp85::debug {
 
@@ -51,7 +52,7 @@ Debugger::Location Debugger::locate(std::string_view text) const {
         ++lead;
     }
     ExprError err;
-    const auto e = Expr::parse(t, program_, err, Expr::Names::SymbolsFirst, static_cast<int>(lead));
+    const auto e = Expr::parse(t, program_, err, Expr::Names::SymbolsFirst, static_cast<int>(lead), &vars_);
     if (!e) {
         loc.error = err.message;
         loc.col = err.col;
@@ -83,7 +84,7 @@ Debugger::Added Debugger::add_breakpoint(std::string_view location, bool tempora
     std::optional<Expr> cond;
     if (!condition.empty()) {
         ExprError err;
-        cond = Expr::parse(condition, program_, err);
+        cond = Expr::parse(condition, program_, err, Expr::Names::RegistersFirst, 0, &vars_);
         if (!cond) {
             a.error = err.message;
             a.col = err.col;
@@ -126,7 +127,7 @@ Debugger::Added Debugger::add_watchpoint(const WatchSpec& spec, std::string_view
     if (w.last < w.first) std::swap(w.first, w.last);
     if (!condition.empty()) {
         ExprError err;
-        w.condition = Expr::parse(condition, program_, err);
+        w.condition = Expr::parse(condition, program_, err, Expr::Names::RegistersFirst, 0, &vars_);
         if (!w.condition) {
             a.error = err.message;
             a.col = err.col;
@@ -187,7 +188,7 @@ std::string Debugger::set_condition(int n, std::string_view condition, int& col)
     std::optional<Expr> cond;
     if (!condition.empty()) {
         ExprError err;
-        cond = Expr::parse(condition, program_, err);
+        cond = Expr::parse(condition, program_, err, Expr::Names::RegistersFirst, 0, &vars_);
         if (!cond) {
             col = err.col;
             return err.message;
@@ -206,11 +207,90 @@ bool Debugger::set_ignore(int n, unsigned count) {
     return true;
 }
 
+bool Debugger::set_hits(int n, unsigned hits) {
+    if (Breakpoint* b = find_bp(n)) b->hits = hits;
+    else if (Watchpoint* w = find_wp(n)) w->hits = hits;
+    else return false;
+    return true;
+}
+
 bool Debugger::set_commands(int n, std::vector<std::string> commands) {
     if (Breakpoint* b = find_bp(n)) b->commands = std::move(commands);
     else if (Watchpoint* w = find_wp(n)) w->commands = std::move(commands);
     else return false;
     return true;
+}
+
+std::string Debugger::set_hit_condition(int n, std::string_view text) {
+    std::optional<HitCondition> h;
+    if (!text.empty()) {
+        h = HitCondition::parse(text);
+        if (!h) return fmt::format("hit condition '{}' is not N, ==N, >=N, >N, <N, <=N or %N", text);
+    }
+    if (Breakpoint* b = find_bp(n)) b->hit_condition = std::move(h);
+    else if (Watchpoint* w = find_wp(n)) w->hit_condition = std::move(h);
+    else return fmt::format("no breakpoint or watchpoint number {}", n);
+    return {};
+}
+
+bool Debugger::set_log_message(int n, std::string message) {
+    Breakpoint* b = find_bp(n);
+    if (!b) return false;
+    b->log_message = std::move(message);
+    return true;
+}
+
+std::string Debugger::interpolate(std::string_view message) const {
+    std::string out;
+    std::size_t i = 0;
+    while (i < message.size()) {
+        const std::size_t open = message.find('{', i);
+        if (open == std::string_view::npos) break;
+        const std::size_t close = message.find('}', open);
+        if (close == std::string_view::npos) break;
+        out.append(message.substr(i, open - i));
+        const Value v = evaluate(message.substr(open + 1, close - open - 1));
+        if (!v.error.empty()) out += "<" + v.error + ">";
+        else if (v.value < 0 || v.value > 0xFFFF) out += std::to_string(v.value);
+        else out += fmt::format("{:0{}X}H ({})", v.value, v.width <= 8 ? 2 : 4, v.value);
+        i = close + 1;
+    }
+    out.append(message.substr(i));
+    return out;
+}
+
+bool HitCondition::met(std::uint64_t hits) const {
+    switch (op) {
+        case Op::Eq: return hits == n;
+        case Op::Ge: return hits >= n;
+        case Op::Gt: return hits > n;
+        case Op::Lt: return hits < n;
+        case Op::Le: return hits <= n;
+        case Op::Every: return n != 0 && hits % n == 0;
+    }
+    return false;
+}
+
+std::optional<HitCondition> HitCondition::parse(std::string_view text) {
+    HitCondition h;
+    h.text = std::string(text);
+    std::string_view s = trim_blanks(text);
+    static constexpr std::pair<std::string_view, Op> kOps[] = {{">=", Op::Ge}, {"<=", Op::Le}, {"==", Op::Eq}, {">", Op::Gt},
+                                                               {"<", Op::Lt},  {"%", Op::Every}, {"=", Op::Eq}};
+    for (const auto& [word, op] : kOps)
+        if (s.starts_with(word)) {
+            h.op = op;
+            s = trim_blanks(s.substr(word.size()));
+            break;
+        }
+    if (s.empty() || s.size() > 19) return std::nullopt;
+    std::uint64_t n = 0;
+    for (const char c : s) {
+        if (c < '0' || c > '9') return std::nullopt;
+        n = n * 10 + static_cast<std::uint64_t>(c - '0');
+    }
+    h.n = n;
+    return h;
 }
 
 std::vector<std::string> Debugger::commands_for(const Stop& s) const {
@@ -232,12 +312,18 @@ constexpr int kMaxFrames = 64;
 // The routine a return address `w` came from: the target of the CALL (or RST) just before it;
 // nullopt when no call instruction is there. RST 7 (FFH) is what erased EPROM reads: not a call.
 std::optional<std::uint16_t> called_from(const Machine& m, const SymbolTable& program, std::uint16_t w) {
-    const std::uint8_t call = m.peek(static_cast<std::uint16_t>(w - 3));
-    if (call == 0xCD || (call & 0xC7) == 0xC4)
+    const bool i8080 = m.cpu().variant() == Variant::I8080;
+    const isa::Flow call = isa::flow_of(m.peek(static_cast<std::uint16_t>(w - 3)), i8080);
+    if (call == isa::Flow::Call || call == isa::Flow::CallIf)
         return static_cast<std::uint16_t>(m.peek(static_cast<std::uint16_t>(w - 2)) | m.peek(static_cast<std::uint16_t>(w - 1)) << 8);
-    const std::uint8_t rst = m.peek(static_cast<std::uint16_t>(w - 1));
-    if ((rst & 0xC7) == 0xC7 && rst != 0xFF && program.line_of(static_cast<std::uint16_t>(w - 1))) return rst & 0x38;
-    return std::nullopt;
+    const auto at = static_cast<std::uint16_t>(w - 1);
+    const std::uint8_t rst = m.peek(at);
+    if (rst == 0xFF || !program.line_of(at)) return std::nullopt;
+    switch (isa::flow_of(rst, i8080)) {
+        case isa::Flow::Restart: return rst & 0x38;
+        case isa::Flow::RestartIf: return 0x40;  // RSTV
+        default: return std::nullopt;
+    }
 }
 }  // namespace
 
@@ -263,6 +349,7 @@ std::vector<Frame> Debugger::backtrace() const {
     for (int i = 0; i < 256 && frames.size() < kMaxFrames && slot + 1 <= 0xFFFF; ++i, slot += 2) {
         const auto s = static_cast<std::uint16_t>(slot);
         if (m_.bus().page_kind(s) != Bus::PageKind::Ram) break;  // off the end of the stack's memory
+        if (stack_base_ && slot >= *stack_base_) break;           // older code's stack (track_stack_base)
         if (slot - last_slot > kMaxGap) break;
         const auto w = static_cast<std::uint16_t>(m_.peek(s) | m_.peek(static_cast<std::uint16_t>(s + 1)) << 8);
         const auto target = called_from(m_, program_, w);

@@ -4,6 +4,7 @@
 // boundary or each breakpoint/watchpoint hit, from which the wanted position is chosen.
 #include <fmt/format.h>
 
+#include "asm/isa.h"
 #include "emu/debug/debugger.h"
 #include "emu/debug/monitor.h"
 
@@ -77,19 +78,17 @@ Stop Debugger::no_history(std::string why) {
 
 namespace {
 // How the call depth changes from boundary b to the next one (whose registers are `next`).
-int depth_delta(const Boundary& b, const Registers& next) {
-    const std::uint8_t op = b.op;
+int depth_delta(const Boundary& b, const Registers& next, bool i8080) {
+    const isa::Flow flow = isa::flow_of(b.op, i8080);
     const bool pushed = next.sp == static_cast<std::uint16_t>(b.regs.sp - 2);
     const bool popped = next.sp == static_cast<std::uint16_t>(b.regs.sp + 2);
-    const bool call = op == 0xCD || (op & 0xC7) == 0xC4 || (op & 0xC7) == 0xC7;  // CALL, Ccc, RST
-    const bool ret = op == 0xC9 || (op & 0xC7) == 0xC0;
-    if (call) return pushed ? 1 : 0;
-    if (ret) return popped ? -1 : 0;
+    if (isa::may_call(flow)) return pushed ? 1 : 0;
+    if (isa::may_return(flow)) return popped ? -1 : 0;
+    const std::uint8_t op = b.op;
     const bool push = (op & 0xCF) == 0xC5, sp_op = op == 0x3B || op == 0x31 || op == 0xF9 || op == 0xE3;
-    const bool jump = op == 0xC3 || (op & 0xC7) == 0xC2 || op == 0xE9 || op == 0xDD || op == 0xFD;
     // Anything else that leaves two bytes pushed and the PC elsewhere: an interrupt acknowledged.
     const bool vector = next.pc <= 0x3C && (next.pc % 8 == 0 || next.pc % 8 == 4);  // RST n, TRAP, RST x.5
-    if (pushed && !push && !sp_op && !jump && vector) return 1;
+    if (pushed && !push && !sp_op && !isa::may_jump(flow) && vector) return 1;
     return 0;
 }
 }  // namespace
@@ -121,7 +120,7 @@ Stop Debugger::reverse_frame(bool finish) {
         for (std::size_t j = b.size(); j-- > 0;) {
             if (b[j].t >= now) continue;
             const Registers& next = j + 1 < b.size() && b[j + 1].t <= now ? b[j + 1].regs : at_now;
-            depth -= depth_delta(b[j], next);
+            depth -= depth_delta(b[j], next, m_.cpu().variant() == Variant::I8080);
             if (finish ? depth < 0 : depth <= 0) {
                 const std::uint64_t target = b[j].t;
                 replay(*c, target, nullptr, nullptr);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <utility>
 #include <iostream>
 #include <thread>
 
@@ -90,7 +91,13 @@ public:
 
 private:
     Machine& machine() { return session_.machine(); }
-    bool command(const std::string& text);
+    bool done(const script::Session::Outcome& o);
+    // Runs: Continue/Run begin one that stops at breakpoints (and, debugging, at HLT); each frame
+    // resumes it within the frame's budget; Pause ends it. The same Debugger run as DAP's.
+    void begin_run();
+    void pause_run();
+    void report(const debug::Stop& s);
+    void debug_request(DebugPanes::Request r);
     void after_commands();
     void handle(const SDL_Event& e);
     void step_script(HostClock::time_point until);
@@ -108,9 +115,13 @@ private:
     DebugPanes panes_;
     std::size_t line_click_pos_ = 0, command_pos_ = 0;
     bool debug_hooks_done() const {
-        return line_click_pos_ >= o_.click_lines.size() && command_pos_ >= o_.debug_commands.size();
+        return line_click_pos_ >= o_.click_lines.size() && command_pos_ >= o_.debug_commands.size() && hook_wait_ == 0 &&
+               !button_up_;
     }
     void drive_debug_hooks();
+    void push_click(Vec2 at, bool down);
+    long hook_wait_ = 0;               // frames still to let pass ("frames:N")
+    std::optional<Vec2> button_up_;    // a hook's click, released next frame
     Toolpath path_;
     Backdrop backdrop_;
     Presser presser_;
@@ -131,6 +142,7 @@ private:
     long idle_frames_ = 0;  // frames since the script and the clicks were done
     long frames_ = 0;
     std::string pending_shot_;
+    std::optional<HostClock::time_point> pause_asked_;  // --debug: when Pause was asked (the log says how long it took)
     bool quit_ = false;
     double fps_ = 0;
     Canvas canvas_;
@@ -157,23 +169,11 @@ private:
     bool key_map_ = false;
 };
 
-bool App::command(const std::string& text) {
-    std::vector<script::ParseError> errors;
-    auto cmds = script::parse_script(text, "gui", errors);
-    if (errors.empty()) session_.check(cmds, errors);
-    for (const auto& e : errors) ui_.add_log("error: " + e.message);
-    if (!errors.empty()) return false;
-    bool ok = true;
-    for (const auto& c : cmds) {
-        const auto r = session_.execute(c);
-        if (r.status != script::Session::Status::Ok) {
-            ui_.add_log(r.message);
-            ok = false;
-            break;
-        }
-    }
+// A typed session call's outcome: logged when it failed; the views then follow what changed.
+bool App::done(const script::Session::Outcome& o) {
+    if (o.status != script::Session::Status::Ok) ui_.add_log(o.message);
     after_commands();
-    return ok;
+    return o.status == script::Session::Status::Ok;
 }
 
 // What a command may have changed: the symbols (the thesis's variables), the sampler (a `record`
@@ -215,15 +215,17 @@ int App::start() {
         after_commands();
         return 0;
     }
-    std::string text = "monitor\n";
-    const auto& fw = o_.firmware.empty() ? std::vector<std::string>{"thesis-fixed"} : o_.firmware;
-    for (const auto& f : fw) text += (firmware::find(f) ? "firmware " + f : "load " + absolute(f)) + "\n";
-    text += "reset\n";
-    if (!command(text)) {
+    script::Session::Boot boot;
+    for (const auto& f : o_.firmware.empty() ? std::vector<std::string>{"thesis-fixed"} : o_.firmware) {
+        if (firmware::find(f)) boot.firmware.push_back(f);
+        else boot.images.push_back({absolute(f), std::nullopt});
+    }
+    if (!done(session_.boot(boot))) {
         std::cerr << "alp85 gui: could not load the firmware:\n";
         for (const auto& l : ui_.log) std::cerr << "  " << l << '\n';
         return 2;
     }
+    if (!o_.debug) begin_run();
     return 0;
 }
 
@@ -362,6 +364,7 @@ void App::step_script(HostClock::time_point until) {
             script_active_ = false;
             pacer_.rebase(machine().now(), HostClock::now());
             after_commands();
+            if (!o_.debug) begin_run();
             return;
         }
         const auto r = session_.execute(script_[script_pos_++]);
@@ -375,28 +378,88 @@ void App::step_script(HostClock::time_point until) {
     } while (HostClock::now() < until);
 }
 
+void App::begin_run() {
+    debug::Debugger& d = session_.debugger();
+    // No limit of machine time; only the debugger's Continue ends at a HLT (a board left running
+    // still answers RESET and the keys).
+    if (const auto s = d.begin_continue(~std::uint64_t{0}, o_.debug)) {
+        report(*s);
+        return;
+    }
+    ui_.running = true;
+    pacer_.rebase(machine().now(), HostClock::now());
+    pause_asked_.reset();
+}
+
+void App::pause_run() {
+    debug::Debugger& d = session_.debugger();
+    if (!d.running()) return;
+    report(d.pause());
+}
+
+void App::report(const debug::Stop& s) {
+    ui_.running = false;
+    if (pause_asked_) {
+        const double ms = std::chrono::duration<double, std::milli>(HostClock::now() - *pause_asked_).count();
+        pause_asked_.reset();
+        if (o_.debug) std::cout << fmt::format("[gui] paused {:.1f} ms after the request\n", ms) << std::flush;
+    }
+    if (s.reason == debug::StopReason::Paused) {
+        ui_.add_log(fmt::format("paused at {:04X}H", s.pc));
+        if (o_.debug) panes_.add_log(fmt::format("paused at {:04X}H", s.pc));
+        return;
+    }
+    ui_.add_log(fmt::format("stopped: {} at {:04X}H", debug::name(s.reason), s.pc));
+    if (o_.debug) {
+        const std::string text = shell_.console().describe(s);
+        panes_.add_log(text);
+        std::cout << "[gui] " << text << '\n' << std::flush;
+    }
+    panes_.last_t = ~0ull;
+}
+
 void App::run_machine(HostClock::time_point until) {
     Machine& m = machine();
+    debug::Debugger& d = session_.debugger();
+    if (!d.running()) {
+        ui_.running = false;
+        return;
+    }
     std::uint64_t goal = pacer_.target(m.now(), HostClock::now());
     if (!script_active_ && click_pos_ < clicks_.size()) goal = std::min(goal, std::max(click_t_, m.now()));
-    std::uint64_t slice = board::tstates_from_ms(5);
-    while (m.now() < goal) {
-        const auto t0 = HostClock::now();
-        if (t0 >= until) break;
-        const std::uint64_t to = goal - m.now() > slice ? m.now() + slice : goal;
-        const debug::Stop s = session_.debugger().run_until(to);
-        if (s.reason == debug::StopReason::Breakpoint || s.reason == debug::StopReason::Watchpoint) {
-            ui_.running = false;
-            ui_.add_log(fmt::format("stopped: {} at {:04X}H", debug::name(s.reason), m.cpu().regs().pc));
-            if (o_.debug) panes_.add_log(shell_.console().describe(s));
-            break;
-        }
-        // Slices of about 2 ms of host time, so the budget is kept.
-        const double took = std::chrono::duration<double>(HostClock::now() - t0).count();
-        if (took < 0.001 && slice < board::tstates_from_ms(1000)) slice *= 2;
-        else if (took > 0.004 && slice > 3072) slice /= 2;
+    const double left = std::chrono::duration<double>(until - HostClock::now()).count();
+    if (goal > m.now() && left > 0) {
+        debug::Budget b;
+        b.tstates = goal - m.now();
+        b.seconds = left;
+        if (const auto s = d.resume(b)) report(*s);
     }
     after_commands();
+}
+
+void App::debug_request(DebugPanes::Request r) {
+    using R = DebugPanes::Request;
+    debug::Debugger& d = session_.debugger();
+    const auto forward = [&](std::optional<debug::Stop> s) {
+        if (s) {
+            report(*s);
+        } else {
+            ui_.running = true;
+            pacer_.rebase(machine().now(), HostClock::now());
+        }
+    };
+    switch (r) {
+        case R::None: return;
+        case R::Continue: begin_run(); return;
+        case R::Pause: pause_run(); return;
+        case R::Step: forward(d.begin_step()); return;
+        case R::Next: forward(d.begin_next()); return;
+        case R::Finish: forward(d.begin_finish()); return;
+        case R::ReverseContinue: report(d.reverse_continue()); return;
+        case R::ReverseStep: report(d.reverse_step()); return;
+        case R::ReverseNext: report(d.reverse_next()); return;
+        case R::ReverseFinish: report(d.reverse_finish()); return;
+    }
 }
 
 void App::act(const Action& a) {
@@ -404,36 +467,40 @@ void App::act(const Action& a) {
     const auto host = HostClock::now();
     switch (a.kind) {
         case K::RunPause:
-            ui_.running = !ui_.running;
-            pacer_.rebase(machine().now(), host);
+            if (session_.debugger().running()) pause_run();
+            else begin_run();
             break;
-        case K::Reset: command("reset"); break;
+        case K::Reset: done(session_.reset()); break;
         case K::Speed:
             ui_.speed = a.speed;
             pacer_.set_speed(kSpeeds[static_cast<std::size_t>(a.speed)].factor, machine().now(), host);
             break;
         case K::Firmware:
-            if (command("firmware " + a.arg + "\nreset")) ui_.add_log("loaded " + a.arg);
-            path_.clear();
+            if (done(session_.load_firmware(a.arg)) && done(session_.reset())) {
+                ui_.add_log("loaded " + a.arg);
+                path_.clear();
+            }
             break;
         case K::LoadFile:
-            if (command("load " + absolute(a.arg))) ui_.add_log("loaded " + absolute(a.arg));
+            if (done(session_.load_image(absolute(a.arg)))) ui_.add_log("loaded " + absolute(a.arg));
             break;
         case K::SaveSnapshot:
-            if (command("save " + absolute(a.arg))) ui_.add_log("saved " + absolute(a.arg));
+            if (done(session_.save(absolute(a.arg)))) ui_.add_log("saved " + absolute(a.arg));
             break;
         case K::LoadSnapshot:
-            if (command("restore " + absolute(a.arg))) ui_.add_log("restored " + absolute(a.arg));
-            path_.clear();
-            pacer_.rebase(machine().now(), host);
+            if (done(session_.restore(absolute(a.arg)))) {  // a refused snapshot leaves the drawing as it was
+                ui_.add_log("restored " + absolute(a.arg));
+                path_.clear();
+                pacer_.rebase(machine().now(), host);
+            }
             break;
         case K::Screenshot: pending_shot_ = absolute(a.arg); break;
-        case K::RecordStart: command("record " + absolute(a.arg) + " every 1ms"); break;
+        case K::RecordStart: done(session_.record(absolute(a.arg), board::tstates_from_ms(1))); break;
         case K::RecordStop:
-            if (command("record stop")) ui_.add_log("wrote " + absolute(a.arg));
+            if (done(session_.record_stop())) ui_.add_log("wrote " + absolute(a.arg));
             break;
         case K::Plot:
-            if (command("plot toolpath " + absolute(a.arg))) ui_.add_log("plotted " + absolute(a.arg));
+            if (done(session_.plot_toolpath(absolute(a.arg)))) ui_.add_log("plotted " + absolute(a.arg));
             break;
     }
 }
@@ -500,8 +567,43 @@ void App::drive_debug_hooks() {
         }
         return;
     }
+    if (hook_wait_ > 0) {
+        --hook_wait_;
+        return;
+    }
+    if (button_up_) {  // the second half of a click: released a frame after it was pressed
+        push_click(*button_up_, false);
+        button_up_.reset();
+        return;
+    }
     if (command_pos_ < o_.debug_commands.size()) {
         const std::string& line = o_.debug_commands[command_pos_++];
+        // Hooks beside command lines: "click:NAME" clicks a named button (controls.run,
+        // debug.continue, debug.step, ...), "frames:N" lets N frames pass, "status" prints whether
+        // the board runs and its time.
+        if (line.starts_with("click:")) {
+            const auto it = drawn_buttons().find(line.substr(6));
+            if (it == drawn_buttons().end()) {
+                std::cerr << "alp85 gui: --debug-command " << line << ": no such button\n";
+                status_ = 2;
+                return;
+            }
+            const Vec2 c{(it->second.x0 + it->second.x1) / 2, (it->second.y0 + it->second.y1) / 2};
+            if (session_.debugger().running()) pause_asked_ = HostClock::now();  // a click on Pause
+            push_click(c, true);
+            button_up_ = c;
+            return;
+        }
+        if (line.starts_with("frames:")) {
+            hook_wait_ = std::atol(line.c_str() + 7);
+            return;
+        }
+        if (line == "status") {
+            std::cout << fmt::format("[gui] status: {} t={}\n", session_.debugger().running() ? "running" : "stopped",
+                                     machine().now())
+                      << std::flush;
+            return;
+        }
         const std::string out = shell_.execute(line);
         panes_.add_log("(alp85) " + line);
         panes_.add_log(out);
@@ -509,6 +611,20 @@ void App::drive_debug_hooks() {
         panes_.last_t = ~0ull;
         if (shell_.console().errors()) status_ = 1;
     }
+}
+
+void App::push_click(Vec2 at, bool down) {
+    // Dear ImGui (1.86) reads the pointer's place from SDL's mouse state: the pointer goes there.
+    SDL_WarpMouseInWindow(window_, static_cast<int>(at.x), static_cast<int>(at.y));
+    SDL_Event e{};
+    e.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
+    e.button.windowID = SDL_GetWindowID(window_);
+    e.button.button = SDL_BUTTON_LEFT;
+    e.button.state = down ? SDL_PRESSED : SDL_RELEASED;
+    e.button.clicks = 1;
+    e.button.x = static_cast<int>(at.x);
+    e.button.y = static_cast<int>(at.y);
+    SDL_PushEvent(&e);
 }
 
 // A borderless, transparent window over `r` that takes no input (the keypad's clicks are
@@ -537,11 +653,7 @@ void App::draw() {
     ImGui::End();
     if (o_.debug) {
         draw_debug_panes(panes_, shell_, ui_.running);
-        if (panes_.run_requested != ui_.running) {
-            ui_.running = panes_.run_requested;
-            pacer_.rebase(machine().now(), HostClock::now());
-        }
-        panes_.run_requested = ui_.running;
+        if (panes_.request != DebugPanes::Request::None) debug_request(std::exchange(panes_.request, DebugPanes::Request::None));
         if (frames_ % 15 == 0)
             ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
                                      script::Session::format_time(machine().now()), fps_);
@@ -559,7 +671,7 @@ void App::draw() {
     draw_travel_strip(begin_layer("##strip", kStripRect), backdrop_, machine());
     ImGui::End();
     if (frames_ % 4 == 0) axes_ = read_axes(machine());
-    if (const auto model = axes_panel(axes_, machine().tool().model())) command(*model == periph::MachineTool::MotorModel::Ideal ? "motor ideal" : "motor physical");
+    if (const auto model = axes_panel(axes_, machine().tool().model())) done(session_.set_motor(*model));
     // Four times a second: a clock that changes every frame would redraw its panel every frame.
     if (frames_ % 15 == 0)
         ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",

@@ -12,6 +12,18 @@ void ControlsState::add_log(std::string line) {
     while (log.size() > 200) log.pop_front();
 }
 
+std::map<std::string, ButtonRect, std::less<>>& drawn_buttons() {
+    static std::map<std::string, ButtonRect, std::less<>> rects;
+    return rects;
+}
+
+bool named_button(const char* name, const char* label, float width) {
+    const bool pressed = ImGui::Button(label, {width, 0});
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    drawn_buttons()[name] = {a.x, a.y, b.x, b.y};
+    return pressed;
+}
+
 std::vector<Action> controls_panel(ControlsState& s) {
     std::vector<Action> out;
     using K = Action::Kind;
@@ -19,7 +31,7 @@ std::vector<Action> controls_panel(ControlsState& s) {
     ImGui::SetNextWindowPos({r.x, r.y});
     ImGui::SetNextWindowSize({r.w, r.h});
     ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
-    if (ImGui::Button(s.running ? "Pause" : "Run ", {60, 0})) out.push_back({K::RunPause, {}});
+    if (named_button("controls.run", s.running ? "Pause###run" : "Run###run", 60)) out.push_back({K::RunPause, {}});
     ImGui::SameLine();
     if (ImGui::Button("Reset")) out.push_back({K::Reset, {}});
     ImGui::SameLine();

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <deque>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,5 +39,14 @@ struct ControlsState {
 };
 
 std::vector<Action> controls_panel(ControlsState& s);
+
+// Where each named button was last drawn (window pixels): the test hooks click it there with
+// synthesized mouse events, as a user's click arrives.
+struct ButtonRect {
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+std::map<std::string, ButtonRect, std::less<>>& drawn_buttons();
+// ImGui::Button that remembers where it was drawn under `name`.
+bool named_button(const char* name, const char* label, float width = 0);
 
 }  // namespace alp85::gui

@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "emu/gui/controls.h"
 #include "emu/gui/layout.h"
 
 namespace alp85::gui {
@@ -58,11 +59,24 @@ void toggle_breakpoint(DebugPanes& p, script::DebugShell& shell, int row) {
     // A line with a breakpoint: delete it; otherwise set one (a line without code binds to the next).
     for (const auto& b : d.breakpoints()) {
         if (b.line && b.line->file == l->file && b.line->line == l->line) {
-            run(p, shell, fmt::format("delete {}", b.number));
+            d.remove(b.number);
+            p.add_log(fmt::format("Deleted breakpoint {}", b.number));
+            p.last_t = ~0ull;
             return;
         }
     }
-    run(p, shell, fmt::format("break {}:{}", std::filesystem::path(l->file).filename().string(), l->line));
+    const auto loc = d.locate_line(l->file, l->line);
+    if (!loc.error.empty()) {
+        p.add_log(loc.error);
+        return;
+    }
+    for (const std::uint16_t a : loc.addresses) {
+        const auto added = d.add_breakpoint_at(a);
+        const int line = loc.bound ? loc.bound->line : l->line;
+        p.add_log(fmt::format("Breakpoint {} at {:04X}H: file {}, line {}.", added.number, a,
+                              std::filesystem::path(l->file).filename().string(), line));
+    }
+    p.last_t = ~0ull;
 }
 
 void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
@@ -177,20 +191,21 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     // ---- stepping, forward and back ----
     begin_pane("Run", kStepButtonsRect);
     const ImVec2 b{100, 0};
-    if (ImGui::Button(running ? "Pause" : "Continue", b)) p.run_requested = !running;
+    using R = DebugPanes::Request;
+    if (named_button("debug.continue", running ? "Pause###cont" : "Continue###cont", b.x)) p.request = running ? R::Pause : R::Continue;
     ImGui::SameLine();
-    if (ImGui::Button("Step", b)) run(p, shell, "step");
+    if (named_button("debug.step", "Step", b.x)) p.request = R::Step;
     ImGui::SameLine();
-    if (ImGui::Button("Next", b)) run(p, shell, "next");
+    if (named_button("debug.next", "Next", b.x)) p.request = R::Next;
     ImGui::SameLine();
-    if (ImGui::Button("Finish", b)) run(p, shell, "finish");
-    if (ImGui::Button("Rev continue", b)) run(p, shell, "reverse-continue");
+    if (named_button("debug.finish", "Finish", b.x)) p.request = R::Finish;
+    if (named_button("debug.reverse-continue", "Rev continue", b.x)) p.request = R::ReverseContinue;
     ImGui::SameLine();
-    if (ImGui::Button("Rev step", b)) run(p, shell, "reverse-step");
+    if (named_button("debug.reverse-step", "Rev step", b.x)) p.request = R::ReverseStep;
     ImGui::SameLine();
-    if (ImGui::Button("Rev next", b)) run(p, shell, "reverse-next");
+    if (named_button("debug.reverse-next", "Rev next", b.x)) p.request = R::ReverseNext;
     ImGui::SameLine();
-    if (ImGui::Button("Rev finish", b)) run(p, shell, "reverse-finish");
+    if (named_button("debug.reverse-finish", "Rev finish", b.x)) p.request = R::ReverseFinish;
     ImGui::End();
 
     // ---- the command line ----

@@ -26,7 +26,11 @@ struct DebugPanes {
     std::string new_watch;
     std::string memory = "1B00H";
     std::string registers, chips;  // texts, refreshed when the machine moved
-    bool run_requested = false;    // Continue: the app runs the machine paced until a stop
+    // A run button pressed this frame: the app carries it out on the Debugger.
+    enum class Request : std::uint8_t {
+        None, Continue, Pause, Step, Next, Finish, ReverseContinue, ReverseStep, ReverseNext, ReverseFinish,
+    };
+    Request request = Request::None;
 
     // The source line shown in row i, or nullopt.
     std::optional<SourceLine> line_in_row(int row) const;

@@ -2,17 +2,16 @@
 
 #include <algorithm>
 
+#include "emu/board/key_press.h"
+
 namespace alp85::gui {
 namespace {
 
 bool same(const PadKey& a, const PadKey& b) { return a.pad == b.pad && (a.pad != Pad::Matrix || a.key == b.key); }
 
 void apply(const PadKey& k, bool down, std::uint64_t at, Machine& m) {
-    switch (k.pad) {
-        case Pad::Matrix: m.key_at(k.key, down, at); break;
-        case Pad::Reset: m.reset_key_at(down, at); break;
-        case Pad::Vect: m.vect_intr_at(down, at); break;
-    }
+    const Button b = k.pad == Pad::Matrix ? Button::Matrix : k.pad == Pad::Reset ? Button::Reset : Button::Vect;
+    schedule_key(m, b, k.key, down, at);
 }
 
 }  // namespace

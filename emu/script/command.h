@@ -34,6 +34,11 @@ struct KeyRef {
     std::string name;
 };
 
+// The board's button a key stands for (emu/board/key_press.h schedules it).
+inline Button button_of(const KeyRef& k) {
+    return k.kind == KeyRef::Kind::Matrix ? Button::Matrix : k.kind == KeyRef::Kind::Reset ? Button::Reset : Button::Vect;
+}
+
 enum class Reg : std::uint8_t { A, B, C, D, E, H, L, F, BC, DE, HL, SP, PC, PSW };
 enum class Compare : std::uint8_t { Lt, Le, Eq, Ge, Gt };
 

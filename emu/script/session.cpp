@@ -552,6 +552,67 @@ Session::Outcome Session::tool_command(const Command& c) {
     }
 }
 
+namespace {
+Command typed(Op op, std::string text = {}) {
+    Command c;
+    c.op = op;
+    c.where = {"(front end)", 0, 0};
+    c.text = std::move(text);
+    c.line = c.text;
+    return c;
+}
+}  // namespace
+
+Session::Outcome Session::boot(const Boot& b) {
+    if (b.motor)
+        if (Outcome o = set_motor(*b.motor); o.status != Status::Ok) return o;
+    if (b.monitor)
+        if (Outcome o = load_monitor(); o.status != Status::Ok) return o;
+    for (const std::string& f : b.firmware)
+        if (Outcome o = load_firmware(f); o.status != Status::Ok) return o;
+    for (const Boot::Image& i : b.images)
+        if (Outcome o = load_image(i.path, i.address); o.status != Status::Ok) return o;
+    return b.reset ? reset() : Outcome{};
+}
+
+Session::Outcome Session::load_monitor() { return execute(typed(Op::Monitor)); }
+Session::Outcome Session::load_firmware(const std::string& name) { return execute(typed(Op::Firmware, name)); }
+
+Session::Outcome Session::load_image(const std::filesystem::path& path, std::optional<std::uint16_t> address) {
+    Command c = typed(Op::Load, path.string());
+    if (address) c.address = Value{{}, *address, 0, hex(*address, 4)};
+    return execute(c);
+}
+
+Session::Outcome Session::reset() { return execute(typed(Op::Reset)); }
+Session::Outcome Session::save(const std::filesystem::path& path) { return execute(typed(Op::Save, path.string())); }
+Session::Outcome Session::restore(const std::filesystem::path& path) { return execute(typed(Op::Restore, path.string())); }
+
+Session::Outcome Session::record(const std::filesystem::path& csv, std::uint64_t period) {
+    Command c = typed(Op::Record, csv.string());
+    c.period = period;
+    return execute(c);
+}
+Session::Outcome Session::record_stop() { return execute(typed(Op::RecordStop)); }
+
+Session::Outcome Session::plot_toolpath(const std::filesystem::path& out) {
+    Command c = typed(Op::Plot, out.string());
+    c.name = "TOOLPATH";
+    return execute(c);
+}
+
+Session::Outcome Session::set_motor(periph::MachineTool::MotorModel model) {
+    Command c = typed(Op::Motor);
+    c.real = model == periph::MachineTool::MotorModel::Ideal ? 0 : 1;
+    return execute(c);
+}
+
+void Session::key(Button button, periph::Key k, bool down) {
+    Machine& m = *machine_;
+    schedule_key(m, button, k, down, m.now());
+    if (button == Button::Reset && down) time_origin_ = m.now();
+}
+
 Session::Outcome Session::execute(const Command& c) {
     Outcome o = run_command(c);
     // The machine changed outside its run: reverse execution's history ends here.

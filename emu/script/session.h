@@ -47,6 +47,35 @@ public:
     // The debugging API over this session's machine: front ends listen to its events.
     debug::Debugger& debugger() { return debugger_; }
 
+    // ---- the typed API -------------------------------------------------------------------------
+    // What every front end calls to drive the board (alp85 run, debug, gui, dap); the command
+    // language's commands run through the same code. Paths are used as given (relative ones from
+    // the session's folder); nothing is parsed from text.
+    struct Boot {
+        bool monitor = true;                     // the monitor EPROM (options.monitor_rom)
+        std::vector<std::string> firmware;       // built-in names (firmware::find)
+        struct Image {
+            std::filesystem::path path;          // .asm, .hex or .bin
+            std::optional<std::uint16_t> address;  // where (a .bin needs one)
+        };
+        std::vector<Image> images;
+        std::optional<periph::MachineTool::MotorModel> motor;
+        bool reset = true;                       // RESET IN once everything is in place
+    };
+    Outcome boot(const Boot& b);
+    Outcome load_monitor();
+    Outcome load_firmware(const std::string& name);
+    Outcome load_image(const std::filesystem::path& path, std::optional<std::uint16_t> address = {});
+    Outcome reset();
+    Outcome save(const std::filesystem::path& path);
+    Outcome restore(const std::filesystem::path& path);
+    Outcome record(const std::filesystem::path& csv, std::uint64_t period);
+    Outcome record_stop();
+    Outcome plot_toolpath(const std::filesystem::path& out);
+    Outcome set_motor(periph::MachineTool::MotorModel model);
+    // A key pressed or released now (a user at the keypad), scheduled where every key is.
+    void key(Button button, periph::Key key, bool down);
+
     // Runs one command. Failed expectations and commands that cannot be carried out (a load that
     // falls off the board, a snapshot that is refused, a run-until that times out) give Failed.
     Outcome execute(const Command& command);

@@ -4,6 +4,7 @@
 
 #include "emu/dap/base64.h"
 #include "emu/dap/breakpoints.h"
+#include "emu/debug/debugger.h"
 #include "emu/dap/framing.h"
 
 namespace alp85::dap {
@@ -97,6 +98,13 @@ TEST(Base64, RefusesWhatIsNotBase64) {
     EXPECT_FALSE(base64_decode("Zm9"));     // not whole quads
     EXPECT_FALSE(base64_decode("Zm9*"));    // outside the alphabet
     EXPECT_FALSE(base64_decode("Zg==Zm8="));  // data after the padding
+}
+
+// DAP's hit conditions are the Debugger's (issue 22 moved them): the same forms, read the same way.
+std::optional<bool> hit_condition_met(const std::string& text, std::uint64_t hits) {
+    const auto h = debug::HitCondition::parse(text);
+    if (!h) return std::nullopt;
+    return h->met(hits);
 }
 
 TEST(HitCondition, DapForms) {
