@@ -19,7 +19,7 @@ MachineBenchRun run_once(MachineBenchTool tool) {
     m.reset();
     m.cpu().regs().pc = bench::kMachineBenchProgram_origin;
     // Run to the HLT (a little over 25 s).
-    const std::uint64_t limit = kMachineBenchSteps * kMachineBenchStepTStates + 3'072'000;
+    const std::uint64_t limit = kMachineBenchSteps * kMachineBenchStepTStates + board::kCpuHz;
     m.cpu().on_halt = [&] { m.cpu().request_stop(); };  // end the batch at the HLT itself
     const Stopwatch watch;
     m.run_until(limit, [&] { return m.cpu().halted(); });

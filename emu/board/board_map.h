@@ -134,7 +134,6 @@ inline constexpr std::array<ToolBit, 12> kToolWiring{{
 inline constexpr std::uint8_t kUndrivenPortAB = 0xFF;
 inline constexpr std::uint8_t kUndrivenPortC = 0x3F;
 
-constexpr const MemoryRegion& region(Memory id) { return kMemoryMap[static_cast<std::size_t>(id)]; }
 constexpr const IoRegion& io_region(Device d) {
     for (const auto& r : kIoMap)
         if (r.device == d) return r;

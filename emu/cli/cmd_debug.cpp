@@ -143,13 +143,13 @@ void add_debug_command(CLI::App& app, int& status) {
             std::filesystem::create_directories(args->out_dir, ec);
             shell.session().set_out_dir(std::filesystem::absolute(args->out_dir));
         }
-        shell.session().machine().tool().set_model(motor_model_of(args->motor));
         // The monitor first (the thesis firmware calls its routines), then the programs, then RESET.
-        std::vector<std::string> setup;
-        if (firmware::have_monitor()) setup.push_back("monitor");
+        script::Session::Boot boot;
+        boot.monitor = firmware::have_monitor();
+        boot.motor = motor_model_of(args->motor);
         for (const std::string& f : args->firmware) {
             if (firmware::find(f)) {
-                setup.push_back("firmware " + f);
+                boot.firmware.push_back(f);
                 continue;
             }
             if (!std::filesystem::is_regular_file(f)) {
@@ -158,16 +158,12 @@ void add_debug_command(CLI::App& app, int& status) {
                 status = kUsageError;
                 return;
             }
-            setup.push_back(fmt::format("load \"{}\"", std::filesystem::absolute(f).string()));
+            boot.images.push_back({std::filesystem::absolute(f), std::nullopt});
         }
-        setup.push_back("reset");
-        for (const std::string& line : setup) {
-            const std::string out = shell.execute(line);
-            if (shell.console().errors()) {
-                std::cerr << out;
-                status = kUsageError;
-                return;
-            }
+        if (const auto booted = shell.session().boot(boot); booted.status != script::Session::Status::Ok) {
+            std::cerr << "alp85 debug: " << booted.message << '\n';
+            status = kUsageError;
+            return;
         }
         shell.debugger().set_history(!args->no_history);
 

@@ -648,7 +648,8 @@ std::string Console::cmd_run(std::string_view a, int col) {
     while (i < a.size() && (std::isdigit(static_cast<unsigned char>(a[i])) || a[i] == '.')) ++i;
     const std::string unit = to_upper(a.substr(i));
     const double v = i ? std::strtod(std::string(a.substr(0, i)).c_str(), nullptr) : -1;
-    const double scale = unit == "T" ? 1 : unit == "US" ? 3.072 : unit == "MS" ? 3072 : unit == "S" ? 3'072'000 : -1;
+    constexpr double hz = board::kCpuHz;
+    const double scale = unit == "T" ? 1 : unit == "US" ? hz / 1e6 : unit == "MS" ? hz / 1e3 : unit == "S" ? hz : -1;
     if (v < 0 || scale < 0) return error(col, fmt::format("bad time '{}' (a number with a unit: t, us, ms or s)", a));
     const Stop s = d_.run_for(static_cast<std::uint64_t>(v * scale + 0.5));
     if (s.reason == StopReason::Deadline) return {};

@@ -94,7 +94,7 @@ private:
     bool done(const script::Session::Outcome& o);
     // Runs: Continue/Run begin one that stops at breakpoints (and, debugging, at HLT); each frame
     // resumes it within the frame's budget; Pause ends it. The same Debugger run as DAP's.
-    void begin_run();
+    void begin_run(bool stop_at_halt);
     void pause_run();
     void report(const debug::Stop& s);
     void debug_request(DebugPanes::Request r);
@@ -225,7 +225,7 @@ int App::start() {
         for (const auto& l : ui_.log) std::cerr << "  " << l << '\n';
         return 2;
     }
-    if (!o_.debug) begin_run();
+    if (!o_.debug) begin_run(false);
     return 0;
 }
 
@@ -364,7 +364,7 @@ void App::step_script(HostClock::time_point until) {
             script_active_ = false;
             pacer_.rebase(machine().now(), HostClock::now());
             after_commands();
-            if (!o_.debug) begin_run();
+            if (!o_.debug) begin_run(false);
             return;
         }
         const auto r = session_.execute(script_[script_pos_++]);
@@ -378,11 +378,11 @@ void App::step_script(HostClock::time_point until) {
     } while (HostClock::now() < until);
 }
 
-void App::begin_run() {
+void App::begin_run(bool stop_at_halt) {
     debug::Debugger& d = session_.debugger();
     // No limit of machine time; only the debugger's Continue ends at a HLT (a board left running
-    // still answers RESET and the keys).
-    if (const auto s = d.begin_continue(~std::uint64_t{0}, o_.debug)) {
+    // by Run still answers RESET and the keys).
+    if (const auto s = d.begin_continue(~std::uint64_t{0}, stop_at_halt)) {
         report(*s);
         return;
     }
@@ -450,7 +450,7 @@ void App::debug_request(DebugPanes::Request r) {
     };
     switch (r) {
         case R::None: return;
-        case R::Continue: begin_run(); return;
+        case R::Continue: begin_run(true); return;
         case R::Pause: pause_run(); return;
         case R::Step: forward(d.begin_step()); return;
         case R::Next: forward(d.begin_next()); return;
@@ -468,7 +468,7 @@ void App::act(const Action& a) {
     switch (a.kind) {
         case K::RunPause:
             if (session_.debugger().running()) pause_run();
-            else begin_run();
+            else begin_run(false);
             break;
         case K::Reset: done(session_.reset()); break;
         case K::Speed:
@@ -580,7 +580,7 @@ void App::drive_debug_hooks() {
         const std::string& line = o_.debug_commands[command_pos_++];
         // Hooks beside command lines: "click:NAME" clicks a named button (controls.run,
         // debug.continue, debug.step, ...), "frames:N" lets N frames pass, "status" prints whether
-        // the board runs and its time.
+        // the board runs and its time, "toolpath" how many points the drawn path has.
         if (line.starts_with("click:")) {
             const auto it = drawn_buttons().find(line.substr(6));
             if (it == drawn_buttons().end()) {
@@ -589,13 +589,18 @@ void App::drive_debug_hooks() {
                 return;
             }
             const Vec2 c{(it->second.x0 + it->second.x1) / 2, (it->second.y0 + it->second.y1) / 2};
-            if (session_.debugger().running()) pause_asked_ = HostClock::now();  // a click on Pause
+            if (session_.debugger().running() && (it->first == "debug.continue" || it->first == "controls.run"))
+                pause_asked_ = HostClock::now();  // a click on Pause: the stop says how long it took
             push_click(c, true);
             button_up_ = c;
             return;
         }
         if (line.starts_with("frames:")) {
             hook_wait_ = std::atol(line.c_str() + 7);
+            return;
+        }
+        if (line == "toolpath") {
+            std::cout << fmt::format("[gui] toolpath: {} points\n", path_.points().size()) << std::flush;
             return;
         }
         if (line == "status") {
@@ -613,7 +618,8 @@ void App::drive_debug_hooks() {
     }
 }
 
-void App::push_click(Vec2 at, bool down) {
+void App::push_click(Vec2 logical, bool down) {
+    const Vec2 at = logical_to_window(logical.x, logical.y);
     // Dear ImGui (1.86) reads the pointer's place from SDL's mouse state: the pointer goes there.
     SDL_WarpMouseInWindow(window_, static_cast<int>(at.x), static_cast<int>(at.y));
     SDL_Event e{};

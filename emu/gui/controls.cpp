@@ -56,13 +56,13 @@ std::vector<Action> controls_panel(ControlsState& s) {
     ImGui::SetNextItemWidth(260);
     ImGui::InputText("##file", &s.file);
     ImGui::SameLine();
-    if (ImGui::Button("Load .asm/.hex")) out.push_back({K::LoadFile, s.file});
+    if (named_button("controls.load", "Load .asm/.hex")) out.push_back({K::LoadFile, s.file});
     ImGui::SetNextItemWidth(260);
     ImGui::InputText("##snap", &s.snapshot);
     ImGui::SameLine();
-    if (ImGui::Button("Save snapshot")) out.push_back({K::SaveSnapshot, s.snapshot});
+    if (named_button("controls.save", "Save snapshot")) out.push_back({K::SaveSnapshot, s.snapshot});
     ImGui::SameLine();
-    if (ImGui::Button("Restore")) out.push_back({K::LoadSnapshot, s.snapshot});
+    if (named_button("controls.restore", "Restore")) out.push_back({K::LoadSnapshot, s.snapshot});
     ImGui::SetNextItemWidth(260);
     ImGui::InputText("##shot", &s.screenshot);
     ImGui::SameLine();
@@ -70,13 +70,13 @@ std::vector<Action> controls_panel(ControlsState& s) {
     ImGui::SetNextItemWidth(120);
     ImGui::InputText("##rec", &s.record);
     ImGui::SameLine();
-    if (ImGui::Button(s.recording ? "Stop recording" : "Record CSV"))
+    if (named_button("controls.record", s.recording ? "Stop recording###rec" : "Record CSV###rec"))
         out.push_back({s.recording ? K::RecordStop : K::RecordStart, s.record});
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110);
     ImGui::InputText("##plot", &s.plot);
     ImGui::SameLine();
-    if (ImGui::Button("Plot")) out.push_back({K::Plot, s.plot});
+    if (named_button("controls.plot", "Plot")) out.push_back({K::Plot, s.plot});
     ImGui::Separator();
     ImGui::BeginChild("log", {0, 0}, false);
     for (const std::string& line : s.log) ImGui::TextUnformatted(line.c_str());

@@ -11,13 +11,15 @@
 #include <chrono>
 #include <cstdint>
 
+#include "emu/board/board_map.h"
+
 namespace alp85::gui {
 
 using HostClock = std::chrono::steady_clock;
 
 class Pacer {
 public:
-    static constexpr double kClockHz = 3.072e6;
+    static constexpr double kClockHz = board::kCpuHz;
     static constexpr double kMaxLag = 0.25;  // host seconds of simulated time
 
     void set_speed(double speed, std::uint64_t machine_now, HostClock::time_point host);

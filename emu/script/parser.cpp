@@ -5,7 +5,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -15,6 +18,16 @@
 
 namespace alp85::script {
 namespace {
+
+bool read_text_file(const std::filesystem::path& path, std::string& out) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) return false;
+    out = ss.str();
+    return true;
+}
 
 struct Token {
     std::string text;
@@ -658,8 +671,27 @@ std::optional<Command> parse_line(std::string_view line, const std::string& file
     return LineParser(line, file, line_no, errors).parse();
 }
 
-std::vector<Command> parse_script(std::string_view text, const std::string& file, std::vector<ParseError>& errors) {
-    std::vector<Command> out;
+namespace {
+
+constexpr int kMaxIncludeDepth = 16;
+
+// `include FILE` (FILE quoted when it has blanks): the name, and the column where it starts; nullopt
+// when the line is no include.
+std::optional<std::pair<std::string, int>> include_of(std::string_view line) {
+    int col = 1;
+    std::string_view s = trim_blanks(line, &col);
+    if (s.size() < 7 || to_upper(s.substr(0, 7)) != "INCLUDE" || (s.size() > 7 && !std::isspace(static_cast<unsigned char>(s[7]))))
+        return std::nullopt;
+    int at = col + 7;
+    std::string_view rest = trim_blanks(s.substr(7), &at);
+    if (const auto hash = rest.find(" #"); hash != std::string_view::npos && (rest.empty() || rest.front() != '"'))
+        rest = trim_blanks(rest.substr(0, hash));
+    if (rest.size() >= 2 && rest.front() == '"' && rest.back() == '"') rest = rest.substr(1, rest.size() - 2), ++at;
+    return std::pair{std::string(rest), at};
+}
+
+void parse_into(std::string_view text, const std::string& file, std::vector<ParseError>& errors,
+                std::vector<Command>& out, std::vector<std::string>& chain) {
     int n = 0;
     std::size_t start = 0;
     while (start <= text.size()) {
@@ -668,10 +700,52 @@ std::vector<Command> parse_script(std::string_view text, const std::string& file
         std::string_view line = text.substr(start, end - start);
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
         ++n;
-        if (auto c = parse_line(line, file, n, errors)) out.push_back(std::move(*c));
+        if (const auto inc = include_of(line)) {
+            // Relative to the including file's folder; a cycle or a missing file is the include
+            // line's error, and an error inside says which lines included it.
+            auto fail = [&](std::string why, int col) {
+                errors.push_back({{file, n, col}, std::move(why), std::string(line)});
+            };
+            const std::size_t first_error = errors.size();
+            if (inc->first.empty()) {
+                fail("expected: include FILE", inc->second);
+            } else {
+                std::filesystem::path path = inc->first;
+                if (path.is_relative()) path = std::filesystem::path(file).parent_path() / path;
+                std::error_code ec;
+                const std::string key = std::filesystem::weakly_canonical(path, ec).string();
+                std::string body;
+                if (std::find(chain.begin(), chain.end(), key) != chain.end()) {
+                    fail(fmt::format("'{}' includes itself (through {} file{})", inc->first, chain.size(),
+                                     chain.size() == 1 ? "" : "s"),
+                         inc->second);
+                } else if (chain.size() >= kMaxIncludeDepth) {
+                    fail(fmt::format("includes nested deeper than {}", kMaxIncludeDepth), inc->second);
+                } else if (std::filesystem::is_directory(path, ec) || !read_text_file(path, body)) {
+                    fail(fmt::format("cannot read '{}'", path.string()), inc->second);
+                } else {
+                    chain.push_back(key);
+                    parse_into(body, path.string(), errors, out, chain);
+                    chain.pop_back();
+                    for (std::size_t i = first_error; i < errors.size(); ++i)
+                        errors[i].message += fmt::format(" (included from {}:{})", file, n);
+                }
+            }
+        } else if (auto c = parse_line(line, file, n, errors)) {
+            out.push_back(std::move(*c));
+        }
         if (end == text.size()) break;
         start = end + 1;
     }
+}
+
+}  // namespace
+
+std::vector<Command> parse_script(std::string_view text, const std::string& file, std::vector<ParseError>& errors) {
+    std::vector<Command> out;
+    std::error_code ec;
+    std::vector<std::string> chain{std::filesystem::weakly_canonical(file, ec).string()};
+    parse_into(text, file, errors, out, chain);
     return out;
 }
 

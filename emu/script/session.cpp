@@ -88,6 +88,7 @@ std::optional<std::int64_t> Session::resolve(const Value& v, std::string& error)
 }
 
 Session::Outcome Session::fail(const Command& c, std::string what) const {
+    if (c.where.line == 0) return {Status::Failed, std::move(what)};  // a front end's typed call: no script line
     return {Status::Failed, fmt::format("{}:{}: {}\n  {}\n  {}", c.where.file, c.where.line, rtrim(c.line), what,
                                         where_now())};
 }

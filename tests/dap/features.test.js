@@ -173,10 +173,42 @@ test('a program that runs into unprogrammed memory stops with an exception', asy
     const stop = await stopAfter(dc, dc.configurationDoneRequest());
     assert.equal(stop.reason, 'exception');
     assert.match(stop.text, /0F00H/);
+    // Stopped before the fetch at 0F00H, naming the jump that left the program (0802H).
+    assert.equal((await top(dc)).instructionPointerReference, '0x0F00');
+    assert.match(stop.text, /after 0802H \(JMP 0F00H\)/);
     await finished(dc);
   } finally {
     dc._adapterProcess.kill();
     fs.rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+// One expression language (issue 22): a convenience variable set at the debug console is read by a
+// breakpoint's condition each time it is checked: with $N = 9 `$N < 5` is false at every OUT and the
+// run goes on to Bitti's HLT; with $N = 3, reverseContinue stops at the last OUT.
+test('a breakpoint condition reads a convenience variable of the console', async () => {
+  const dc = await started({ program: THESIS, defines: { FIXED: 1 }, motor: 'ideal', realTime: false, keys: KEYS, stopOnEntry: true });
+  try {
+    await stopAfter(dc, dc.configurationDoneRequest());
+    let r = await dc.evaluateRequest({ expression: 'set $N = 9', context: 'repl' });
+    assert.ok(r.success);
+    r = await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'OUT', condition: '$N < 5' }] });
+    assert.equal(r.body.breakpoints[0].verified, true, r.body.breakpoints[0].message);
+    r = await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'OUT', condition: '$NOSUCH < 5' }] });
+    assert.equal(r.body.breakpoints[0].verified, false);
+    await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'OUT', condition: '$N < 5' }] });
+    // $N = 9: the motion runs past every OUT to Bitti, where the firmware halts: reported as such.
+    let stop = await stopAfter(dc, dc.continueRequest({ threadId: 1 }));
+    assert.equal(stop.reason, 'halted');
+    assert.match(stop.text, /HLT at [0-9A-F]{4}H/);
+    // $N = 3: going back, the last OUT is a stop.
+    await dc.evaluateRequest({ expression: 'set $N = 3', context: 'repl' });
+    stop = await stopAfter(dc, dc.reverseContinueRequest({ threadId: 1 }));
+    assert.equal(stop.reason, 'breakpoint');
+    assert.equal((await top(dc)).line, L.out);
+    await finished(dc);
+  } finally {
+    dc._adapterProcess.kill();
   }
 });
 

@@ -14,7 +14,7 @@ set(allowed_emu/pisa     "emu/pisa/;emu/util/;emu/plot/;peripherals/;asm/pisa_is
 set(allowed_emu/debug    "emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
 set(allowed_emu/script   "emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
 set(allowed_emu/cpm      "emu/cpm/;emu/program/;emu/core/;emu/util/;asm/")
-set(allowed_emu/bench    "emu/bench/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
+set(allowed_emu/bench    "emu/bench/;emu/dap/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
 set(allowed_emu/gui      "emu/gui/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
 set(allowed_emu/dap      "emu/dap/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
 set(layers asm emu/util emu/core peripherals emu/board emu/program emu/plot emu/gcode emu/pisa emu/debug emu/script emu/cpm emu/bench emu/gui emu/dap)

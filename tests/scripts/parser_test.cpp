@@ -2,6 +2,9 @@
 // their columns (docs/scripting.md).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "emu/script/parser.h"
 #include "tests/scripts/parse_helpers.h"
 
@@ -132,6 +135,51 @@ TEST(ScriptParser, ErrorsPointAtTheirColumn) {
     EXPECT_EQ(e.where.col, 7);
     EXPECT_EQ(e.message, "unexpected 'now'");
     EXPECT_EQ(e.format(), "t.alp:7:7: error: unexpected 'now'\n reset now\n       ^\n");
+}
+
+// include FILE: relative to the including file, its lines with their own places, errors that say
+// where they were included from, and a cycle refused at the include.
+TEST(ScriptInclude, LinesComeFromTheIncludedFileWithTheirOwnPlaces) {
+    const auto dir = std::filesystem::temp_directory_path() / "alp85 include test";
+    std::filesystem::create_directories(dir / "sub");
+    std::ofstream(dir / "sub" / "start.alp") << "# shared\nreset\nrun 1ms\n";
+    std::ofstream(dir / "sub" / "bad.alp") << "reset\nrun 1xs\n";
+    std::ofstream(dir / "sub" / "a.alp") << "include b.alp\n";
+    std::ofstream(dir / "sub" / "b.alp") << "include \"a.alp\"\n";
+    std::vector<ParseError> errors;
+    const std::string top = (dir / "top.alp").string();
+    auto cmds = parse_script("monitor\ninclude sub/start.alp\nrun 2ms\n", top, errors);
+    ASSERT_TRUE(errors.empty()) << errors.front().format();
+    ASSERT_EQ(cmds.size(), 4u);
+    EXPECT_EQ(cmds[1].op, Op::Reset);
+    EXPECT_EQ(cmds[1].where.file, (dir / "sub" / "start.alp").string());
+    EXPECT_EQ(cmds[1].where.line, 2);
+    EXPECT_EQ(cmds[2].time, 3072u);
+    EXPECT_EQ(cmds[3].where.file, top);
+    EXPECT_EQ(cmds[3].where.line, 3);
+
+    errors.clear();
+    cmds = parse_script("reset\n  include sub/bad.alp\n", top, errors);
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0].where.file, (dir / "sub" / "bad.alp").string());
+    EXPECT_EQ(errors[0].where.line, 2);
+    EXPECT_NE(errors[0].message.find("(included from " + top + ":2)"), std::string::npos) << errors[0].message;
+
+    errors.clear();
+    parse_script("include sub/a.alp\n", top, errors);
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0].where.file, (dir / "sub" / "b.alp").string());
+    EXPECT_EQ(errors[0].where.line, 1);
+    EXPECT_EQ(errors[0].where.col, 10);  // the file's name, inside the quotes
+    EXPECT_NE(errors[0].message.find("includes itself"), std::string::npos) << errors[0].message;
+
+    errors.clear();
+    parse_script("include sub/none.alp\ninclude\n", top, errors);
+    ASSERT_EQ(errors.size(), 2u);
+    EXPECT_EQ(errors[0].where.col, 9);
+    EXPECT_NE(errors[0].message.find("cannot read"), std::string::npos);
+    EXPECT_EQ(errors[1].message, "expected: include FILE");
+    std::filesystem::remove_all(dir);
 }
 
 TEST(ScriptParser, AWholeScriptReportsEveryError) {

@@ -35,9 +35,8 @@ def prologue(build, motor, z, x1, y1, x2, y2, f, title):
     L = [f'# {title}', f'# Build {build}, {motor} motors. Entry: docs/thesis.md (four digits in steps of 0.05 mm,',
          '# EXEC accepts); expected path: the rule of docs/thesis.md "How the line is drawn"',
          '# (firmware/thesis/check/pathrule.py), written out by firmware/thesis/check/mkscripts.py.',
-         'monitor', f'firmware {build}', f'motor {motor}', 'reset',
-         'wait display "-ALP 85-" timeout 1s', 'type R 7 0 8 0 0 EXEC',
-         'wait display "?.=----" timeout 200ms', f'type {digits(z)}',
+         'monitor', f'firmware {build}', f'motor {motor}', 'include ../include/thesis_start.alp',
+         f'type {digits(z)}',
          f'# Z = {z}: {z} Z steps at 4 ms, then the X1 prompt',
          'wait display "H1=----" timeout 1s', f'expect axis Z steps {z}', f'expect word ZAC {z}']
     for name, v, nxt in (('H1', x1, 'y1'), ('y1', y1, 'H2'), ('H2', x2, 'y2'), ('y2', y2, 'H')):

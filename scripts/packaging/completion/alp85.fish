@@ -39,7 +39,7 @@ function __alp85_path
             set help ($prog $path --help 2>/dev/null)
         end
     end
-    printf '%s\n' $path
+    set -q path[1]; and printf '%s\n' $path  # nothing at all for the program alone (not one empty word)
 end
 function __alp85_help
     set -l prog (commandline -opc)[1]
