@@ -1,5 +1,5 @@
-// alp85 bench cpu [--cpu 8080|8085] [--tstates N]: the fixed CPU workload (emu/bench_cpu.asm),
-// emulated T-states per host second.
+// alp85 bench cpu [--cpu 8080|8085] [--tstates N]: the two fixed CPU workloads (emu/bench/bench_cpu.asm,
+// registers; emu/bench/bench_cpu_mem.asm, memory), emulated T-states per host second.
 // alp85 bench board [--tstates N]: the board with idle peripherals against the bare core.
 // alp85 bench machine: three axes stepping at 400 steps/s on the board, physical, ideal, no tool.
 // alp85 bench thesis: the thesis firmware's 100 mm diagonal at 1000 mm/min, physical and ideal.
@@ -27,18 +27,23 @@ struct BenchArgs {
 };
 
 int run_bench_cpu(const BenchArgs& args) {
-    CpuBench bench(variant_of(args.cpu));
-    const Stopwatch watch;
-    const std::uint64_t t = bench.run(args.tstates);
-    const double seconds = watch.wall_seconds(), cpu_seconds = watch.cpu_seconds();
-    std::printf("workload:     delay loop, multiply, BCD add, CRC-16 (emu/bench/bench_cpu.asm)\n");
-    std::printf("cpu:          i%s\n", args.cpu.c_str());
-    std::printf("instructions: %llu\n", static_cast<unsigned long long>(bench.cpu().instructions()));
-    std::printf("T-states:     %llu\n", static_cast<unsigned long long>(t));
-    std::printf("wall time:    %.3f s (process CPU time %.3f s)\n", seconds, cpu_seconds);
-    if (seconds > 0)
-        std::printf("T-states/s:   %.4g (%.0fx a 3.072 MHz 8085)\n", t / seconds, t / seconds / 3.072e6);
-    if (cpu_seconds > 0) std::printf("per CPU second: %.4g T-states\n", t / cpu_seconds);
+    std::printf("cpu:          i%s, flat 64 KiB RAM, counted-loop fast paths off (the interpreter alone)\n",
+                args.cpu.c_str());
+    for (const auto& [workload, name] :
+         {std::pair{CpuWorkload::Registers, "registers: delay loop, multiply, BCD add, CRC-16 (emu/bench/bench_cpu.asm)"},
+          std::pair{CpuWorkload::Memory, "memory: block copy, bubble sort, stack, table lookup (emu/bench/bench_cpu_mem.asm)"}}) {
+        CpuBench bench(variant_of(args.cpu), workload);
+        const Stopwatch watch;
+        const std::uint64_t t = bench.run(args.tstates);
+        const double seconds = watch.wall_seconds(), cpu_seconds = watch.cpu_seconds();
+        std::printf("workload:     %s\n", name);
+        std::printf("instructions: %llu\n", static_cast<unsigned long long>(bench.cpu().instructions()));
+        std::printf("T-states:     %llu\n", static_cast<unsigned long long>(t));
+        std::printf("wall time:    %.3f s (process CPU time %.3f s)\n", seconds, cpu_seconds);
+        if (seconds > 0)
+            std::printf("T-states/s:   %.4g (%.0fx a 3.072 MHz 8085)\n", t / seconds, t / seconds / 3.072e6);
+        if (cpu_seconds > 0) std::printf("per CPU second: %.4g T-states\n", t / cpu_seconds);
+    }
     return 0;
 }
 // Host CPU seconds taken by fn (the process's, so other load on the machine does not count).
@@ -182,9 +187,9 @@ void add_bench_command(CLI::App& app, int& status) {
     CLI::App* bench = app.add_subcommand("bench", "Benchmarks");
     bench->require_subcommand(1);
     bench->footer("Exit status: 0 success, 1 a benchmark's run went wrong, 2 a usage error.");
-    CLI::App* cpu = bench->add_subcommand("cpu", "Emulated T-states per second on a fixed CPU-bound workload");
+    CLI::App* cpu = bench->add_subcommand("cpu", "Emulated T-states per second on two fixed CPU-bound workloads (registers, memory)");
     add_cpu_option(cpu, args->cpu, "processor variant");
-    cpu->add_option("--tstates", args->tstates, "T-states to run")->check(CLI::Range(1ULL, 1ULL << 50))->capture_default_str();
+    cpu->add_option("--tstates", args->tstates, "T-states to run, per workload")->check(CLI::Range(1ULL, 1ULL << 50))->capture_default_str();
     cpu->callback([args, &status] { status = run_bench_cpu(*args); });
 
     CLI::App* board = bench->add_subcommand("board", "The board with idle peripherals against the bare core, same workload");
