@@ -76,26 +76,33 @@ int run_bench_board(std::uint64_t tstates) {
 
 int run_bench_machine() {
     std::printf("workload:     X, Y and Z together, 10 000 steps each at 400 steps/s = 25 s of machine time\n");
-    std::printf("              (emu/bench/bench_machine.asm on the board)\n");
-    double none_s = 0, ideal_s = 0;
-    for (const auto& [tool, name] : {std::pair{MachineBenchTool::None, "no tool"}, std::pair{MachineBenchTool::Ideal, "ideal"},
-                                     std::pair{MachineBenchTool::Physical, "physical"}}) {
-        const MachineBenchRun r = run_machine_bench(tool, 11);
-        const double machine_s = static_cast<double>(r.tstates) / 3.072e6;
-        std::printf("%-9s     %.3f s machine time in %.3f s CPU time: %.0fx real time", name, machine_s, r.host_seconds,
-                    machine_s / r.host_seconds);
-        if (tool != MachineBenchTool::None)
-            std::printf(" (ends at %lld/%lld/%lld steps, %lld/%lld/%lld lost)", static_cast<long long>(r.steps[0]),
-                        static_cast<long long>(r.steps[1]), static_cast<long long>(r.steps[2]),
-                        static_cast<long long>(r.lost[0]), static_cast<long long>(r.lost[1]),
-                        static_cast<long long>(r.lost[2]));
-        std::printf("\n");
-        if (tool == MachineBenchTool::None) none_s = r.host_seconds / machine_s;
-        if (tool == MachineBenchTool::Ideal) ideal_s = r.host_seconds / machine_s;
-        if (tool == MachineBenchTool::Physical)
-            std::printf("targets:      physical >= 100x real time (aim 500x); ideal costs %+.1f %% against no tool "
-                        "(target <= 5 %%)\n",
-                        100.0 * (ideal_s / none_s - 1.0));
+    std::printf("              (emu/bench/bench_machine.asm on the board; it waits in 16-bit delay loops)\n");
+    // As alp85 runs it (the delay loops' fast path on), then with every iteration interpreted: the
+    // ideal model's cost is compared with no tool there, where the CPU does the same work per pulse.
+    for (const bool fast : {true, false}) {
+        std::printf("%s\n", fast ? "delay loops' fast path on (as alp85 runs):" : "every delay-loop iteration interpreted:");
+        double none_s = 0, ideal_s = 0, physical_x = 0;
+        for (const auto& [tool, name] : {std::pair{MachineBenchTool::None, "no tool"}, std::pair{MachineBenchTool::Ideal, "ideal"},
+                                         std::pair{MachineBenchTool::Physical, "physical"}}) {
+            const MachineBenchRun r = run_machine_bench(tool, 11, fast);
+            const double machine_s = static_cast<double>(r.tstates) / 3.072e6;
+            std::printf("  %-9s   %.3f s machine time in %.4f s CPU time: %.0fx real time", name, machine_s, r.host_seconds,
+                        machine_s / r.host_seconds);
+            if (tool != MachineBenchTool::None)
+                std::printf(" (ends at %lld/%lld/%lld steps, %lld/%lld/%lld lost)", static_cast<long long>(r.steps[0]),
+                            static_cast<long long>(r.steps[1]), static_cast<long long>(r.steps[2]),
+                            static_cast<long long>(r.lost[0]), static_cast<long long>(r.lost[1]),
+                            static_cast<long long>(r.lost[2]));
+            std::printf("\n");
+            if (tool == MachineBenchTool::None) none_s = r.host_seconds;
+            if (tool == MachineBenchTool::Ideal) ideal_s = r.host_seconds;
+            if (tool == MachineBenchTool::Physical) physical_x = machine_s / r.host_seconds;
+        }
+        if (fast)
+            std::printf("  targets:   physical >= 1000x real time: %s; ideal costs %.0f ns per pulse edge of the workload\n",
+                        physical_x >= 1000 ? "met" : "NOT met", (ideal_s - none_s) * 1e9 / (2.0 * kMachineBenchSteps));
+        else
+            std::printf("  targets:   ideal costs %+.1f %% against no tool (target <= 5 %%)\n", 100.0 * (ideal_s / none_s - 1.0));
     }
     return 0;
 }
