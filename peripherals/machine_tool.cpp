@@ -75,23 +75,27 @@ void MachineTool::after_step(int a, unsigned flags, std::uint64_t t) {
         on_end_stop_(static_cast<Axis>(a), at > 0, t);
 }
 
-void MachineTool::integrate_to(int a, std::uint64_t t) {
-    AxisState& st = s_.axes[a];
-    const StepperMotor& motor = ax_[a].motor;
-    const std::uint32_t h = motor.params().step_tstates;
-    while (!st.motor.settled && st.grid_t + h <= t) {
-        const unsigned flags = motor.step(st.motor, h);
-        st.grid_t += h;
-        after_step(a, flags, st.grid_t);
-        if (motor.is_settled(st.motor)) st.motor.settled = true;
-    }
-}
-
+// The axes are independent, so they are integrated in turn, one grid step each: the three
+// dependency chains (each step needs the last one's angle and speed) then overlap in the host CPU.
+// Each axis goes through exactly the same steps as when integrated alone, one after the other.
 void MachineTool::advance(std::uint64_t now) {
     if (now <= s_.now) return;
-    if (s_.model == MotorModel::Physical)
-        for (int a = 0; a < kAxes; ++a)
-            if (!s_.axes[a].motor.settled) integrate_to(a, now);
+    if (s_.model == MotorModel::Physical) {
+        for (bool any = true; any;) {
+            any = false;
+            for (int a = 0; a < kAxes; ++a) {
+                AxisState& st = s_.axes[a];
+                const StepperMotor& motor = ax_[a].motor;
+                const std::uint32_t h = motor.params().step_tstates;
+                if (st.motor.settled || st.grid_t + h > now) continue;
+                const unsigned flags = motor.step(st.motor, h);
+                st.grid_t += h;
+                after_step(a, flags, st.grid_t);
+                if (motor.is_settled(st.motor)) st.motor.settled = true;
+                any = true;
+            }
+        }
+    }
     s_.now = now;
 }
 

@@ -158,7 +158,6 @@ private:
         std::int64_t lo_steps = 0, hi_steps = 0;  // the end stops in whole steps (ideal model)
     };
     static int idx(Axis a) { return static_cast<int>(a); }
-    void integrate_to(int a, std::uint64_t t);
     void after_step(int a, unsigned flags, std::uint64_t t);
     StepperMotor::State motor_view(int a) const;
     double position_mm(int a, const StepperMotor::State& m) const;

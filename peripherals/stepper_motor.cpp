@@ -86,6 +86,12 @@ void StepperMotor::configure(const Params& p, const Load& load) {
     a_off_ = std::exp(-h_ * r_off_ / p.inductance_h);
     m_on_ = (1.0 - a_on_) * p.inductance_h / (r_on_ * h_);
     m_off_ = (1.0 - a_off_) * p.inductance_h / (r_off_ * h_);
+    for (auto& d : drive_)
+        for (int j = 0; j < 4; ++j) {
+            d.a[j] = d.on[j] ? a_on_ : a_off_;
+            d.m[j] = d.on[j] ? m_on_ : m_off_;
+        }
+    teeth_ = p.rotor_teeth;
     stiffness_ = p.rotor_teeth * (p.holding_nm * i_on_ / p.rated_a - 4.0 * p.detent_nm);
 }
 
@@ -110,7 +116,7 @@ unsigned StepperMotor::step(State& s, std::uint32_t ht) const {
     }
     // Drift half a step: the rotor angle at the step's midpoint, where the torque is evaluated.
     const double th_mid = s.theta + 0.5 * h * s.omega;
-    const double x = p_.rotor_teeth * th_mid + std::numbers::pi / 4.0;
+    const double x = teeth_ * th_mid + std::numbers::pi / 4.0;
     double sx, cx;
     sin_cos(x, sx, cx);
     const double sin4x = 4.0 * sx * cx * (cx * cx - sx * sx);
@@ -126,7 +132,19 @@ unsigned StepperMotor::step(State& s, std::uint32_t ht) const {
     const double ea = -kt_ * w_mid * sx, eb = kt_ * w_mid * cx;
     const double e[4] = {ea, -ea, eb, -eb};
     const Drive& d = drive_[s.phases & 15];
-    const double a_on_off[2] = {a_off, a_on}, m_on_off[2] = {m_off, m_on};
+    // The grid step's decay and mean factors per half-winding come with the pattern (drive_);
+    // a split step computes them.
+    double a_split[4], m_split[4];
+    const double* aj = d.a;
+    const double* mj = d.m;
+    if (ht != p_.step_tstates) {
+        for (int j = 0; j < 4; ++j) {
+            a_split[j] = d.on[j] ? a_on : a_off;
+            m_split[j] = d.on[j] ? m_on : m_off;
+        }
+        aj = a_split;
+        mj = m_split;
+    }
     double mean[4];
     for (int j = 0; j < 4; ++j) {
         // i_inf = (Vs - Vce - e)/(r+R) on, (-Vd - e)/(r+R+Rf) off; the step's mean current is the
@@ -134,8 +152,8 @@ unsigned StepperMotor::step(State& s, std::uint32_t ht) const {
         // < 0) gives n <= 0, clamped to 0 like any reverse current (mean clamped too).
         const double inf = d.i0[j] - e[j] * d.g[j];
         const double di = s.i[j] - inf;
-        double n = inf + di * a_on_off[d.on[j]];
-        double m = inf + di * m_on_off[d.on[j]];
+        double n = inf + di * aj[j];
+        double m = inf + di * mj[j];
         n = n < 0.0 ? 0.0 : n;
         m = m < 0.0 ? 0.0 : m;
         mean[j] = m;

@@ -132,12 +132,15 @@ private:
     Params p_;
     Load load_;
     double step_angle_ = 0, vs_ = 0, r_on_ = 0, r_off_ = 0, kt_ = 0, j_ = 0, i_on_ = 0;
-    struct Drive {  // per drive pattern: each half-winding's steady current, conductance, on/off
-        double i0[4];
+    struct Drive {  // per drive pattern: each half-winding's steady current, conductance, on/off,
+        double i0[4];  // and the grid step's decay and mean factors (a_on_/a_off_, m_on_/m_off_)
         double g[4];
+        double a[4];
+        double m[4];
         std::uint8_t on[4];
     };
     Drive drive_[16]{};
+    double teeth_ = 0;  // rotor_teeth as a double
     double h_ = 0, a_on_ = 0, a_off_ = 0, m_on_ = 0, m_off_ = 0, stiffness_ = 0, inv_j_ = 0, g_on_ = 0, g_off_ = 0;
 };
 

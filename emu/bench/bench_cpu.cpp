@@ -3,11 +3,16 @@
 #include <algorithm>
 
 #include "cpu_bench_program_embed.h"
+#include "cpu_mem_bench_program_embed.h"
 
 namespace alp85 {
 
-CpuBench::CpuBench(Variant variant) : ram_(0x10000, 0), cpu_(bus_, variant) {
-    std::copy_n(bench::kCpuBenchProgram, bench::kCpuBenchProgram_size, ram_.begin() + bench::kCpuBenchProgram_origin);
+CpuBench::CpuBench(Variant variant, CpuWorkload workload) : ram_(0x10000, 0), cpu_(bus_, variant) {
+    if (workload == CpuWorkload::Registers)
+        std::copy_n(bench::kCpuBenchProgram, bench::kCpuBenchProgram_size, ram_.begin() + bench::kCpuBenchProgram_origin);
+    else
+        std::copy_n(bench::kCpuMemBenchProgram, bench::kCpuMemBenchProgram_size,
+                    ram_.begin() + bench::kCpuMemBenchProgram_origin);
     bus_.map_ram(0, 0x10000, ram_.data());
     cpu_.set_fast_loops(false);  // the interpreter alone: every DL iteration executed
 }

@@ -1,6 +1,8 @@
-// The CPU benchmark workload (emu/bench/bench_cpu.asm, assembled at build time): one fixed program on a
-// bare CPU with 64 KiB of RAM, run for a given number of T-states. Used by `alp85 bench cpu`
-// and by the Google Benchmark target in tests/bench/cpu.
+// The CPU benchmark workloads (assembled at build time), each one fixed program on a bare CPU with
+// a flat 64 KiB of RAM, run for a given number of T-states. Used by `alp85 bench cpu` and by the
+// Google Benchmark target in tests/bench/cpu.
+//   Registers  emu/bench/bench_cpu.asm: the firmware's delay loop, multiply, BCD add, CRC-16
+//   Memory     emu/bench/bench_cpu_mem.asm: block copy, bubble sort, stack traffic, table lookup
 #pragma once
 
 #include <cstdint>
@@ -11,9 +13,11 @@
 
 namespace alp85 {
 
+enum class CpuWorkload : std::uint8_t { Registers, Memory };
+
 class CpuBench {
 public:
-    explicit CpuBench(Variant variant);
+    explicit CpuBench(Variant variant, CpuWorkload workload = CpuWorkload::Registers);
     // Runs the workload from its start for `tstates` T-states (whole instructions); returns the
     // T-states actually run.
     std::uint64_t run(std::uint64_t tstates);

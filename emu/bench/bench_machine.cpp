@@ -8,7 +8,7 @@
 
 namespace alp85 {
 namespace {
-MachineBenchRun run_once(MachineBenchTool tool) {
+MachineBenchRun run_once(MachineBenchTool tool, bool fast_loops) {
     Machine::Options o;
     o.machine_tool = tool != MachineBenchTool::None;
     o.motor = tool == MachineBenchTool::Physical ? periph::MachineTool::MotorModel::Physical
@@ -18,6 +18,7 @@ MachineBenchRun run_once(MachineBenchTool tool) {
            std::span(bench::kMachineBenchProgram, bench::kMachineBenchProgram_size));
     m.reset();
     m.cpu().regs().pc = bench::kMachineBenchProgram_origin;
+    m.cpu().set_fast_loops(fast_loops);
     // Run to the HLT (a little over 25 s).
     const std::uint64_t limit = kMachineBenchSteps * kMachineBenchStepTStates + board::kCpuHz;
     m.cpu().on_halt = [&] { m.cpu().request_stop(); };  // end the batch at the HLT itself
@@ -37,10 +38,10 @@ MachineBenchRun run_once(MachineBenchTool tool) {
 }
 }  // namespace
 
-MachineBenchRun run_machine_bench(MachineBenchTool tool, int repeats) {
-    MachineBenchRun best = run_once(tool);
+MachineBenchRun run_machine_bench(MachineBenchTool tool, int repeats, bool fast_loops) {
+    MachineBenchRun best = run_once(tool, fast_loops);
     for (int i = 1; i < repeats; ++i) {
-        const MachineBenchRun r = run_once(tool);
+        const MachineBenchRun r = run_once(tool, fast_loops);
         if (r.host_seconds < best.host_seconds) best = r;
     }
     return best;

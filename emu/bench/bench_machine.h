@@ -19,8 +19,9 @@ struct MachineBenchRun {
 enum class MachineBenchTool : std::uint8_t { None, Ideal, Physical };
 
 // Boots a fresh board with the workload and runs it to its HLT; the fastest of `repeats` runs
-// (host timing is noisy; the machine's own figures are identical every time).
-MachineBenchRun run_machine_bench(MachineBenchTool tool, int repeats = 5);
+// (host timing is noisy; the machine's own figures are identical every time). fast_loops false:
+// every iteration of the workload's 16-bit delay loops interpreted (I8085::set_fast_loops).
+MachineBenchRun run_machine_bench(MachineBenchTool tool, int repeats = 5, bool fast_loops = true);
 
 inline constexpr std::uint64_t kMachineBenchSteps = 10'000;
 inline constexpr std::uint64_t kMachineBenchStepTStates = 7'680;  // 2.5 ms at 3.072 MHz

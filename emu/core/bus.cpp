@@ -32,6 +32,7 @@ void Bus::map_ram(std::uint32_t base, std::uint32_t size, std::uint8_t* storage)
         device_[page] = nullptr;
         kind_[page] = PageKind::Ram;
     }
+    mapped();
 }
 
 void Bus::map_rom(std::uint32_t base, std::uint32_t size, const std::uint8_t* storage) {
@@ -43,6 +44,7 @@ void Bus::map_rom(std::uint32_t base, std::uint32_t size, const std::uint8_t* st
         device_[page] = nullptr;
         kind_[page] = PageKind::Rom;
     }
+    mapped();
 }
 
 void Bus::map_device(std::uint32_t base, std::uint32_t size, MemoryDevice& device) {
@@ -54,6 +56,7 @@ void Bus::map_device(std::uint32_t base, std::uint32_t size, MemoryDevice& devic
         device_[page] = &device;
         kind_[page] = PageKind::Device;
     }
+    mapped();
 }
 
 void Bus::unmap(std::uint32_t base, std::uint32_t size) {
@@ -65,6 +68,17 @@ void Bus::unmap(std::uint32_t base, std::uint32_t size) {
         device_[page] = nullptr;
         kind_[page] = PageKind::Unmapped;
     }
+    mapped();
+}
+
+void Bus::mapped() {
+    ++map_changes_;
+    flat_ = nullptr;
+    std::uint8_t* const base = write_[0];
+    if (!base) return;
+    for (unsigned page = 0; page < kPages; ++page)
+        if (kind_[page] != PageKind::Ram || write_[page] != base + page * kPageSize) return;
+    flat_ = base;
 }
 
 void Bus::map_io(std::uint8_t first, std::uint8_t last, IoDevice& device) {

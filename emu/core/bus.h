@@ -96,12 +96,19 @@ public:
     std::uint64_t rom_writes_ignored() const { return rom_writes_; }
     std::uint64_t unmapped_writes_ignored() const { return unmapped_writes_; }
 
+    // All 64 KiB plain RAM in one contiguous block (then its start), or null. The CPU core then
+    // runs without the page table. map_changes() counts mapping calls, so the core can notice a
+    // handler that remaps memory.
+    std::uint8_t* flat_ram() const { return flat_; }
+    std::uint64_t map_changes() const { return map_changes_; }
+
     // The page tables, for the CPU core.
     const std::uint8_t* const* read_pages() const { return read_.data(); }
     std::uint8_t* const* write_pages() const { return write_.data(); }
 
 private:
     void check_range(std::uint32_t base, std::uint32_t size) const;
+    void mapped();  // after every mapping change: flat_ and map_changes_
 
     std::array<const std::uint8_t*, kPages> read_{};
     std::array<std::uint8_t*, kPages> write_{};
@@ -110,6 +117,8 @@ private:
     std::array<IoDevice*, 256> io_{};
     std::uint64_t rom_writes_ = 0;
     std::uint64_t unmapped_writes_ = 0;
+    std::uint8_t* flat_ = nullptr;
+    std::uint64_t map_changes_ = 0;
 };
 
 }  // namespace alp85

@@ -51,6 +51,18 @@ constexpr std::array<std::uint8_t, 256> make_szp() {
 }
 template <Variant V>
 constexpr auto kBase = make_base_tstates<V>();
+// A batch runs at most kBatchTStates, so it holds fewer than 2^kCountBits instructions (each takes
+// at least 4 T-states): T-states and instructions share one counter (I8085::execute).
+constexpr unsigned kCountBits = 24;
+constexpr std::uint64_t kBatchTStates = std::uint64_t{1} << 25;
+template <Variant V>
+constexpr std::array<std::int64_t, 256> make_cost() {
+    std::array<std::int64_t, 256> c{};
+    for (unsigned i = 0; i < 256; ++i) c[i] = (std::int64_t{kBase<V>[i]} << kCountBits) + 1;
+    return c;
+}
+template <Variant V>
+constexpr auto kCost = make_cost<V>();
 template <Variant V>
 constexpr auto kTaken = make_taken_extra<V>();
 template <Variant V>
@@ -65,6 +77,14 @@ constexpr bool dcr_r_timed_alike() {
     return true;
 }
 static_assert(dcr_r_timed_alike<Variant::I8085>() && dcr_r_timed_alike<Variant::I8080>(), "DCR r timing");
+// The 16-bit fast path (countdown16) times DCX rp, MOV A,r and ORA r like DCX B, MOV A,B, ORA B.
+template <Variant V>
+constexpr bool delay16_timed_alike() {
+    for (unsigned k = 0; k < 6; ++k)
+        if (kBase<V>[0x78 + k] != kBase<V>[0x78] || kBase<V>[0xB0 + k] != kBase<V>[0xB0]) return false;
+    return kBase<V>[0x1B] == kBase<V>[0x0B] && kBase<V>[0x2B] == kBase<V>[0x0B];
+}
+static_assert(delay16_timed_alike<Variant::I8085>() && delay16_timed_alike<Variant::I8080>(), "16-bit delay timing");
 
 // ---- flag arithmetic ---------------------------------------------------------------------------
 // V (8085, bit 1) = carry into bit 7 XOR carry out of bit 7, i.e. two's-complement overflow.
@@ -193,8 +213,18 @@ void I8085::slow_write(std::uint16_t addr, std::uint8_t value, std::uint64_t t) 
     bus_.write(addr, value, t);
 }
 
-std::uint8_t I8085::io_in(std::uint8_t port, std::uint64_t t) { return bus_.in(port, t); }
-void I8085::io_out(std::uint8_t port, std::uint8_t value, std::uint64_t t) { bus_.out(port, value, t); }
+// A handler that changes the memory map ends the batch: the next one picks the flat or paged loop.
+std::uint8_t I8085::io_in(std::uint8_t port, std::uint64_t t) {
+    const std::uint64_t maps = bus_.map_changes();
+    const std::uint8_t v = bus_.in(port, t);
+    if (bus_.map_changes() != maps) request_stop_batch();
+    return v;
+}
+void I8085::io_out(std::uint8_t port, std::uint8_t value, std::uint64_t t) {
+    const std::uint64_t maps = bus_.map_changes();
+    bus_.out(port, value, t);
+    if (bus_.map_changes() != maps) request_stop_batch();
+}
 
 void I8085::halt_entered() {
     halted_ = true;
@@ -207,15 +237,47 @@ void I8085::halt_entered() {
 // and unmapped-write pages. The T-state counter is advanced by the opcode's base T-states before
 // its body runs (plus the extra of a taken condition), so a handler called from the body sees
 // t - 3 = the first T-state of the instruction's last machine cycle (see tstates()).
-template <Variant V, bool Debug>
+template <Variant V, bool Debug, bool Flat>
 void I8085::execute() {
     constexpr bool k85 = V == Variant::I8085;
     const std::uint8_t* const* const rp = bus_.read_pages();
     std::uint8_t* const* const wp = bus_.write_pages();
+    std::uint8_t* const mem = bus_.flat_ram();  // Flat: all 64 KiB plain RAM in one block
     std::uint8_t a = r_.a, f = r_.f, b = r_.b, c = r_.c, d = r_.d, e = r_.e, h = r_.h, l = r_.l;
     std::uint16_t sp = r_.sp, pc = r_.pc;
-    std::uint64_t t = t_, n = instructions_, limit = limit_;
+    // One counter for T-states and instructions, counting down to the batch's end:
+    //   rem = (L - T) * 2^kCountBits - N
+    // with T the T-states and N the instructions run in this batch (N < 2^kCountBits, as a batch is
+    // at most kBatchTStates long and every instruction takes at least 4 T-states) and L the
+    // batch's limit, both from t0. rem <= 0 exactly when T >= L. One table entry per opcode adds
+    // its T-states and one instruction at once (kCost).
+    const std::uint64_t t0 = t_, n0 = instructions_;
+    std::int64_t stop = 0, rem = 0;
+    const auto limit_rel = [t0](std::uint64_t lim) -> std::int64_t {
+        if (lim <= t0) return 0;
+        const std::uint64_t d = lim - t0;
+        return static_cast<std::int64_t>(d < kBatchTStates ? d : kBatchTStates) << kCountBits;
+    };
+    stop = limit_rel(limit_);
+    rem = stop;
     std::uint8_t op = 0;
+
+// T-states now, and the instructions run; a new limit from limit_; the batch ends after this
+// instruction.
+#define TNOW() (t0 + (static_cast<std::uint64_t>(stop - rem) >> kCountBits))
+#define NNOW() (n0 + (static_cast<std::uint64_t>(stop - rem) & ((1u << kCountBits) - 1)))
+#define ADD_T(x) (rem -= static_cast<std::int64_t>(x) << kCountBits)
+#define RELIMIT()                                                          \
+    do {                                                                   \
+        const std::int64_t acc_ = stop - rem;                              \
+        stop = limit_rel(limit_);                                          \
+        rem = stop - acc_;                                                 \
+    } while (0)
+#define END_BATCH()                                                        \
+    do {                                                                   \
+        rem -= stop;                                                       \
+        stop = 0;                                                          \
+    } while (0)
 
 #define HL() static_cast<std::uint16_t>((h << 8) | l)
 #define BC() static_cast<std::uint16_t>((b << 8) | c)
@@ -223,28 +285,32 @@ void I8085::execute() {
 #define SAVE_REGS()                                                                 \
     do {                                                                            \
         r_.a = a, r_.f = f, r_.b = b, r_.c = c, r_.d = d, r_.e = e, r_.h = h, r_.l = l; \
-        r_.sp = sp, r_.pc = pc, t_ = t, instructions_ = n;                          \
+        r_.sp = sp, r_.pc = pc, t_ = TNOW(), instructions_ = NNOW();              \
     } while (0)
 #define LOAD_REGS()                                                                 \
     do {                                                                            \
         a = r_.a, f = r_.f, b = r_.b, c = r_.c, d = r_.d, e = r_.e, h = r_.h, l = r_.l; \
         sp = r_.sp, pc = r_.pc;                                                     \
     } while (0)
-#define SYNC(back) (t_ = t - (back))
+#define SYNC(back) (t_ = TNOW() - (back))
 #define FETCH_AT(addr, when)                                               \
     ({                                                                     \
         const std::uint16_t fa_ = (addr);                                  \
-        const std::uint8_t* const fp_ = rp[fa_ >> 8];                      \
         std::uint8_t fv_;                                                  \
-        if (fp_) [[likely]]                                                \
-            fv_ = fp_[fa_ & 0xFF];                                         \
-        else {                                                             \
-            fv_ = slow_read(fa_, (when));                                  \
-            limit = limit_;                                                \
+        if constexpr (Flat) {                                              \
+            fv_ = mem[fa_];                                                \
+        } else {                                                           \
+            const std::uint8_t* const fp_ = rp[fa_ >> 8];                  \
+            if (fp_) [[likely]]                                            \
+                fv_ = fp_[fa_ & 0xFF];                                     \
+            else {                                                         \
+                fv_ = slow_read(fa_, (when));                              \
+                RELIMIT();                                                 \
+            }                                                              \
         }                                                                  \
         fv_;                                                               \
     })
-#define FETCH(addr) FETCH_AT(addr, t - 3)
+#define FETCH(addr) FETCH_AT(addr, TNOW() - 3)
 #define RDD(addr)                                                          \
     ({                                                                     \
         const std::uint16_t ra_ = (addr);                                  \
@@ -253,7 +319,7 @@ void I8085::execute() {
             if (hooks_) {                                                  \
                 SYNC(3);                                                   \
                 hooks_->on_read(*this, ra_, rv_);                          \
-                limit = limit_;                                            \
+                RELIMIT();                                                 \
             }                                                              \
         }                                                                  \
         rv_;                                                               \
@@ -262,18 +328,22 @@ void I8085::execute() {
     do {                                                                   \
         const std::uint16_t wa_ = (addr);                                  \
         const std::uint8_t wv_ = static_cast<std::uint8_t>(val);           \
-        std::uint8_t* const wpp_ = wp[wa_ >> 8];                           \
-        if (wpp_) [[likely]]                                               \
-            wpp_[wa_ & 0xFF] = wv_;                                        \
-        else {                                                             \
-            slow_write(wa_, wv_, t - 3);                                   \
-            limit = limit_;                                                \
+        if constexpr (Flat) {                                              \
+            mem[wa_] = wv_;                                                \
+        } else {                                                           \
+            std::uint8_t* const wpp_ = wp[wa_ >> 8];                       \
+            if (wpp_) [[likely]]                                           \
+                wpp_[wa_ & 0xFF] = wv_;                                    \
+            else {                                                         \
+                slow_write(wa_, wv_, TNOW() - 3);                          \
+                RELIMIT();                                                 \
+            }                                                              \
         }                                                                  \
         if constexpr (Debug) {                                             \
             if (hooks_) {                                                  \
                 SYNC(3);                                                   \
                 hooks_->on_write(*this, wa_, wv_);                         \
-                limit = limit_;                                            \
+                RELIMIT();                                                 \
             }                                                              \
         }                                                                  \
     } while (0)
@@ -282,7 +352,7 @@ void I8085::execute() {
         if constexpr (Debug) {                                             \
             if (hooks_) {                                                  \
                 hooks_->on_io(*this, port, value, is_out);                 \
-                limit = limit_;                                            \
+                RELIMIT();                                                 \
             }                                                              \
         }                                                                  \
     } while (0)
@@ -316,28 +386,33 @@ void I8085::execute() {
     } while (0)
 #define NEXT()                                                             \
     do {                                                                   \
-        if (t >= limit) [[unlikely]]                                       \
+        if (rem <= 0) [[unlikely]]                                         \
             goto done;                                                     \
         if constexpr (Debug) {                                             \
             if (hooks_) {                                                  \
                 SAVE_REGS();                                               \
                 const bool go_ = hooks_->before_instruction(*this);        \
                 LOAD_REGS();                                               \
-                limit = limit_;                                            \
+                RELIMIT();                                                 \
                 if (!go_) {                                                \
-                    deadline_ = t;                                         \
+                    deadline_ = TNOW();                                    \
                     goto done;                                             \
                 }                                                          \
             }                                                              \
         }                                                                  \
-        op = FETCH_AT(pc, t); /* the opcode fetch starts now */            \
+        op = FETCH_AT(pc, TNOW()); /* the opcode fetch starts now */       \
         pc = static_cast<std::uint16_t>(pc + 1);                           \
-        t += kBase<V>[op];                                                 \
-        ++n;                                                               \
-        goto* kLabels[op];                                                 \
+        rem -= kDispatch.cost[op];                                         \
+        goto* kDispatch.label[op];                                         \
     } while (0)
 
-    static const void* const kLabels[256] = {
+    // Each opcode's body and its cost (T-states and one instruction), one base register for both.
+    struct Dispatch {
+        const void* label[256];
+        std::int64_t cost[256];
+    };
+    static const Dispatch kDispatch = {
+        {
         &&op_00, &&op_01, &&op_02, &&op_03, &&op_04, &&op_05, &&op_06, &&op_07,
         &&op_08, &&op_09, &&op_0A, &&op_0B, &&op_0C, &&op_0D, &&op_0E, &&op_0F,
         &&op_10, &&op_11, &&op_12, &&op_13, &&op_14, &&op_15, &&op_16, &&op_17,
@@ -370,6 +445,41 @@ void I8085::execute() {
         &&op_E8, &&op_E9, &&op_EA, &&op_EB, &&op_EC, &&op_ED, &&op_EE, &&op_EF,
         &&op_F0, &&op_F1, &&op_F2, &&op_F3, &&op_F4, &&op_F5, &&op_F6, &&op_F7,
         &&op_F8, &&op_F9, &&op_FA, &&op_FB, &&op_FC, &&op_FD, &&op_FE, &&op_FF,
+    },
+        {
+        kCost<V>[0x00], kCost<V>[0x01], kCost<V>[0x02], kCost<V>[0x03], kCost<V>[0x04], kCost<V>[0x05], kCost<V>[0x06], kCost<V>[0x07],
+        kCost<V>[0x08], kCost<V>[0x09], kCost<V>[0x0A], kCost<V>[0x0B], kCost<V>[0x0C], kCost<V>[0x0D], kCost<V>[0x0E], kCost<V>[0x0F],
+        kCost<V>[0x10], kCost<V>[0x11], kCost<V>[0x12], kCost<V>[0x13], kCost<V>[0x14], kCost<V>[0x15], kCost<V>[0x16], kCost<V>[0x17],
+        kCost<V>[0x18], kCost<V>[0x19], kCost<V>[0x1A], kCost<V>[0x1B], kCost<V>[0x1C], kCost<V>[0x1D], kCost<V>[0x1E], kCost<V>[0x1F],
+        kCost<V>[0x20], kCost<V>[0x21], kCost<V>[0x22], kCost<V>[0x23], kCost<V>[0x24], kCost<V>[0x25], kCost<V>[0x26], kCost<V>[0x27],
+        kCost<V>[0x28], kCost<V>[0x29], kCost<V>[0x2A], kCost<V>[0x2B], kCost<V>[0x2C], kCost<V>[0x2D], kCost<V>[0x2E], kCost<V>[0x2F],
+        kCost<V>[0x30], kCost<V>[0x31], kCost<V>[0x32], kCost<V>[0x33], kCost<V>[0x34], kCost<V>[0x35], kCost<V>[0x36], kCost<V>[0x37],
+        kCost<V>[0x38], kCost<V>[0x39], kCost<V>[0x3A], kCost<V>[0x3B], kCost<V>[0x3C], kCost<V>[0x3D], kCost<V>[0x3E], kCost<V>[0x3F],
+        kCost<V>[0x40], kCost<V>[0x41], kCost<V>[0x42], kCost<V>[0x43], kCost<V>[0x44], kCost<V>[0x45], kCost<V>[0x46], kCost<V>[0x47],
+        kCost<V>[0x48], kCost<V>[0x49], kCost<V>[0x4A], kCost<V>[0x4B], kCost<V>[0x4C], kCost<V>[0x4D], kCost<V>[0x4E], kCost<V>[0x4F],
+        kCost<V>[0x50], kCost<V>[0x51], kCost<V>[0x52], kCost<V>[0x53], kCost<V>[0x54], kCost<V>[0x55], kCost<V>[0x56], kCost<V>[0x57],
+        kCost<V>[0x58], kCost<V>[0x59], kCost<V>[0x5A], kCost<V>[0x5B], kCost<V>[0x5C], kCost<V>[0x5D], kCost<V>[0x5E], kCost<V>[0x5F],
+        kCost<V>[0x60], kCost<V>[0x61], kCost<V>[0x62], kCost<V>[0x63], kCost<V>[0x64], kCost<V>[0x65], kCost<V>[0x66], kCost<V>[0x67],
+        kCost<V>[0x68], kCost<V>[0x69], kCost<V>[0x6A], kCost<V>[0x6B], kCost<V>[0x6C], kCost<V>[0x6D], kCost<V>[0x6E], kCost<V>[0x6F],
+        kCost<V>[0x70], kCost<V>[0x71], kCost<V>[0x72], kCost<V>[0x73], kCost<V>[0x74], kCost<V>[0x75], kCost<V>[0x76], kCost<V>[0x77],
+        kCost<V>[0x78], kCost<V>[0x79], kCost<V>[0x7A], kCost<V>[0x7B], kCost<V>[0x7C], kCost<V>[0x7D], kCost<V>[0x7E], kCost<V>[0x7F],
+        kCost<V>[0x80], kCost<V>[0x81], kCost<V>[0x82], kCost<V>[0x83], kCost<V>[0x84], kCost<V>[0x85], kCost<V>[0x86], kCost<V>[0x87],
+        kCost<V>[0x88], kCost<V>[0x89], kCost<V>[0x8A], kCost<V>[0x8B], kCost<V>[0x8C], kCost<V>[0x8D], kCost<V>[0x8E], kCost<V>[0x8F],
+        kCost<V>[0x90], kCost<V>[0x91], kCost<V>[0x92], kCost<V>[0x93], kCost<V>[0x94], kCost<V>[0x95], kCost<V>[0x96], kCost<V>[0x97],
+        kCost<V>[0x98], kCost<V>[0x99], kCost<V>[0x9A], kCost<V>[0x9B], kCost<V>[0x9C], kCost<V>[0x9D], kCost<V>[0x9E], kCost<V>[0x9F],
+        kCost<V>[0xA0], kCost<V>[0xA1], kCost<V>[0xA2], kCost<V>[0xA3], kCost<V>[0xA4], kCost<V>[0xA5], kCost<V>[0xA6], kCost<V>[0xA7],
+        kCost<V>[0xA8], kCost<V>[0xA9], kCost<V>[0xAA], kCost<V>[0xAB], kCost<V>[0xAC], kCost<V>[0xAD], kCost<V>[0xAE], kCost<V>[0xAF],
+        kCost<V>[0xB0], kCost<V>[0xB1], kCost<V>[0xB2], kCost<V>[0xB3], kCost<V>[0xB4], kCost<V>[0xB5], kCost<V>[0xB6], kCost<V>[0xB7],
+        kCost<V>[0xB8], kCost<V>[0xB9], kCost<V>[0xBA], kCost<V>[0xBB], kCost<V>[0xBC], kCost<V>[0xBD], kCost<V>[0xBE], kCost<V>[0xBF],
+        kCost<V>[0xC0], kCost<V>[0xC1], kCost<V>[0xC2], kCost<V>[0xC3], kCost<V>[0xC4], kCost<V>[0xC5], kCost<V>[0xC6], kCost<V>[0xC7],
+        kCost<V>[0xC8], kCost<V>[0xC9], kCost<V>[0xCA], kCost<V>[0xCB], kCost<V>[0xCC], kCost<V>[0xCD], kCost<V>[0xCE], kCost<V>[0xCF],
+        kCost<V>[0xD0], kCost<V>[0xD1], kCost<V>[0xD2], kCost<V>[0xD3], kCost<V>[0xD4], kCost<V>[0xD5], kCost<V>[0xD6], kCost<V>[0xD7],
+        kCost<V>[0xD8], kCost<V>[0xD9], kCost<V>[0xDA], kCost<V>[0xDB], kCost<V>[0xDC], kCost<V>[0xDD], kCost<V>[0xDE], kCost<V>[0xDF],
+        kCost<V>[0xE0], kCost<V>[0xE1], kCost<V>[0xE2], kCost<V>[0xE3], kCost<V>[0xE4], kCost<V>[0xE5], kCost<V>[0xE6], kCost<V>[0xE7],
+        kCost<V>[0xE8], kCost<V>[0xE9], kCost<V>[0xEA], kCost<V>[0xEB], kCost<V>[0xEC], kCost<V>[0xED], kCost<V>[0xEE], kCost<V>[0xEF],
+        kCost<V>[0xF0], kCost<V>[0xF1], kCost<V>[0xF2], kCost<V>[0xF3], kCost<V>[0xF4], kCost<V>[0xF5], kCost<V>[0xF6], kCost<V>[0xF7],
+        kCost<V>[0xF8], kCost<V>[0xF9], kCost<V>[0xFA], kCost<V>[0xFB], kCost<V>[0xFC], kCost<V>[0xFD], kCost<V>[0xFE], kCost<V>[0xFF],
+        },
     };
     NEXT();
 op_00:  // NOP
@@ -516,7 +626,7 @@ op_2F:  // CMA
     a = static_cast<std::uint8_t>(~a);
     NEXT();
 op_30:  // SIM / 8080: NOP
-    if constexpr (k85) { SYNC(0); sim(a); limit = 0; }
+    if constexpr (k85) { SYNC(0); sim(a); END_BATCH(); }
     NEXT();
 op_31:  // LXI SP,d16
     sp = IMM16();
@@ -720,7 +830,7 @@ op_75:  // MOV M,L
     WR(HL(), l);
     NEXT();
 op_76:  // HLT
-    SYNC(0); halt_entered(); limit = 0;
+    SYNC(0); halt_entered(); END_BATCH();
     NEXT();
 op_77:  // MOV M,A
     WR(HL(), a);
@@ -941,7 +1051,7 @@ op_BF:  // CMP A
     alu_cmp<V>(a, f, a);
     NEXT();
 op_C0:  // RNZ
-    if (!(f & F_Z)) { t += kTaken<V>[0xC0]; POPPC(); }
+    if (!(f & F_Z)) { ADD_T(kTaken<V>[0xC0]); POPPC(); }
     NEXT();
 op_C1:  // POP B
     c = RDD(sp); sp = sp + 1; b = RDD(sp); sp = sp + 1;
@@ -949,11 +1059,13 @@ op_C1:  // POP B
 op_C2:  // JNZ a16
     if (!(f & F_Z)) {
         const std::uint16_t from = static_cast<std::uint16_t>(pc - 1);
-        pc = IMM16(); t += kTaken<V>[0xC2];
+        pc = IMM16(); ADD_T(kTaken<V>[0xC2]);
         if constexpr (!Debug) {
             // Back onto the byte before it: perhaps "L: DCR r / JNZ L", a delay loop.
-            if (pc == static_cast<std::uint16_t>(from - 1) && fast_loops_) [[unlikely]]
-                goto countdown;
+            if (static_cast<std::uint16_t>(from - pc) <= 3 && fast_loops_) [[unlikely]] {
+                if (pc == static_cast<std::uint16_t>(from - 1)) goto countdown;
+                if (pc == static_cast<std::uint16_t>(from - 3)) goto countdown16;
+            }
         }
     } else { pc = pc + 2; }
     NEXT();
@@ -961,7 +1073,7 @@ op_C3:  // JMP a16
     pc = IMM16();
     NEXT();
 op_C4:  // CNZ a16
-    if (!(f & F_Z)) { const std::uint16_t ad = IMM16(); t += kTaken<V>[0xC4]; PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
+    if (!(f & F_Z)) { const std::uint16_t ad = IMM16(); ADD_T(kTaken<V>[0xC4]); PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
     NEXT();
 op_C5:  // PUSH B
     PUSH2(b, c);
@@ -973,19 +1085,19 @@ op_C7:  // RST 0
     PUSH2(pc >> 8, pc & 0xFF); pc = 0x00;
     NEXT();
 op_C8:  // RZ
-    if ((f & F_Z)) { t += kTaken<V>[0xC8]; POPPC(); }
+    if ((f & F_Z)) { ADD_T(kTaken<V>[0xC8]); POPPC(); }
     NEXT();
 op_C9:  // RET
     POPPC();
     NEXT();
 op_CA:  // JZ a16
-    if ((f & F_Z)) { pc = IMM16(); t += kTaken<V>[0xCA]; } else { pc = pc + 2; }
+    if ((f & F_Z)) { pc = IMM16(); ADD_T(kTaken<V>[0xCA]); } else { pc = pc + 2; }
     NEXT();
 op_CB:  // RSTV / 8080: JMP a16
-    if constexpr (k85) { if (f & F_V) { t += kTaken<V>[0xCB]; PUSH2(pc >> 8, pc & 0xFF); pc = 0x40; } } else { pc = IMM16(); }
+    if constexpr (k85) { if (f & F_V) { ADD_T(kTaken<V>[0xCB]); PUSH2(pc >> 8, pc & 0xFF); pc = 0x40; } } else { pc = IMM16(); }
     NEXT();
 op_CC:  // CZ a16
-    if ((f & F_Z)) { const std::uint16_t ad = IMM16(); t += kTaken<V>[0xCC]; PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
+    if ((f & F_Z)) { const std::uint16_t ad = IMM16(); ADD_T(kTaken<V>[0xCC]); PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
     NEXT();
 op_CD:  // CALL a16
     { const std::uint16_t ad = IMM16(); PUSH2(pc >> 8, pc & 0xFF); pc = ad; }
@@ -997,19 +1109,19 @@ op_CF:  // RST 1
     PUSH2(pc >> 8, pc & 0xFF); pc = 0x08;
     NEXT();
 op_D0:  // RNC
-    if (!(f & F_CY)) { t += kTaken<V>[0xD0]; POPPC(); }
+    if (!(f & F_CY)) { ADD_T(kTaken<V>[0xD0]); POPPC(); }
     NEXT();
 op_D1:  // POP D
     e = RDD(sp); sp = sp + 1; d = RDD(sp); sp = sp + 1;
     NEXT();
 op_D2:  // JNC a16
-    if (!(f & F_CY)) { pc = IMM16(); t += kTaken<V>[0xD2]; } else { pc = pc + 2; }
+    if (!(f & F_CY)) { pc = IMM16(); ADD_T(kTaken<V>[0xD2]); } else { pc = pc + 2; }
     NEXT();
 op_D3:  // OUT p8
-    { const std::uint8_t p = IMM8(); SYNC(3); io_out(p, a, t_); limit = limit_; DBG_IO(p, a, true); }
+    { const std::uint8_t p = IMM8(); SYNC(3); io_out(p, a, t_); RELIMIT(); DBG_IO(p, a, true); }
     NEXT();
 op_D4:  // CNC a16
-    if (!(f & F_CY)) { const std::uint16_t ad = IMM16(); t += kTaken<V>[0xD4]; PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
+    if (!(f & F_CY)) { const std::uint16_t ad = IMM16(); ADD_T(kTaken<V>[0xD4]); PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
     NEXT();
 op_D5:  // PUSH D
     PUSH2(d, e);
@@ -1021,22 +1133,22 @@ op_D7:  // RST 2
     PUSH2(pc >> 8, pc & 0xFF); pc = 0x10;
     NEXT();
 op_D8:  // RC
-    if ((f & F_CY)) { t += kTaken<V>[0xD8]; POPPC(); }
+    if ((f & F_CY)) { ADD_T(kTaken<V>[0xD8]); POPPC(); }
     NEXT();
 op_D9:  // SHLX / 8080: RET
     if constexpr (k85) { const std::uint16_t ad = DE(); WR(ad, l); WR(static_cast<std::uint16_t>(ad + 1), h); } else { POPPC(); }
     NEXT();
 op_DA:  // JC a16
-    if ((f & F_CY)) { pc = IMM16(); t += kTaken<V>[0xDA]; } else { pc = pc + 2; }
+    if ((f & F_CY)) { pc = IMM16(); ADD_T(kTaken<V>[0xDA]); } else { pc = pc + 2; }
     NEXT();
 op_DB:  // IN p8
-    { const std::uint8_t p = IMM8(); SYNC(3); a = io_in(p, t_); limit = limit_; DBG_IO(p, a, false); }
+    { const std::uint8_t p = IMM8(); SYNC(3); a = io_in(p, t_); RELIMIT(); DBG_IO(p, a, false); }
     NEXT();
 op_DC:  // CC a16
-    if ((f & F_CY)) { const std::uint16_t ad = IMM16(); t += kTaken<V>[0xDC]; PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
+    if ((f & F_CY)) { const std::uint16_t ad = IMM16(); ADD_T(kTaken<V>[0xDC]); PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
     NEXT();
 op_DD:  // JNK a16 / 8080: CALL a16
-    if constexpr (k85) { if (!(f & F_K)) { pc = IMM16(); t += kTaken<V>[0xDD]; } else { pc = pc + 2; } } else { const std::uint16_t ad = IMM16(); PUSH2(pc >> 8, pc & 0xFF); pc = ad; }
+    if constexpr (k85) { if (!(f & F_K)) { pc = IMM16(); ADD_T(kTaken<V>[0xDD]); } else { pc = pc + 2; } } else { const std::uint16_t ad = IMM16(); PUSH2(pc >> 8, pc & 0xFF); pc = ad; }
     NEXT();
 op_DE:  // SBI d8
     { const std::uint8_t v = IMM8(); alu_sub<V>(a, f, v, f & 1); }
@@ -1045,19 +1157,19 @@ op_DF:  // RST 3
     PUSH2(pc >> 8, pc & 0xFF); pc = 0x18;
     NEXT();
 op_E0:  // RPO
-    if (!(f & F_P)) { t += kTaken<V>[0xE0]; POPPC(); }
+    if (!(f & F_P)) { ADD_T(kTaken<V>[0xE0]); POPPC(); }
     NEXT();
 op_E1:  // POP H
     l = RDD(sp); sp = sp + 1; h = RDD(sp); sp = sp + 1;
     NEXT();
 op_E2:  // JPO a16
-    if (!(f & F_P)) { pc = IMM16(); t += kTaken<V>[0xE2]; } else { pc = pc + 2; }
+    if (!(f & F_P)) { pc = IMM16(); ADD_T(kTaken<V>[0xE2]); } else { pc = pc + 2; }
     NEXT();
 op_E3:  // XTHL
     { const std::uint8_t lo = RDD(sp); const std::uint16_t s1 = static_cast<std::uint16_t>(sp + 1); const std::uint8_t hi = RDD(s1); WR(sp, l); WR(s1, h); l = lo; h = hi; }
     NEXT();
 op_E4:  // CPO a16
-    if (!(f & F_P)) { const std::uint16_t ad = IMM16(); t += kTaken<V>[0xE4]; PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
+    if (!(f & F_P)) { const std::uint16_t ad = IMM16(); ADD_T(kTaken<V>[0xE4]); PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
     NEXT();
 op_E5:  // PUSH H
     PUSH2(h, l);
@@ -1069,19 +1181,19 @@ op_E7:  // RST 4
     PUSH2(pc >> 8, pc & 0xFF); pc = 0x20;
     NEXT();
 op_E8:  // RPE
-    if ((f & F_P)) { t += kTaken<V>[0xE8]; POPPC(); }
+    if ((f & F_P)) { ADD_T(kTaken<V>[0xE8]); POPPC(); }
     NEXT();
 op_E9:  // PCHL
     pc = HL();
     NEXT();
 op_EA:  // JPE a16
-    if ((f & F_P)) { pc = IMM16(); t += kTaken<V>[0xEA]; } else { pc = pc + 2; }
+    if ((f & F_P)) { pc = IMM16(); ADD_T(kTaken<V>[0xEA]); } else { pc = pc + 2; }
     NEXT();
 op_EB:  // XCHG
     std::swap(d, h); std::swap(e, l);
     NEXT();
 op_EC:  // CPE a16
-    if ((f & F_P)) { const std::uint16_t ad = IMM16(); t += kTaken<V>[0xEC]; PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
+    if ((f & F_P)) { const std::uint16_t ad = IMM16(); ADD_T(kTaken<V>[0xEC]); PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
     NEXT();
 op_ED:  // LHLX / 8080: CALL a16
     if constexpr (k85) { const std::uint16_t ad = DE(); l = RDD(ad); h = RDD(static_cast<std::uint16_t>(ad + 1)); } else { const std::uint16_t ad = IMM16(); PUSH2(pc >> 8, pc & 0xFF); pc = ad; }
@@ -1093,19 +1205,19 @@ op_EF:  // RST 5
     PUSH2(pc >> 8, pc & 0xFF); pc = 0x28;
     NEXT();
 op_F0:  // RP
-    if (!(f & F_S)) { t += kTaken<V>[0xF0]; POPPC(); }
+    if (!(f & F_S)) { ADD_T(kTaken<V>[0xF0]); POPPC(); }
     NEXT();
 op_F1:  // POP PSW
     f = RDD(sp); f = k85 ? (f & 0xF7) : ((f & 0xD7) | 0x02); sp = sp + 1; a = RDD(sp); sp = sp + 1;
     NEXT();
 op_F2:  // JP a16
-    if (!(f & F_S)) { pc = IMM16(); t += kTaken<V>[0xF2]; } else { pc = pc + 2; }
+    if (!(f & F_S)) { pc = IMM16(); ADD_T(kTaken<V>[0xF2]); } else { pc = pc + 2; }
     NEXT();
 op_F3:  // DI
     ie_ = false; ei_delay_ = false;
     NEXT();
 op_F4:  // CP a16
-    if (!(f & F_S)) { const std::uint16_t ad = IMM16(); t += kTaken<V>[0xF4]; PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
+    if (!(f & F_S)) { const std::uint16_t ad = IMM16(); ADD_T(kTaken<V>[0xF4]); PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
     NEXT();
 op_F5:  // PUSH PSW
     PUSH2(a, f);
@@ -1117,22 +1229,22 @@ op_F7:  // RST 6
     PUSH2(pc >> 8, pc & 0xFF); pc = 0x30;
     NEXT();
 op_F8:  // RM
-    if ((f & F_S)) { t += kTaken<V>[0xF8]; POPPC(); }
+    if ((f & F_S)) { ADD_T(kTaken<V>[0xF8]); POPPC(); }
     NEXT();
 op_F9:  // SPHL
     sp = HL();
     NEXT();
 op_FA:  // JM a16
-    if ((f & F_S)) { pc = IMM16(); t += kTaken<V>[0xFA]; } else { pc = pc + 2; }
+    if ((f & F_S)) { pc = IMM16(); ADD_T(kTaken<V>[0xFA]); } else { pc = pc + 2; }
     NEXT();
 op_FB:  // EI
-    ie_ = true; ei_delay_ = true; limit = 0;
+    ie_ = true; ei_delay_ = true; END_BATCH();
     NEXT();
 op_FC:  // CM a16
-    if ((f & F_S)) { const std::uint16_t ad = IMM16(); t += kTaken<V>[0xFC]; PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
+    if ((f & F_S)) { const std::uint16_t ad = IMM16(); ADD_T(kTaken<V>[0xFC]); PUSH2(pc >> 8, pc & 0xFF); pc = ad; } else { pc = pc + 2; }
     NEXT();
 op_FD:  // JK a16 / 8080: CALL a16
-    if constexpr (k85) { if (f & F_K) { pc = IMM16(); t += kTaken<V>[0xFD]; } else { pc = pc + 2; } } else { const std::uint16_t ad = IMM16(); PUSH2(pc >> 8, pc & 0xFF); pc = ad; }
+    if constexpr (k85) { if (f & F_K) { pc = IMM16(); ADD_T(kTaken<V>[0xFD]); } else { pc = pc + 2; } } else { const std::uint16_t ad = IMM16(); PUSH2(pc >> 8, pc & 0xFF); pc = ad; }
     NEXT();
 op_FE:  // CPI d8
     { const std::uint8_t v = IMM8(); alu_cmp<V>(a, f, v); }
@@ -1147,16 +1259,15 @@ countdown: __attribute__((unused)); {
     // the instruction count end exactly as instruction by instruction. Debug runs never get here.
     constexpr unsigned per = kBase<V>[0x05] + kBase<V>[0xC2] + kTaken<V>[0xC2];
     const std::uint8_t* const code = rp[pc >> 8];
-    if (!code || !rp[static_cast<std::uint16_t>(pc + 3) >> 8] || limit <= t) NEXT();
-    const std::uint64_t fit = (limit - t) / per;
+    if (!code || !rp[static_cast<std::uint16_t>(pc + 3) >> 8] || rem <= 0) NEXT();
+    const std::uint64_t fit = static_cast<std::uint64_t>((stop >> kCountBits) - ((stop - rem) >> kCountBits)) / per;
 #define COUNTDOWN(r)                                                                        \
     do {                                                                                    \
         const unsigned left = (r - 1u) & 0xFFu; /* iterations whose DCR leaves r non-zero */ \
         const unsigned m = fit < left ? static_cast<unsigned>(fit) : left;                  \
         if (m) {                                                                            \
             r = dcr<V>(static_cast<std::uint8_t>(r - m + 1), f);                            \
-            t += std::uint64_t{per} * m;                                                    \
-            n += 2u * m;                                                                    \
+            rem -= (static_cast<std::int64_t>(per) * m << kCountBits) + 2 * m;              \
         }                                                                                   \
     } while (0)
     switch (code[pc & 0xFF]) {
@@ -1172,6 +1283,47 @@ countdown: __attribute__((unused)); {
 #undef COUNTDOWN
     NEXT();
 }
+countdown16: __attribute__((unused)); {
+    // "L: DCX rp / MOV A,r / ORA r' / JNZ L" (r, r' the two halves of rp, in either order) with
+    // the JNZ just taken: a 16-bit delay loop. The iterations that keep rp non-zero and start
+    // before the batch's limit are done at once. After each iteration A = r | r' and the flags are
+    // ORA's (DCX's K on the 8085 is overwritten by ORA), so only the last iteration's rp matters;
+    // nothing inside touches memory or I/O. Debug runs never get here.
+    constexpr unsigned per = kBase<V>[0x0B] + kBase<V>[0x78] + kBase<V>[0xB0] + kBase<V>[0xC2] + kTaken<V>[0xC2];
+    const std::uint8_t* const code = rp[pc >> 8];
+    const std::uint8_t* const code_end = rp[static_cast<std::uint16_t>(pc + 5) >> 8];
+    if (!code || !code_end || rem <= 0) NEXT();
+#define CODE_AT(k) (((pc + (k)) & 0xFF00) == (pc & 0xFF00) ? code[(pc + (k)) & 0xFF] : code_end[(pc + (k)) & 0xFF])
+    const std::uint8_t dcx = code[pc & 0xFF], mov = CODE_AT(1), ora = CODE_AT(2);
+#undef CODE_AT
+    // DCX B/D/H is 0B/1B/2B; MOV A,r is 78+r; ORA r is B0+r; registers B C D E H L = 0..5.
+    if ((dcx & 0xCF) != 0x0B || dcx == 0x3B) NEXT();
+    const unsigned hi = (dcx >> 4) * 2, lo = hi + 1;
+    const unsigned r1 = mov - 0x78u, r2 = ora - 0xB0u;
+    if (!((r1 == hi && r2 == lo) || (r1 == lo && r2 == hi))) NEXT();
+    const std::uint64_t fit = static_cast<std::uint64_t>((stop >> kCountBits) - ((stop - rem) >> kCountBits)) / per;
+#define COUNTDOWN16(rh, rl)                                                                 \
+    do {                                                                                    \
+        const unsigned pair = static_cast<unsigned>(rh << 8 | rl);                          \
+        const unsigned left = (pair - 1u) & 0xFFFFu; /* iterations leaving rp non-zero */   \
+        const unsigned m = fit < left ? static_cast<unsigned>(fit) : left;                  \
+        if (m) {                                                                            \
+            const unsigned v = pair - m;                                                    \
+            rh = static_cast<std::uint8_t>(v >> 8);                                         \
+            rl = static_cast<std::uint8_t>(v);                                              \
+            a = static_cast<std::uint8_t>(rh | rl);                                         \
+            f = kSZP<V>[a];                                                                 \
+            rem -= (static_cast<std::int64_t>(per) * m << kCountBits) + 4 * m;              \
+        }                                                                                   \
+    } while (0)
+    switch (dcx) {
+        case 0x0B: COUNTDOWN16(b, c); break;
+        case 0x1B: COUNTDOWN16(d, e); break;
+        default: COUNTDOWN16(h, l); break;
+    }
+#undef COUNTDOWN16
+    NEXT();
+}
 done:
     SAVE_REGS();
 #undef HL
@@ -1180,6 +1332,11 @@ done:
 #undef SAVE_REGS
 #undef LOAD_REGS
 #undef SYNC
+#undef TNOW
+#undef NNOW
+#undef ADD_T
+#undef RELIMIT
+#undef END_BATCH
 #undef FETCH
 #undef FETCH_AT
 #undef RDD
@@ -1216,7 +1373,12 @@ std::uint64_t I8085::run_impl(std::uint64_t deadline) {
         } else {
             limit_ = deadline_;
         }
-        execute<V, Debug>();
+        // Plain RAM over all 64 KiB (a CP/M machine, the bare-core benchmarks): no page table.
+        // Chosen per batch; a mapping changed by an I/O handler ends the batch (io_out, io_in).
+        if (!Debug && bus_.flat_ram())
+            execute<V, Debug, true>();
+        else
+            execute<V, Debug, false>();
         if (after_ei && instructions_ == before) ei_delay_ = true;  // stopped before it ran
     }
     limit_ = 0;

@@ -136,8 +136,9 @@ public:
     DebugHooks* debug_hooks() const { return hooks_; }
 
 private:
-    template <Variant V, bool Debug>
+    template <Variant V, bool Debug, bool Flat>
     void execute();  // the instruction loop: runs until t_ >= limit_
+    void request_stop_batch() { limit_ = 0; }  // end this batch only (run() goes on)
     template <Variant V, bool Debug>
     std::uint64_t run_impl(std::uint64_t deadline);
     void accept_interrupt();
