@@ -186,12 +186,12 @@ void MachineTool::describe(Description& d) const {
         std::snprintf(speed, sizeof speed, "%.1f rad/s", rotor_speed_rad_s(axis));
         const EndStop stop = end_stop(axis);
         Field& f = d.add(Field::note(n, std::to_string(steps) + " steps, " + mm));
-        f.add(Field::decimal("steps", steps)).watched_as(n + " steps");
+        f.add(Field::decimal("steps", steps));
         f.add(Field::note("table", mm));
-        f.add(Field::decimal("count", transducer_count(axis))).watched_as(n + " count");
+        f.add(Field::decimal("count", transducer_count(axis)));
         f.add(Field::decimal("commanded", commanded_steps(axis)));
-        f.add(Field::decimal("lost", lost_steps(axis))).watched_as(n + " lost");
-        f.add(Field::decimal("end stop", stop.at, 0, stop.at > 0 ? "high" : stop.at < 0 ? "low" : "free")).watched_as(n + " endstop");
+        f.add(Field::decimal("lost", lost_steps(axis)));
+        f.add(Field::decimal("end stop", stop.at, 0, stop.at > 0 ? "high" : stop.at < 0 ? "low" : "free"));
         f.add(Field::bits("phases", phase_pattern(axis), 0, 4, "A /A B /B")).lsb = -1;
         f.add(Field::note("rotor", std::string(speed) + (settled(axis) ? ", settled" : "")));
     }

@@ -6,7 +6,7 @@
 //   continue/c step/s stepi/si next/n nexti/ni finish/fin until/u advance run [for] TIME
 //   reverse-step/rs reverse-stepi/rsi reverse-next/rn reverse-nexti/rni reverse-finish/rfin
 //   reverse-continue/rc  print/p x display/disp undisplay set list/l disassemble/disas
-//   backtrace/bt info/i (registers breakpoints display displays 8155 8279 axis line frame)
+//   backtrace/bt info/i (registers breakpoints display displays PART axis line frame)
 //   history help quit/q
 //
 // A line it does not know goes to the fallback: `alp85 debug` passes it to the script language
@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "emu/debug/debugger.h"
@@ -55,7 +56,7 @@ public:
     std::vector<std::string> complete(std::string_view word, bool first_word) const;
     // The stop as the console reports it (header, source line, displays); no commands run.
     std::string describe(const Stop& s);
-    // What `info WHAT` shows (registers, 8155, 8279, axis, breakpoints, ...), for panes.
+    // What `info WHAT` shows (registers, a part by its name, axis, breakpoints, ...), for panes.
     std::string info(std::string_view what) { return cmd_info(what, 1); }
     // A line of a loaded program's source (read once, kept), or nullopt.
     std::optional<std::string> source_line(const SourceLine& l);
@@ -129,8 +130,9 @@ private:
     std::string info_registers();
     std::string info_breakpoints();
     std::string info_displays();
-    std::string info_8155();
-    std::string info_8279();
+    std::string info_part(const periph::Part& part);
+    // The part whose name the first words (upper case) spell, and how many words that took.
+    std::pair<periph::Part*, std::size_t> part_named(const std::vector<std::string>& words) const;
     std::string info_axis(std::string_view which, int col);
     std::string info_display();
     std::string show_displays();
