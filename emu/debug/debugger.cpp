@@ -302,9 +302,12 @@ periph::Description Debugger::describe(const periph::Part& part) const {
     return d;
 }
 
-std::int64_t Debugger::part_watch_value(Watchpoint& w) {
+std::int64_t Debugger::part_watch_value(Watchpoint& w, bool io) {
     const periph::Part* p = m_.find_part(w.part);
     if (!p) return w.last_value;
+    if (!io && !w.shadow.empty() && p->now() == w.part_now && m_.input_log().size() == w.part_inputs) return w.last_value;
+    w.part_now = p->now();
+    w.part_inputs = m_.input_log().size();
     part_state_.clear();
     p->save(part_state_);
     if (part_state_ == w.shadow) return w.last_value;

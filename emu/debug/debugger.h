@@ -128,6 +128,8 @@ struct Watchpoint {
     std::vector<std::string> commands;
     std::int64_t last_value = 0;          // Write, Tool, Part: the value at the last check
     int digits = 2;                       // Part: hex digits of its messages (0: signed decimal)
+    std::uint64_t part_now = 0;           // Part: the part's time and the inputs applied at the last check
+    std::size_t part_inputs = 0;
     std::vector<std::uint8_t> shadow;     // Write over more than a word: the bytes at the last check;
                                           // Part: the part's state at the last check
 };
@@ -301,8 +303,10 @@ private:
     Stop run_with_target(std::function<bool(const I8085&)> target, StopReason reason);
     // A Part watchpoint's value: the part's description read again only when the part's state
     // bytes changed since the last read (a check runs before every instruction; describing costs
-    // far more than comparing), at the part's own time, as the machine last caught it up.
-    std::int64_t part_watch_value(Watchpoint& w);
+    // far more than comparing), at the part's own time, as the machine last caught it up. A part
+    // changes only when it is caught up (its time moves), through I/O (`io`: the instruction was
+    // an IN or OUT) or by an outside input (a key, RESET); otherwise not even its bytes are read.
+    std::int64_t part_watch_value(Watchpoint& w, bool io = true);
     // Re-execution: the machine back at checkpoint `c`, then run to `t` (a position of this
     // timeline), recording boundaries and/or hits on the way; nothing stops it.
     void replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits);

@@ -108,7 +108,8 @@ bool Debugger::Monitor::check_state(const I8085& cpu) {
             d_.m_.tool().advance(t);  // the table moves on its own
             v = d_.tool_value(w.quantity, w.axis);
         } else {
-            v = d_.part_watch_value(w);
+            const std::uint8_t op = d_.m_.peek(last_pc);
+            v = d_.part_watch_value(w, op == 0xD3 || op == 0xDB);  // OUT, IN
         }
         if (v == w.last_value) continue;
         const std::int64_t old = w.last_value;
