@@ -293,6 +293,56 @@ std::uint16_t I8155::peek_counter(std::uint64_t now) const {
     return s_.held_value;
 }
 
+void I8155::describe(Description& d) const {
+    // Port C's modes as the data sheet's command register table names them (bits 3-2: 00 ALT1,
+    // 11 ALT2, 01 ALT3, 10 ALT4) and its port control assignment says what the pins do.
+    static constexpr const char* kPortC[] = {"ALT1 (input)", "ALT2 (output)", "ALT3 (port A strobed, PC3-5 output)",
+                                             "ALT4 (ports A and B strobed)"};
+    static constexpr const char* kModes[] = {"single square wave", "continuous square wave", "single pulse at TC",
+                                             "continuous pulses"};
+    const std::uint64_t now = std::max(d.now, s_.now);
+    d.title = "8155 (RAM-I/O-timer)";
+
+    Field& cmd = d.add(Field::hex("command", s_.command, 8)).watched_as("command");
+    cmd.add(Field::bits("port A", s_.command, 0, 1, s_.command & kCmdPaOut ? "out" : "in"));
+    cmd.add(Field::bits("port B", s_.command, 1, 1, s_.command & kCmdPbOut ? "out" : "in"));
+    cmd.add(Field::bits("port C", s_.command, 2, 2, kPortC[static_cast<int>(port_c_mode())]));
+    cmd.add(Field::flag("INTE A", s_.command & kCmdIea, 4, "on"));
+    cmd.add(Field::flag("INTE B", s_.command & kCmdIeb, 5, "on"));
+    cmd.text = summary(cmd.fields);
+
+    const std::uint8_t st = peek_status();
+    Field& status = d.add(Field::hex("status", st, 8));
+    status.add(Field::flag("INTR A", st & kStIntrA, 0, "high"));
+    status.add(Field::flag("BF A", st & kStBfA, 1, "full"));
+    status.add(Field::flag("INTE A", st & kStInteA, 2, "on"));
+    status.add(Field::flag("INTR B", st & kStIntrB, 3, "high"));
+    status.add(Field::flag("BF B", st & kStBfB, 4, "full"));
+    status.add(Field::flag("INTE B", st & kStInteB, 5, "on"));
+    status.add(Field::flag("TIMER", st & kStTimer, 6, "TC reached"));
+    status.text = summary(status.fields);
+
+    const char* names[] = {"port A", "port B", "port C"};
+    const char* watches[] = {"porta", "portb", "portc"};
+    for (int i = 0; i < 3; ++i) {
+        const auto port = static_cast<Port>(i);
+        const std::string dir = i == 2 ? kPortC[static_cast<int>(port_c_mode())]
+                                        : std::string(port_output_mask(port) ? "output" : "input") + (strobed(port) ? ", strobed" : "");
+        Field& p = d.add(Field::hex(names[i], s_.latch[static_cast<std::size_t>(i)], i == 2 ? 6 : 8, dir)).watched_as(watches[i]);
+        p.add(Field::hex("latch", s_.latch[static_cast<std::size_t>(i)], i == 2 ? 6 : 8));
+        p.add(Field::hex("input pins", s_.pins[static_cast<std::size_t>(i)], i == 2 ? 6 : 8));
+        p.add(Field::hex("driven", port_output(port), i == 2 ? 6 : 8));
+    }
+
+    Field& timer = d.add(Field::hex("count length", s_.count_length, 16)).watched_as("timer");
+    timer.add(Field::bits("mode", s_.count_length, 14, 2, kModes[s_.count_length >> 14]));
+    timer.add(Field::bits("count", s_.count_length, 0, 14, std::to_string(s_.count_length & 0x3FFF) + " clocks"));
+    timer.text = summary(timer.fields);
+    d.add(Field::hex("counter", peek_counter(now), 16, s_.running ? "running" : "stopped"));
+    Field& out = d.add(Field::bits("TIMER OUT", s_.timer_out ? 1 : 0, 0, 1, s_.timer_out ? "high" : "low")).watched_as("timerout");
+    out.lsb = -1;  // a pin, not a register's bit
+}
+
 std::uint64_t I8155::next_event() const {
     std::uint64_t t = s_.pulse_end;
     if (s_.running) {

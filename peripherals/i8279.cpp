@@ -95,6 +95,51 @@ std::uint8_t I8279::digit_output(unsigned position) const {
     return v;
 }
 
+void I8279::describe(Description& d) const {
+    // The keyboard/display mode set command 000DDKKK (data sheet): DD display, KKK keyboard.
+    static constexpr const char* kDisplay[] = {"8 digits, left entry", "16 digits, left entry", "8 digits, right entry",
+                                               "16 digits, right entry"};
+    static constexpr const char* kKeys[] = {"encoded scan, 2-key lockout", "decoded scan, 2-key lockout",
+                                            "encoded scan, N-key rollover", "decoded scan, N-key rollover",
+                                            "encoded sensor matrix", "decoded sensor matrix", "strobed input, encoded",
+                                            "strobed input, decoded"};
+    auto hex2 = [](std::uint8_t v) {
+        static constexpr char kDigits[] = "0123456789ABCDEF";
+        return std::string{kDigits[v >> 4], kDigits[v & 15], 'H'};
+    };
+    d.title = "8279 (keyboard/display)";
+
+    Field& mode = d.add(Field::hex("mode", s_.mode, 8));
+    mode.add(Field::bits("display", s_.mode, 3, 2, kDisplay[(s_.mode >> 3) & 3]));
+    mode.add(Field::bits("keyboard", s_.mode, 0, 3, kKeys[s_.mode & 7]));
+    mode.text = summary(mode.fields);
+    d.add(Field::decimal("prescaler", s_.prescaler, 5));
+
+    const std::uint8_t st = peek_status(d.now);
+    Field& status = d.add(Field::hex("status", st, 8)).watched_as("status");
+    status.add(Field::flag("DU", st & kStDU, 7, "display unavailable"));
+    status.add(Field::flag("S/E", st & kStSE, 6, sensor_mode() ? "sensor closure" : "multiple closure"));
+    status.add(Field::flag("O", st & kStO, 5, "overrun"));
+    status.add(Field::flag("U", st & kStU, 4, "underrun"));
+    status.add(Field::flag("F", st & kStF, 3, "full"));
+    const unsigned n = (st & kStF) ? 8 : st & kStCount;
+    status.add(Field::bits("FIFO", st, 0, 3, sensor_mode() ? "" : std::to_string(n) + (n == 1 ? " entry" : " entries")));
+    status.text = summary(status.fields);
+
+    d.add(Field::decimal("FIFO count", s_.fifo_count, 4)).watched_as("fifo");
+    std::string entries;
+    for (unsigned i = 0; i < s_.fifo_count; ++i) entries += (i ? " " : "") + hex2(s_.fifo[(s_.fifo_head + i) % 8]);
+    Field& fifo = d.add(Field::note("FIFO", entries.empty() ? "empty" : entries));
+    for (unsigned i = 0; i < s_.fifo_count; ++i) fifo.add(Field::hex(std::to_string(i), s_.fifo[(s_.fifo_head + i) % 8], 8));
+
+    d.add(Field::decimal("display address", s_.display_address, 4, s_.display_ai ? "auto-increment" : ""));
+    Field& ram = d.add(Field::note("display RAM", "16 bytes"));
+    for (std::size_t i = 0; i < s_.display_ram.size(); ++i) ram.add(Field::hex(std::to_string(i), s_.display_ram[i], 8));
+    d.add(Field::note("data read", s_.read_display ? "display RAM" : sensor_mode() ? "sensor RAM" : "FIFO"));
+    d.add(Field::bits("inhibit/blank", s_.inhibit_blank, 0, 4)).lsb = -1;
+    d.add(Field::bits("IRQ", s_.irq ? 1 : 0, 0, 1, s_.irq ? "high" : "low")).lsb = -1;
+}
+
 std::uint8_t I8279::peek_status(std::uint64_t now) const {
     std::uint8_t st = 0;
     if (std::max(now, s_.now) < s_.du_until) st |= kStDU;

@@ -129,6 +129,7 @@ public:
 
     // Part
     std::string_view name() const override { return "8279"; }
+    void describe(Description& d) const override;
     std::string_view tag() const override { return "8279"; }
     std::uint8_t state_version() const override { return 2; }
     void reset(std::uint64_t now) override;

@@ -71,4 +71,12 @@ void Keypad::load_state(StateReader& r) {
     now_ = now;
 }
 
+void Keypad::describe(Description& d) const {
+    d.title = "keypad (key matrix)";
+    std::string down;
+    for (const KeyInfo& k : layout())
+        if (is_pressed(k.key)) down += (down.empty() ? "" : " ") + std::string(k.name);
+    d.add(Field::note("keys down", down.empty() ? "none" : down));
+}
+
 }  // namespace alp85::periph

@@ -48,6 +48,7 @@ public:
     // Part: keys are contacts, with no reset and no clock of their own; the keypad only follows
     // the machine's time so that a snapshot can check it.
     std::string_view name() const override { return "keypad"; }
+    void describe(Description& d) const override;
     std::string_view tag() const override { return "KEYS"; }
     std::uint8_t state_version() const override { return 2; }
     void reset(std::uint64_t) override {}

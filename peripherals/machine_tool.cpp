@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace alp85::periph {
@@ -175,6 +176,30 @@ MachineTool::Sense MachineTool::sense(Axis axis, std::uint64_t t) {
 }
 
 std::int64_t MachineTool::commanded_steps(Axis axis) const { return s_.axes[idx(axis)].sequencer.count; }
+
+void MachineTool::describe(Description& d) const {
+    d.title = "machine tool (3 axes: sequencer, stepping motor, table, transducer)";
+    d.add(Field::note("motors", s_.model == MotorModel::Ideal ? "ideal" : "physical"));
+    d.add(Field::note("feedback", s_.feedback == Feedback::Scale ? "scale" : "commanded steps"));
+    for (int a = 0; a < kAxes; ++a) {
+        const auto axis = static_cast<Axis>(a);
+        const std::string n(1, "XYZ"[a]);
+        const std::int64_t steps = std::llround(table_steps(axis));
+        char mm[32], speed[32];
+        std::snprintf(mm, sizeof mm, "%.3f mm", table_mm(axis));
+        std::snprintf(speed, sizeof speed, "%.1f rad/s", rotor_speed_rad_s(axis));
+        const EndStop stop = end_stop(axis);
+        Field& f = d.add(Field::note(n, std::to_string(steps) + " steps, " + mm));
+        f.add(Field::decimal("steps", steps));
+        f.add(Field::note("table", mm));
+        f.add(Field::decimal("count", transducer_count(axis)));
+        f.add(Field::decimal("commanded", commanded_steps(axis)));
+        f.add(Field::decimal("lost", lost_steps(axis)));
+        f.add(Field::decimal("end stop", stop.at, 0, stop.at > 0 ? "high" : stop.at < 0 ? "low" : "free"));
+        f.add(Field::bits("phases", phase_pattern(axis), 0, 4, "A /A B /B")).lsb = -1;
+        f.add(Field::note("rotor", std::string(speed) + (settled(axis) ? ", settled" : "")));
+    }
+}
 
 double MachineTool::rotor_angle_deg(Axis axis) const {
     const int a = idx(axis);

@@ -105,6 +105,7 @@ public:
 
     // Part
     std::string_view name() const override { return "machine tool"; }
+    void describe(Description& d) const override;
     std::string_view tag() const override { return "TOOL"; }
     std::uint8_t state_version() const override { return 2; }
     void reset(std::uint64_t now) override { advance(now); }

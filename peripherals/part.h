@@ -1,6 +1,7 @@
 // A part of the board beside the CPU: a chip, the keypad, the machine tool. The Machine keeps
 // its parts in one list; its scheduler, RESET and snapshots loop over that list, so a new part
-// is added in one place (emu/board/machine.cpp, Machine::Machine) plus its wiring.
+// is added in one place (emu/board/machine.cpp, Machine::Machine) plus its wiring. The debugger's
+// front ends show a part through its describe() alone.
 //
 // Time is the CPU's T-state count. A part catches up lazily when advance(now) is called (the
 // machine calls it before every access, after every batch of instructions and before a snapshot)
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "emu/util/state_io.h"
+#include "peripherals/description.h"
 
 namespace alp85::periph {
 
@@ -28,6 +30,9 @@ public:
 
     // For the debugger and messages: "8155", "8279", "keypad", "machine tool".
     virtual std::string_view name() const = 0;
+    // Its registers, fields and their meanings for every debugger front end (description.h);
+    // a part without registers leaves it empty. Never changes the part.
+    virtual void describe(Description& d) const { (void)d; }
     // The snapshot section that holds this part's state: exactly four characters, and the
     // version of that state's layout (bump it when the field list changes).
     virtual std::string_view tag() const = 0;

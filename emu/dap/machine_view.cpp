@@ -1,6 +1,7 @@
 #include "emu/dap/machine_view.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 
@@ -13,8 +14,6 @@
 
 namespace alp85::dap {
 namespace {
-
-using Tool = periph::MachineTool;
 
 constexpr struct {
     const char* name;
@@ -113,35 +112,24 @@ std::vector<Variable> firmware_variables(const Machine& m, const SymbolTable& t)
     return v;
 }
 
-std::vector<Variable> rio(const Machine& m) {
-    const auto& s = m.rio().state();
-    static constexpr const char* kPortC[] = {"ALT1 (input)", "ALT4 (A strobed, B output)", "ALT3 (A strobed)", "ALT2 (output)"};
-    static constexpr const char* kTimer[] = {"single square", "square wave", "single pulse", "pulses"};
-    return {ro("command", fmt::format("{:02X}H: port A {}, port B {}, port C {}", s.command, s.command & 1 ? "out" : "in",
-                                      s.command & 2 ? "out" : "in", kPortC[(s.command >> 2) & 3])),
-            ro("port A latch", h2(s.latch[0])),
-            ro("port A pins", h2(s.pins[0])),
-            ro("port B latch", h2(s.latch[1])),
-            ro("port B pins", h2(s.pins[1])),
-            ro("port C latch", h2(s.latch[2])),
-            ro("port C pins", h2(s.pins[2])),
-            ro("timer", fmt::format("{} count {} ({}){}", s.running ? "running," : "stopped,", s.count, kTimer[static_cast<int>(s.mode)],
-                                    s.timer_flag ? ", TC reached" : "")),
-            ro("count length register", h4(s.count_length))};
+// A part's values as its description gives them; a value with fields expands to them (`ref`).
+Variable part_variable(const periph::Field& f, std::int64_t ref) {
+    return {f.name, f.shown_value(), f.watch.empty() ? "" : "watch: " + f.watch, f.fields.empty() ? 0 : ref, {}, true};
 }
 
-std::vector<Variable> kdc(const Machine& m) {
-    const auto& s = m.kdc().state();
-    std::string fifo;
-    for (unsigned i = 0; i < s.fifo_count; ++i) fifo += (i ? " " : "") + h2(s.fifo[(s.fifo_head + i) % 8]);
-    return {ro("mode", fmt::format("{:02X}H (display {}, keyboard mode {})", s.mode, (s.mode >> 3) & 3, s.mode & 7)),
-            ro("FIFO count", std::to_string(s.fifo_count)),
-            {"FIFO", fifo.empty() ? "empty" : fifo, "", k8279Fifo, {}, true},
-            ro("display address", fmt::format("{}{}", s.display_address, s.display_ai ? " (auto-increment)" : "")),
-            {"display RAM", "16 bytes", "", k8279DisplayRam, {}, true},
-            ro("overrun", s.overrun ? "1" : "0"),
-            ro("underrun", s.underrun ? "1" : "0"),
-            ro("IRQ", s.irq ? "1" : "0")};
+std::vector<Variable> part_variables(const debug::Debugger& d, std::int64_t ref) {
+    const auto& parts = d.machine().parts();
+    const std::int64_t index = ref / kPartScope - 1, item = ref % kPartScope - 1;
+    if (index < 0 || index >= static_cast<std::int64_t>(parts.size())) return {};
+    const periph::Description desc = d.describe(*parts[static_cast<std::size_t>(index)]);
+    std::vector<Variable> v;
+    if (item < 0) {
+        for (std::size_t j = 0; j < desc.fields.size(); ++j)
+            v.push_back(part_variable(desc.fields[j], kPartScope * (index + 1) + static_cast<std::int64_t>(j) + 1));
+    } else if (item < static_cast<std::int64_t>(desc.fields.size())) {
+        for (const periph::Field& f : desc.fields[static_cast<std::size_t>(item)].fields) v.push_back(part_variable(f, 0));
+    }
+    return v;
 }
 
 std::vector<Variable> display(const Machine& m) {
@@ -151,39 +139,19 @@ std::vector<Variable> display(const Machine& m) {
     return v;
 }
 
-std::vector<Variable> tool(const Machine& m) {
-    const Tool& t = m.tool();
-    std::vector<Variable> v = {ro("motors", t.model() == Tool::MotorModel::Ideal ? "ideal" : "physical"),
-                               ro("feedback", t.feedback() == Tool::Feedback::Scale ? "scale" : "commanded steps")};
-    for (int a = 0; a < 3; ++a) {
-        const auto axis = static_cast<Tool::Axis>(a);
-        v.push_back({std::string(1, "XYZ"[a]), fmt::format("{} steps, {:.3f} mm", std::llround(t.table_steps(axis)), t.table_mm(axis)),
-                     "axis", kAxisScope + a, {}, true});
-    }
-    return v;
-}
-
-std::vector<Variable> axis(const Machine& m, int a) {
-    const Tool& t = m.tool();
-    const auto axis = static_cast<Tool::Axis>(a);
-    const auto stop = t.end_stop(axis);
-    return {ro("steps", std::to_string(std::llround(t.table_steps(axis)))),
-            ro("mm", fmt::format("{:.4f}", t.table_mm(axis))),
-            ro("transducer count", std::to_string(t.transducer_count(axis))),
-            ro("commanded steps", std::to_string(t.commanded_steps(axis))),
-            ro("lost steps", std::to_string(t.lost_steps(axis))),
-            ro("end stop", stop.at > 0 ? "high" : stop.at < 0 ? "low" : "free")};
-}
-
 }  // namespace
 
-std::vector<ScopeInfo> scope_list() {
-    return {{"Registers", kRegisterScope, "registers"},
-            {"Firmware variables", kFirmwareScope, "locals"},
-            {"8155", k8155Scope, ""},
-            {"8279", k8279Scope, ""},
-            {"Display", kDisplayScope, ""},
-            {"Machine tool", kToolScope, ""}};
+std::vector<ScopeInfo> scope_list(const debug::Debugger& d) {
+    std::vector<ScopeInfo> out = {{"Registers", kRegisterScope, "registers"}, {"Firmware variables", kFirmwareScope, "locals"}};
+    const auto& parts = d.machine().parts();
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        if (d.describe(*parts[i]).fields.empty()) continue;
+        std::string name(parts[i]->name());
+        name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));  // "Machine tool"
+        out.push_back({name, kPartScope * static_cast<std::int64_t>(i + 1), ""});
+    }
+    out.push_back({"Display", kDisplayScope, ""});
+    return out;
 }
 
 std::vector<Variable> list_variables(const debug::Debugger& d, std::int64_t ref) {
@@ -197,25 +165,8 @@ std::vector<Variable> list_variables(const debug::Debugger& d, std::int64_t ref)
         }
         case kInterruptScope: return interrupts(m);
         case kFirmwareScope: return firmware_variables(m, d.program());
-        case k8155Scope: return rio(m);
-        case k8279Scope: return kdc(m);
-        case k8279DisplayRam: {
-            std::vector<Variable> v;
-            for (int i = 0; i < 16; ++i) v.push_back(ro(std::to_string(i), h2(m.kdc().state().display_ram[i])));
-            return v;
-        }
-        case k8279Fifo: {
-            const auto& s = m.kdc().state();
-            std::vector<Variable> v;
-            for (unsigned i = 0; i < s.fifo_count; ++i) v.push_back(ro(std::to_string(i), h2(s.fifo[(s.fifo_head + i) % 8])));
-            return v;
-        }
         case kDisplayScope: return display(m);
-        case kToolScope: return tool(m);
-        case kAxisScope:
-        case kAxisScope + 1:
-        case kAxisScope + 2: return axis(m, static_cast<int>(ref - kAxisScope));
-        default: return {};
+        default: return ref >= kPartScope ? part_variables(d, ref) : std::vector<Variable>{};
     }
 }
 

@@ -1,5 +1,5 @@
 // The machine as a debug client sees it: scopes of named values (registers and flags, the
-// firmware's variables, the 8155, the 8279 and the display, the machine tool), the call stack,
+// firmware's variables, one scope per part from its description, the display), the call stack,
 // and the values of expressions. Plain functions of the Debugger, no protocol.
 #pragma once
 
@@ -14,15 +14,17 @@ namespace alp85::dap {
 
 // variablesReference numbers: fixed, since the views are computed afresh at each request.
 inline constexpr std::int64_t kRegisterScope = 1, kFlagScope = 2, kInterruptScope = 3, kFirmwareScope = 10,
-                              k8155Scope = 20, k8279Scope = 30, k8279DisplayRam = 31, k8279Fifo = 32,
-                              kDisplayScope = 40, kToolScope = 50, kAxisScope = 51;  // 51, 52, 53: X, Y, Z
+                              kDisplayScope = 40;
+// The parts (Machine::parts(), in order): part i's scope is kPartScope * (i + 1), the fields of
+// its j-th value kPartScope * (i + 1) + j + 1.
+inline constexpr std::int64_t kPartScope = 1000;
 
 struct ScopeInfo {
     std::string name;
     std::int64_t ref;
     std::string hint;  // DAP presentationHint: "registers", "locals", ""
 };
-std::vector<ScopeInfo> scope_list();
+std::vector<ScopeInfo> scope_list(const debug::Debugger& d);
 
 struct Variable {
     std::string name, value, type;

@@ -1,6 +1,6 @@
 // threads, stackTrace, scopes, variables, setVariable, evaluate: the machine as the editor shows
 // it. Scopes: the registers and flags, the firmware's variables (RAM symbols with their sizes),
-// the 8155, the 8279 and the display, the machine tool's axes.
+// each part's description (machine_view.h) and the display.
 #include <algorithm>
 #include <cmath>
 
@@ -52,7 +52,7 @@ void Adapter::scopes(const Json& args, Json& body) {
     require_stopped();
     need_int(args, "frameId");
     Json out = Json::array();
-    for (const ScopeInfo& s : scope_list())
+    for (const ScopeInfo& s : scope_list(session_->debugger()))
         out.push_back({{"name", s.name}, {"variablesReference", s.ref}, {"expensive", false},
                        {"presentationHint", s.hint}});
     body = {{"scopes", out}};
@@ -115,7 +115,7 @@ void Adapter::evaluate(const Json& args, Json& body) {
         return;
     }
     // The debug console: one word that is a value shows it (YAC, HL, word[1B30H]); anything else
-    // is a line for the debugger's console (break, x, info 8279, finish, ...) or the command
+    // is a line for the debugger's console (break, x, info PART, finish, ...) or the command
     // language (press, type, expect, print display, ...).
     std::string word = expression.substr(0, expression.find_first_of(" \t"));
     const bool one_word = expression.find_first_not_of(" \t", word.size()) == std::string::npos;

@@ -94,7 +94,7 @@ const std::vector<Console::CommandDef>& Console::commands() {
         {"up", {}, &Console::cmd_up, "up [N]: select the frame N (default 1) calls out, the caller's"},
         {"down", {"do"}, &Console::cmd_down, "down [N]: select the frame N (default 1) calls in"},
         {"jump", {"j"}, &Console::cmd_jump, "jump LOCATION: continue at LOCATION (the PC set there, then continue)"},
-        {"info", {"i"}, &Console::cmd_info, "info registers|breakpoints|watchpoints|displays|display|8155|8279|axis [X|Y|Z]|line|frame|symbol ADDR"},
+        {"info", {"i"}, &Console::cmd_info, "info registers|breakpoints|watchpoints|displays|display|PART (8155, 8279, ...)|axis [X|Y|Z]|line|frame|symbol ADDR"},
         {"history", {}, &Console::cmd_history, "history [N]: the last N instructions (default 10) with the registers each changed"},
         {"expect", {}, &Console::cmd_expect, "expect EXPR: an error unless EXPR is not 0 (for batch sessions); the script language's expect forms work too"},
         {"help", {"h"}, &Console::cmd_help, "help [COMMAND]"},
@@ -353,7 +353,7 @@ std::string Console::cmd_rwatch(std::string_view a, int col) { return watch(a, c
 std::string Console::cmd_awatch(std::string_view a, int col) { return watch(a, col, WatchKind::Access); }
 
 // watch [byte|word] EXPR | EXPR..EXPR | port N [in|out] [== V] | axis X|Y|Z steps|count|lost|endstop
-//       | 8155 porta|portb|portc|command|timer|timerout | 8279 fifo|status     [if EXPR]
+//       | PART FIELD (a watch name of the part's description: 8155 porta, 8279 fifo)     [if EXPR]
 std::string Console::watch(std::string_view a, int col, WatchKind kind) {
     int ccol = 0;
     auto [what_text, cond] = split_if(a, ccol);
@@ -417,22 +417,24 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
         spec.what = fmt::format("axis {} {}", words[1], to_upper(words[2]) == "ENDSTOP" ? "end stop" : std::string(trim_blanks(words[2])));
         std::transform(spec.what.begin(), spec.what.end(), spec.what.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
         spec.what[5] = words[1][0];
-    } else if (words[0] == "8155" || words[0] == "8279") {
-        if (memory_only) return bad("rwatch and awatch watch memory; 'watch 8155 porta' watches a chip register");
-        static const std::map<std::string, ChipRegister> regs8155 = {
-            {"PORTA", ChipRegister::PortA}, {"PORTB", ChipRegister::PortB}, {"PORTC", ChipRegister::PortC},
-            {"COMMAND", ChipRegister::Command}, {"TIMER", ChipRegister::Timer}, {"TIMEROUT", ChipRegister::TimerOut}};
-        static const std::map<std::string, ChipRegister> regs8279 = {{"FIFO", ChipRegister::Fifo}, {"STATUS", ChipRegister::Status8279}};
-        const auto& table = words[0] == "8155" ? regs8155 : regs8279;
-        const auto it = words.size() == 2 ? table.find(words[1]) : table.end();
-        if (it == table.end())
-            return bad(words[0] == "8155" ? "expected: watch 8155 porta|portb|portc|command|timer|timerout"
-                                          : "expected: watch 8279 fifo|status", 1);
-        spec.kind = WatchKind::Chip;
-        spec.reg = it->second;
-        std::string r = words[1];
-        std::transform(r.begin(), r.end(), r.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        spec.what = fmt::format("{} {}", words[0], r);
+    } else if (const auto [part, part_words] = part_named(words); part && !(memory_only && part_words == words.size())) {
+        // PART FIELD: a value the part describes (its watch name: watch 8155 porta, watch 8279 fifo)
+        const periph::Description d = d_.describe(*part);
+        std::string field;
+        for (std::size_t i = part_words; i < words.size(); ++i) field += (field.empty() ? "" : " ") + words[i];
+        const periph::Field* f = d.find_watch(field);
+        if (memory_only || !f) {
+            std::string names;
+            for (const std::string& n : d.watch_names()) names += (names.empty() ? "" : "|") + n;
+            if (names.empty()) return bad(fmt::format("the {} has nothing to watch", part->name()));
+            if (memory_only)
+                return bad(fmt::format("rwatch and awatch watch memory; 'watch {} {}' watches a part", part->name(), f ? f->watch : d.watch_names().front()));
+            return bad(fmt::format("expected: watch {} {}", part->name(), names), part_words);
+        }
+        spec.kind = WatchKind::Part;
+        spec.part = std::string(part->name());
+        spec.field = f->watch;
+        spec.what = fmt::format("{} {}", part->name(), f->watch);
     } else {
         // Memory: [byte|word] EXPR, or EXPR..EXPR
         std::string_view m = w;
@@ -753,9 +755,15 @@ std::vector<std::string> Console::complete(std::string_view word, bool first_wor
     } else {
         for (const auto& [name, value] : d_.program().names())
             if (name.starts_with(up)) out.push_back(name);
-        for (std::string_view s : {"registers", "breakpoints", "displays", "display", "8155", "8279", "axis", "port", "word",
-                                   "byte", "porta", "portb", "count", "steps", "lost", "endstop", "fifo", "timer"})
+        for (std::string_view s : {"registers", "breakpoints", "displays", "display", "axis", "port", "word", "byte", "count",
+                                   "steps", "lost", "endstop"})
             if (to_upper(s).starts_with(up)) out.emplace_back(s);
+        // the parts and what their descriptions let one watch
+        for (const periph::Part* p : d_.machine().parts()) {
+            if (to_upper(p->name()).starts_with(up)) out.emplace_back(p->name());
+            for (const std::string& w : d_.describe(*p).watch_names())
+                if (to_upper(w).starts_with(up)) out.push_back(w);
+        }
     }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());

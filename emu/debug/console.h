@@ -7,7 +7,7 @@
 //   reverse-step/rs reverse-stepi/rsi reverse-next/rn reverse-nexti/rni reverse-finish/rfin
 //   reverse-continue/rc  print/p x display/disp undisplay set list/l disassemble/disas
 //   backtrace/bt frame/f up down jump/j info/i (registers breakpoints watchpoints display displays
-//   8155 8279 axis line frame symbol) history help quit/q
+//   PART axis line frame symbol) history help quit/q
 //
 // A line it does not know goes to the fallback: `alp85 debug` passes it to the script language
 // (docs/scripting.md: load, firmware, press, type, run until, wait display, expect, save,
@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "emu/debug/debugger.h"
@@ -59,7 +60,7 @@ public:
     std::string banner() const;
     // The stop as the console reports it (header, source line, displays); no commands run.
     std::string describe(const Stop& s);
-    // What `info WHAT` shows (registers, 8155, 8279, axis, breakpoints, ...), for panes.
+    // What `info WHAT` shows (registers, a part by its name, axis, breakpoints, ...), for panes.
     std::string info(std::string_view what) { return cmd_info(what, 1); }
     // A line of a loaded program's source (read once, kept), or nullopt.
     std::optional<std::string> source_line(const SourceLine& l);
@@ -142,8 +143,9 @@ private:
     // the address after them.
     std::string examine(std::uint16_t addr, int count, char fmt, char unit, std::uint16_t& next);
     std::string info_displays();
-    std::string info_8155();
-    std::string info_8279();
+    std::string info_part(const periph::Part& part);
+    // The part whose name the first words (upper case) spell, and how many words that took.
+    std::pair<periph::Part*, std::size_t> part_named(const std::vector<std::string>& words) const;
     std::string info_axis(std::string_view which, int col);
     std::string info_display();
     std::string show_displays();

@@ -452,46 +452,56 @@ std::string Console::info_displays() {
     return out;
 }
 
-std::string Console::info_8155() {
-    const periph::I8155& c = d_.machine().rio();
-    const auto& s = c.state();
-    static const char* kPortC[] = {"ALT1 (input)", "ALT2 (output)", "ALT3 (A strobed)", "ALT4 (A, B strobed)"};
-    static const char* kModes[] = {"single square wave", "continuous square wave", "single pulse", "continuous pulses"};
-    unsigned ram_first = 0, ram_last = 0;
-    for (const auto& r : board::kMemoryMap)
-        if (r.id == board::Memory::Ram8155) ram_first = r.base, ram_last = r.base + r.size - 1;
-    std::string out = fmt::format("8155 (RAM-I/O-timer) at ports {:02X}H-{:02X}H, RAM {:04X}H-{:04X}H\n",
-                                  board::io_region(board::Device::Rio8155).first, board::io_region(board::Device::Rio8155).last,
-                                  ram_first, ram_last);
-    out += fmt::format("command {:02X}H  status {:02X}H (timer flag {}, INTR A {} B {})\n", s.command, c.peek_status(), s.timer_flag ? 1 : 0,
-                       s.intr_ff[0] ? 1 : 0, s.intr_ff[1] ? 1 : 0);
-    out += fmt::format("port A  {}  latch {:02X}H  pins {:02X}H\n", (s.command & 1) ? "output" : "input ", s.latch[0],
-                       c.port_output(periph::I8155::Port::A));
-    out += fmt::format("port B  {}  latch {:02X}H\n", (s.command & 2) ? "output" : "input ", s.latch[1]);
-    out += fmt::format("port C  {}  latch {:02X}H\n", kPortC[static_cast<int>(c.port_c_mode())], s.latch[2]);
-    out += fmt::format("timer   count length {:04X}H ({} T, {}), {}, counter now {:04X}H, TIMER OUT {}\n", s.count_length,
-                       s.count_length & 0x3FFF, kModes[s.count_length >> 14], s.running ? "running" : "stopped",
-                       c.peek_counter(d_.machine().now()), c.timer_out() ? "high" : "low");
-    return out;
+namespace {
+// Entries (the FIFO's, display RAM's: each named by its position, no meaning of its own) are
+// listed on their field's line; registers' bit fields and other values get a line each.
+bool plain_entries(const periph::Field& f) {
+    if (f.fields.empty()) return false;
+    for (std::size_t i = 0; i < f.fields.size(); ++i) {
+        const periph::Field& c = f.fields[i];
+        if (c.name != std::to_string(i) || !c.fields.empty() || !c.text.empty() || c.shown == periph::Field::Shown::Text) return false;
+    }
+    return true;
+}
+void render(const std::vector<periph::Field>& fields, int indent, std::string& out) {
+    std::size_t w = 0;
+    for (const periph::Field& f : fields) w = std::max(w, f.name.size());
+    for (const periph::Field& f : fields) {
+        std::string line = fmt::format("{:{}}{:<{}}  {}", "", indent, f.name, w, f.shown_value());
+        if (plain_entries(f)) {
+            std::string list;
+            for (const periph::Field& c : f.fields) list += (list.empty() ? "" : " ") + c.number();
+            if (list != f.text) line += ": " + list;
+        }
+        out += line + '\n';
+        if (!plain_entries(f)) render(f.fields, indent + 4, out);
+    }
+}
+}  // namespace
+
+std::pair<periph::Part*, std::size_t> Console::part_named(const std::vector<std::string>& words) const {
+    periph::Part* best = nullptr;
+    std::size_t best_n = 0;
+    for (periph::Part* p : d_.machine().parts()) {
+        // the part's name word by word (longest match: "machine tool" before a part named "machine")
+        std::vector<std::string> name;
+        const std::string up = to_upper(p->name());
+        for (std::size_t i = 0; i < up.size();) {
+            const auto sp = up.find(' ', i);
+            name.push_back(up.substr(i, sp == std::string::npos ? std::string::npos : sp - i));
+            i = sp == std::string::npos ? up.size() : sp + 1;
+        }
+        if (name.size() <= words.size() && name.size() > best_n && std::equal(name.begin(), name.end(), words.begin()))
+            best = p, best_n = name.size();
+    }
+    return {best, best_n};
 }
 
-std::string Console::info_8279() {
-    const periph::I8279& k = d_.machine().kdc();
-    const auto& s = k.state();
-    static const char* kKeys[] = {"encoded scan, 2-key lockout", "decoded scan, 2-key lockout", "encoded scan, N-key rollover",
-                                  "decoded scan, N-key rollover", "encoded sensor matrix", "decoded sensor matrix",
-                                  "strobed input, encoded", "strobed input, decoded"};
-    std::string out = fmt::format("8279 (keyboard/display) at ports {:02X}H-{:02X}H\n", board::io_region(board::Device::Kdc8279).first,
-                                  board::io_region(board::Device::Kdc8279).last);
-    out += fmt::format("mode {:02X}H: {} digits, {} entry; keyboard {}; prescaler {}\n", s.mode, k.sixteen_digits() ? 16 : 8,
-                       k.right_entry() ? "right" : "left", kKeys[static_cast<int>(k.key_mode())], s.prescaler);
-    out += fmt::format("status {:02X}H  FIFO {} entr{}:", k.peek_status(d_.machine().now()), s.fifo_count, s.fifo_count == 1 ? "y" : "ies");
-    for (int i = 0; i < s.fifo_count; ++i) out += fmt::format(" {:02X}H", s.fifo[static_cast<std::size_t>((s.fifo_head + i) % 8)]);
-    out += fmt::format("{}{}  IRQ {}\n", s.overrun ? "  overrun" : "", s.underrun ? "  underrun" : "", s.irq ? "high" : "low");
-    out += "display RAM:";
-    for (int i = 0; i < 16; ++i) out += fmt::format(" {:02X}", s.display_ram[static_cast<std::size_t>(i)]);
-    out += fmt::format("\nnext data {} {}{:X}H{}  inhibit/blank {:X}H\n", s.read_display ? "read: display RAM" : "read: FIFO",
-                       "write: display RAM ", s.display_address, s.display_ai ? " (auto-increment)" : "", s.inhibit_blank);
+std::string Console::info_part(const periph::Part& part) {
+    const periph::Description d = d_.describe(part);
+    if (d.empty()) return fmt::format("The {} has nothing to show.\n", part.name());
+    std::string out = (d.title.empty() ? std::string(part.name()) : d.title) + '\n';
+    render(d.fields, 2, out);
     return out;
 }
 
@@ -531,14 +541,23 @@ std::string Console::cmd_info(std::string_view a, int col) {
     if (what == "SYMBOL" || what == "SYM") return info_symbol(rest, wcol);
     if (what == "DISPLAYS") return info_displays();
     if (what == "DISPLAY") return info_display();
-    if (what == "8155") return info_8155();
-    if (what == "8279") return info_8279();
+    {
+        std::vector<std::string> words;  // a part by its name: info 8155, info machine tool
+        for (std::size_t i = 0; i < a.size();) {
+            const auto end = std::min(a.find(' ', i), a.size());
+            if (end > i) words.push_back(to_upper(a.substr(i, end - i)));
+            i = end + 1;
+        }
+        if (const auto [part, n] = part_named(words); part && n == words.size()) return info_part(*part);
+    }
     if (what == "AXIS" || what == "AXES" || what == "TOOL") return info_axis(rest, wcol);
     if (what == "LINE" || what == "FRAME" || what == "F") return location_lines(d_.machine().cpu().regs().pc);
     if (what == "HISTORY") return fmt::format("history {}: {} snapshots from T = {}\n", d_.history() ? "on" : "off",
                                               d_.history_snapshots(), d_.history_start());
-    return error(col, what.empty() ? "info what? registers, breakpoints, watchpoints, displays, display, 8155, 8279, axis, line, symbol, history"
-                                   : fmt::format("no 'info {}' (registers, breakpoints, watchpoints, displays, display, 8155, 8279, axis, line, symbol, history)", a));
+    std::string parts;
+    for (const periph::Part* p : d_.machine().parts()) parts += fmt::format("{}, ", p->name());
+    return error(col, what.empty() ? fmt::format("info what? registers, breakpoints, watchpoints, displays, display, {}axis, line, symbol, history", parts)
+                                   : fmt::format("no 'info {}' (registers, breakpoints, watchpoints, displays, display, {}axis, line, symbol, history)", a, parts));
 }
 
 std::string Console::cmd_history(std::string_view a, int col) {

@@ -66,7 +66,10 @@ void Debugger::rebaseline() {
                 }
                 break;
             case WatchKind::Tool: w.last_value = tool_value(w.quantity, w.axis); break;
-            case WatchKind::Chip: w.last_value = chip_value(w.reg); break;
+            case WatchKind::Part:
+                w.shadow.clear();
+                w.last_value = part_watch_value(w);
+                break;
             default: break;
         }
     }
@@ -395,19 +398,37 @@ std::int64_t Debugger::tool_value(ToolQuantity q, periph::MachineTool::Axis axis
     return 0;
 }
 
-std::int64_t Debugger::chip_value(ChipRegister r) const {
-    const auto& rio = m_.rio().state();
-    switch (r) {
-        case ChipRegister::PortA: return rio.latch[0];
-        case ChipRegister::PortB: return rio.latch[1];
-        case ChipRegister::PortC: return rio.latch[2];
-        case ChipRegister::Command: return rio.command;
-        case ChipRegister::Timer: return rio.count_length;
-        case ChipRegister::TimerOut: return m_.rio().timer_out() ? 1 : 0;
-        case ChipRegister::Fifo: return m_.kdc().state().fifo_count;
-        case ChipRegister::Status8279: return m_.kdc().peek_status(m_.now());
-    }
-    return 0;
+periph::Description Debugger::describe(const periph::Part& part) const {
+    periph::Description d;
+    d.now = m_.now();
+    part.describe(d);
+    return d;
+}
+
+std::int64_t Debugger::part_watch_value(Watchpoint& w, bool io) {
+    const periph::Part* p = m_.find_part(w.part);
+    if (!p) return w.last_value;
+    if (!io && !w.shadow.empty() && p->now() == w.part_now && m_.input_log().size() == w.part_inputs) return w.last_value;
+    w.part_now = p->now();
+    w.part_inputs = m_.input_log().size();
+    part_state_.clear();
+    p->save(part_state_);
+    if (part_state_ == w.shadow) return w.last_value;
+    w.shadow.swap(part_state_);
+    periph::Description d;
+    d.now = p->now();
+    p->describe(d);
+    const periph::Field* f = d.find_watch(w.field);
+    return f ? f->value : w.last_value;
+}
+
+std::optional<std::int64_t> Debugger::part_value(std::string_view part, std::string_view watch) const {
+    const periph::Part* p = m_.find_part(part);
+    if (!p) return std::nullopt;
+    const periph::Description d = describe(*p);
+    const periph::Field* f = d.find_watch(watch);
+    if (!f) return std::nullopt;
+    return f->value;
 }
 
 }  // namespace alp85::debug

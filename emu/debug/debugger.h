@@ -124,11 +124,10 @@ enum class WatchKind : std::uint8_t {
     Access,  // memory read or written (awatch)
     Port,    // an I/O port: IN, OUT or either, with an optional value
     Tool,    // a machine-tool quantity changes
-    Chip,    // a chip register changes
+    Part,    // a value a part describes changes (watch 8155 porta, watch 8279 fifo)
 };
 enum class PortDir : std::uint8_t { In, Out, Any };
 enum class ToolQuantity : std::uint8_t { Steps, Count, Lost, EndStop };
-enum class ChipRegister : std::uint8_t { PortA, PortB, PortC, Command, Timer, TimerOut, Fifo, Status8279 };
 
 struct Watchpoint {
     int number = 0;
@@ -139,15 +138,19 @@ struct Watchpoint {
     std::optional<std::uint8_t> value;   // Port: only this value
     ToolQuantity quantity = ToolQuantity::Steps;
     periph::MachineTool::Axis axis = periph::MachineTool::Axis::X;
-    ChipRegister reg = ChipRegister::PortA;
+    std::string part, field;             // Part: the part's name and the field's watch name
     bool enabled = true;
     std::optional<Expr> condition;
     unsigned ignore = 0;
     unsigned hits = 0;
     std::optional<HitCondition> hit_condition;
     std::vector<std::string> commands;
-    std::int64_t last_value = 0;          // Write, Tool, Chip: the value at the last check
-    std::vector<std::uint8_t> shadow;     // Write over more than a word: the bytes at the last check
+    std::int64_t last_value = 0;          // Write, Tool, Part: the value at the last check
+    int digits = 2;                       // Part: hex digits of its messages (0: signed decimal)
+    std::uint64_t part_now = 0;           // Part: the part's time and the inputs applied at the last check
+    std::size_t part_inputs = 0;
+    std::vector<std::uint8_t> shadow;     // Write over more than a word: the bytes at the last check;
+                                          // Part: the part's state at the last check
 };
 
 // A parsed watchpoint request, for add_watchpoint (the console parses text into one).
@@ -159,7 +162,7 @@ struct WatchSpec {
     std::optional<std::uint8_t> value;
     ToolQuantity quantity = ToolQuantity::Steps;
     periph::MachineTool::Axis axis = periph::MachineTool::Axis::X;
-    ChipRegister reg = ChipRegister::PortA;
+    std::string part, field;  // Part: the part's name and the field's watch name (Description::find_watch)
 };
 
 // A frame of the call stack (bt): found by reading the stack for return addresses.
@@ -342,9 +345,12 @@ public:
     // and DAP; an expression reads them when it is evaluated.
     Expr::Variables& variables() { return vars_; }
     const Expr::Variables& variables() const { return vars_; }
-    // The current value of a machine-tool quantity or chip register (no side effects).
+    // The current value of a machine-tool quantity (no side effects).
     std::int64_t tool_value(ToolQuantity q, periph::MachineTool::Axis axis) const;
-    std::int64_t chip_value(ChipRegister r) const;
+    // A part's description as of the machine's time (no side effects), and the value of the field
+    // `watch` names in it (nullopt: no such part or field).
+    periph::Description describe(const periph::Part& part) const;
+    std::optional<std::int64_t> part_value(std::string_view part, std::string_view watch) const;
     std::vector<Frame> backtrace() const;
 
     // Every outside input applied so far, with its T-state (Machine::input_log).
@@ -373,6 +379,12 @@ private:
     std::optional<Stop> begin(Active a, std::function<bool(const I8085&)> target = {});
     Stop end_run(Stop s);
     std::optional<Stop> begin_with_target(std::function<bool(const I8085&)> target, StopReason reason);
+    // A Part watchpoint's value: the part's description read again only when the part's state
+    // bytes changed since the last read (a check runs before every instruction; describing costs
+    // far more than comparing), at the part's own time, as the machine last caught it up. A part
+    // changes only when it is caught up (its time moves), through I/O (`io`: the instruction was
+    // an IN or OUT) or by an outside input (a key, RESET); otherwise not even its bytes are read.
+    std::int64_t part_watch_value(Watchpoint& w, bool io = true);
     // Re-execution: the machine back at checkpoint `c`, then run to `t` (a position of this
     // timeline), recording boundaries and/or hits on the way; nothing stops it.
     void replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits);
@@ -391,6 +403,7 @@ private:
     Watchpoint* find_wp(int number);
 
     Machine& m_;
+    std::vector<std::uint8_t> part_state_;  // part_watch_value's scratch
     SymbolTable program_;
     std::vector<Listener> listeners_;
     std::vector<Breakpoint> breakpoints_;

@@ -41,7 +41,7 @@ void Debugger::Monitor::rebuild() {
                 if (w.dir != PortDir::In) port_out_[w.first] = true;
                 break;
             case WatchKind::Tool:
-            case WatchKind::Chip: state_watches_ = true; break;
+            case WatchKind::Part: state_watches_ = true; break;
         }
     }
     any_bp_ = bp_.any();
@@ -123,9 +123,15 @@ bool Debugger::Monitor::check_state(const I8085& cpu) {
     const std::uint64_t t = cpu.tstates();
     Hit hit{t, StopReason::Watchpoint, 0, {}, {}, last_pc};
     for (Watchpoint& w : d_.watchpoints_) {
-        if (!w.enabled || (w.kind != WatchKind::Tool && w.kind != WatchKind::Chip)) continue;
-        if (w.kind == WatchKind::Tool) d_.m_.tool().advance(t);  // the table moves on its own
-        const std::int64_t v = w.kind == WatchKind::Tool ? d_.tool_value(w.quantity, w.axis) : d_.chip_value(w.reg);
+        if (!w.enabled || (w.kind != WatchKind::Tool && w.kind != WatchKind::Part)) continue;
+        std::int64_t v = 0;
+        if (w.kind == WatchKind::Tool) {
+            d_.m_.tool().advance(t);  // the table moves on its own
+            v = d_.tool_value(w.quantity, w.axis);
+        } else {
+            const std::uint8_t op = d_.m_.peek(last_pc);
+            v = d_.part_watch_value(w, op == 0xD3 || op == 0xDB);  // OUT, IN
+        }
         if (v == w.last_value) continue;
         const std::int64_t old = w.last_value;
         w.last_value = v;
@@ -145,7 +151,7 @@ bool Debugger::Monitor::check_state(const I8085& cpu) {
             if (w.hit_condition && !w.hit_condition->met(w.hits)) continue;
         }
         if (!hit.number) hit.number = w.number;
-        hit.changes.push_back({w.number, w.what, old, v, w.kind == WatchKind::Tool ? 0 : 2, false});
+        hit.changes.push_back({w.number, w.what, old, v, w.kind == WatchKind::Tool ? 0 : w.digits, false});
     }
     if (hit.changes.empty()) return false;
     if (hits) {

@@ -123,7 +123,18 @@ Debugger::Added Debugger::add_watchpoint(const WatchSpec& spec, std::string_view
     w.value = spec.value;
     w.quantity = spec.quantity;
     w.axis = spec.axis;
-    w.reg = spec.reg;
+    w.part = spec.part;
+    w.field = spec.field;
+    if (w.kind == WatchKind::Part) {
+        const periph::Part* p = m_.find_part(w.part);
+        const periph::Description d = p ? describe(*p) : periph::Description{};
+        const periph::Field* f = d.find_watch(w.field);
+        if (!f) {
+            a.error = p ? fmt::format("the {} has no '{}' to watch", w.part, w.field) : fmt::format("no part '{}'", w.part);
+            return a;
+        }
+        w.digits = f->digits();
+    }
     if (w.last < w.first) std::swap(w.first, w.last);
     if (!condition.empty()) {
         ExprError err;

@@ -71,6 +71,8 @@ public:
         : o_(o), window_(w), shell_(session_options(o)), session_(shell_.session()) {
         if (!o.out_dir.empty()) session_.set_out_dir(o.out_dir);
         machine().tool().set_model(o.motor);
+        if (o.parts) o.parts(machine());
+        panes_.shown_part = o.show_part;
         session_.debugger().listen([this](const debug::Event& e) { ui_.add_log(e.text); });
         for (const auto& e : firmware::builtin()) ui_.firmware_names.emplace_back(e.name);
         for (std::size_t i = 0; i < ui_.firmware_names.size(); ++i)

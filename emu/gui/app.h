@@ -2,11 +2,16 @@
 // one script Session (and so one Machine and its Debugger) - the same engine as `alp85 script`.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "peripherals/machine_tool.h"
+
+namespace alp85 {
+class Machine;
+}
 
 namespace alp85::gui {
 
@@ -27,6 +32,10 @@ struct GuiOptions {
     bool key_map = false;               // open with the key map shown (F1 or ? toggles it)
     std::vector<std::string> click_lines;     // --debug test hook: click these FILE:LINE source rows
     std::vector<std::string> debug_commands;  // then run these debugger command lines
+    // An embedder's or a test's own parts: called with the machine before the script runs (it
+    // attaches them, Machine::attach); the front end shows them from their descriptions alone.
+    std::function<void(Machine&)> parts;
+    std::string show_part;                    // --debug: the chip pane brings this part's tab forward
 };
 
 // Opens the window and runs until it is closed or an exit condition of `o` is met. Returns the

@@ -79,6 +79,22 @@ void toggle_breakpoint(DebugPanes& p, script::DebugShell& shell, int row) {
     p.last_t = ~0ull;
 }
 
+std::vector<DebugPanes::PartPane> part_panes(script::DebugShell& shell) {
+    std::vector<DebugPanes::PartPane> out;
+    for (const periph::Part* part : shell.debugger().machine().parts()) {
+        if (shell.debugger().describe(*part).empty()) continue;
+        DebugPanes::PartPane pane{std::string(part->name()), {}};
+        const std::string text = shell.console().info(part->name());
+        for (std::size_t start = 0; start < text.size();) {
+            const auto nl = std::min(text.find('\n', start), text.size());
+            pane.lines.push_back(text.substr(start, nl - start));
+            start = nl + 1;
+        }
+        out.push_back(std::move(pane));
+    }
+    return out;
+}
+
 void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     debug::Debugger& d = shell.debugger();
     Machine& m = d.machine();
@@ -99,7 +115,7 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
             r.a, r.f, r.sp, r.b, r.c, r.pc, r.d, r.e, m.peek(r.hl()), r.h, r.l, m.cpu().halted() ? "HALTED" : "", f(0x80), f(0x40),
             f(0x10), f(0x04), f(0x01), f(0x02), f(0x20), m.cpu().interrupts_enabled() ? 1 : 0, (rim >> 2) & 1, (rim >> 1) & 1, rim & 1,
             (rim >> 6) & 1, m.now(), board::ms_from_tstates(m.now()));
-        p.chips = shell.console().info("8155") + shell.console().info("8279");
+        p.parts = part_panes(shell);
         p.last_t = m.now();
     }
 
@@ -155,11 +171,21 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     }
     ImGui::End();
 
-    // ---- the chips ----
+    // ---- the parts: a tab each, showing its description ----
     ImGui::SetNextWindowPos({kChipsRect.x, kChipsRect.y});
     ImGui::SetNextWindowSize({kChipsRect.w, kChipsRect.h});
-    ImGui::Begin("8155 / 8279", nullptr, kPane);
-    ImGui::TextWrapped("%s", p.chips.c_str());  // wrapped to the pane: no line cut at its edge
+    ImGui::Begin("Parts", nullptr, kPane | ImGuiWindowFlags_HorizontalScrollbar);
+    if (ImGui::BeginTabBar("parts", ImGuiTabBarFlags_FittingPolicyScroll)) {
+        for (const DebugPanes::PartPane& part : p.parts) {
+            const bool bring = !p.shown_part.empty() && p.shown_part == part.name;
+            if (ImGui::BeginTabItem(part.name.c_str(), nullptr, bring ? ImGuiTabItemFlags_SetSelected : 0)) {
+                if (bring) p.shown_part.clear();  // it is in front: the user's clicks choose from now on
+                for (const std::string& l : part.lines) ImGui::TextUnformatted(l.c_str());
+                ImGui::EndTabItem();
+            }
+        }
+        ImGui::EndTabBar();
+    }
     ImGui::End();
 
     // ---- watch list ----

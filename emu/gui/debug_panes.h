@@ -1,6 +1,6 @@
 // The debugger's panes (`alp85 gui --debug`), in place of the machine tool's views: source with the
 // current line and breakpoints (a click on a line sets or clears one), registers and flags,
-// disassembly, memory, the 8155 and 8279, a watch list, step/next/finish and their reverse
+// disassembly, memory, the parts (a tab each, from their descriptions), a watch list, step/next/finish and their reverse
 // buttons, and the debugger's command line. They drive the same script::DebugShell (and so the same
 // Machine and debug::Debugger) as `alp85 debug`: every button is a command line of its own.
 #pragma once
@@ -25,7 +25,13 @@ struct DebugPanes {
     std::vector<std::string> watches{"word[YAC]", "word[XAC]", "word[1B30H]"};
     std::string new_watch;
     std::string memory = "1B00H";
-    std::string registers, chips;  // texts, refreshed when the machine moved
+    std::string registers;         // text, refreshed when the machine moved
+    struct PartPane {
+        std::string name;                // the part's name: the tab's label
+        std::vector<std::string> lines;  // its description as `info PART` renders it
+    };
+    std::vector<PartPane> parts;   // every part that describes itself, in the machine's order
+    std::string shown_part;        // the tab to bring forward (a test, or empty: the user's choice)
     // A run button pressed this frame: the app carries it out on the Debugger.
     enum class Request : std::uint8_t {
         None, Continue, Pause, Step, Next, Finish, ReverseContinue, ReverseStep, ReverseNext, ReverseFinish,
@@ -39,6 +45,8 @@ struct DebugPanes {
     void add_log(const std::string& text);
 };
 
+// The parts' panes as the chip pane draws them (every part with a description).
+std::vector<DebugPanes::PartPane> part_panes(script::DebugShell& shell);
 // Draws the panes; lines the user asked for (buttons, the command line) are run on `shell`.
 void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running);
 // A click on source row `row`: sets a breakpoint on that line, or deletes the one there.

@@ -8,50 +8,10 @@
 #include "emu/board/machine.h"
 #include "emu/program/image_loader.h"
 #include "peripherals/part.h"
+#include "tests/board/led_latch.h"
 
 namespace alp85::test {
 namespace {
-
-// Eight LEDs latched by OUT 00H; it integrates how long the LEDs were lit (T-states x lit LEDs)
-// and ticks a heartbeat every 1000 T-states (an event the scheduler must stop at).
-class LedLatch final : public periph::Part, public IoDevice {
-public:
-    struct State {
-        std::uint8_t value = 0;
-        std::uint64_t lit = 0;    // LED-T-states
-        std::uint64_t beats = 0;  // heartbeats seen
-        std::uint64_t now = 0;
-        template <class S, class Io>
-        static void fields(S& s, Io& io) { io(s.value), io(s.lit), io(s.beats), io(s.now); }
-    };
-    static constexpr std::uint64_t kBeat = 1000;
-
-    std::string_view name() const override { return "leds"; }
-    std::string_view tag() const override { return "LEDS"; }
-    std::uint8_t state_version() const override { return 1; }
-    void reset(std::uint64_t) override { s.value = 0; }
-    void advance(std::uint64_t now) override {
-        s.lit += (now - s.now) * static_cast<unsigned>(std::popcount(s.value));
-        s.beats = now / kBeat;
-        s.now = now;
-    }
-    std::uint64_t next_event() const override { return (s.now / kBeat + 1) * kBeat; }
-    std::uint64_t now() const override { return s.now; }
-    void save_state(StateWriter& w) const override { State::fields(s, w); }
-    void load_state(StateReader& r) override {
-        State n;
-        State::fields(n, r);
-        r.expect_end();
-        s = n;
-    }
-    std::uint8_t in(std::uint8_t, std::uint64_t) override { return s.value; }
-    void out(std::uint8_t, std::uint8_t v, std::uint64_t t) override {
-        advance(t);
-        s.value = v;
-    }
-
-    State s;
-};
 
 // MVI A,55H (7 T) / OUT 00H (10 T: its I/O write cycle starts at T-state 7 + 7 = 14) / JMP $ (10 T).
 const std::vector<std::uint8_t> kProgram = {0x3E, 0x55, 0xD3, 0x00, 0xC3, 0x04, 0x08};
@@ -128,6 +88,24 @@ TEST(Parts, AMachineWithoutThePartRefusesItsSnapshot) {
         EXPECT_NE(std::string(e.what()).find("LEDS"), std::string::npos) << e.what();
     }
     EXPECT_EQ(plain.snapshot_bytes(), before);
+}
+
+// The toy describes itself: its latch as OUT 00H wrote it (55H: LEDs 0, 2, 4, 6 lit) and its
+// heartbeats (one per 1000 T-states), read without changing it.
+TEST(Parts, AToyPartDescribesItsTwoRegisters) {
+    Board b;
+    b.m.run_until(10'000);
+    const std::vector<std::uint8_t> before = b.m.snapshot_bytes();
+    periph::Description d;
+    d.now = b.m.now();
+    b.leds.describe(d);
+    ASSERT_EQ(d.fields.size(), 2u);
+    EXPECT_EQ(d.fields[0].name, "latch");
+    EXPECT_EQ(d.fields[0].shown_value(), "55H: 4 lit");
+    EXPECT_EQ(d.find_watch("LATCH"), &d.fields[0]);
+    EXPECT_EQ(d.fields[1].name, "heartbeats");
+    EXPECT_EQ(d.fields[1].value, static_cast<std::int64_t>(b.m.now() / 1000));
+    EXPECT_EQ(b.m.snapshot_bytes(), before);
 }
 
 TEST(Parts, TwoPartsWithOneTagAreRefused) {

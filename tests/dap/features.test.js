@@ -212,6 +212,34 @@ test('a breakpoint condition reads a convenience variable of the console', async
   }
 });
 
+// The 8155's port C mode as DAP's scope and the console's `info 8155` show it: one field of the
+// 8155's own description. Command 05H sets port A out, port B in and bits 3-2 = 01, which the
+// 8155/8156 data sheet's command register table names ALT3 (00 ALT1, 11 ALT2, 01 ALT3, 10 ALT4).
+test('the 8155 scope and info 8155 show the same port C mode: ALT3 for bits 01', async () => {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'alp85-dap-'));
+  const src = path.join(dir, 'alt3.asm');
+  fs.writeFileSync(src, '        ORG     0800H\nSTART:  MVI     A,05H\n        OUT     0F8H\nHERE:   JMP     HERE\n        END     START\n');
+  const dc = await started({ program: src, monitor: false, realTime: false });
+  try {
+    await dc.setBreakpointsRequest({ source: { path: src }, breakpoints: [{ line: 4 }] });
+    const stop = await stopAfter(dc, dc.configurationDoneRequest());
+    assert.equal(stop.reason, 'breakpoint');
+    const command = (await scopeVars(dc, '8155')).find((v) => v.name === 'command');
+    assert.match(command.value, /^05H: port A out, port B in, port C ALT3 /);
+    const fields = (await dc.variablesRequest({ variablesReference: command.variablesReference })).body.variables;
+    const dapMode = value(fields, 'port C');
+    assert.match(dapMode, /^bits 3-2 = 01: ALT3 /);
+    const info = (await dc.evaluateRequest({ expression: 'info 8155', context: 'repl' })).body.result;
+    const line = info.split('\n').find((l) => /^\s+port C\s+bits 3-2/.test(l));
+    assert.ok(line, info);
+    assert.equal(line.trim().replace(/^port C\s+/, ''), dapMode);
+    await finished(dc);
+  } finally {
+    dc._adapterProcess.kill();
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+});
+
 test('over TCP: paced to the board clock, pause, restart, terminate', async () => {
   const server = cp.spawn(ALP85, ['dap', '--port', '0'], { stdio: ['ignore', 'ignore', 'pipe'] });
   const exited = new Promise((resolve) => server.on('exit', (code, signal) => resolve({ code, signal })));

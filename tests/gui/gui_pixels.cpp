@@ -6,6 +6,7 @@
 //                                                  the debugger's source pane (--debug): row N has
 //                                                  the current line's colour, row M a breakpoint dot
 //                                                  and not that colour; a pane's rect has text drawn
+//   gui_pixels SHOT.png --blank-in X,Y,W,H         no text drawn in that rect
 //   gui_pixels SHOT.png --tool X,Y --bounds X0,Y0,X1,Y1 [--not-tool X,Y]
 //                                                  the tool's colour where the table view (fitted to
 //                                                  the bounds, mm) draws the table position X,Y
@@ -126,8 +127,9 @@ int main(int argc, char** argv) {
             }
         } else if (opt == "--fits" || opt == "--size") {
             continue;
-        } else if (opt == "--text-in") {
-            // Text drawn: enough light pixels (ImGui's text is near white on the dark panes).
+        } else if (opt == "--text-in" || opt == "--blank-in") {
+            // Text drawn: enough light pixels (ImGui's text is near white on the dark panes);
+            // blank: none at all.
             const Vec2 a = to_window(g_fit, std::stof(items[0]), std::stof(items[1]));
             const int x0 = static_cast<int>(a.x), y0 = static_cast<int>(a.y);
             const int w = static_cast<int>(std::stof(items[2]) * g_fit.scale), h = static_cast<int>(std::stof(items[3]) * g_fit.scale);
@@ -137,11 +139,12 @@ int main(int argc, char** argv) {
                     const Rgb c = img.at(x, y);
                     light += c.r > 180 && c.g > 180 && c.b > 180;
                 }
-            if (light < 50) {
-                std::printf("FAIL no text in %d,%d %dx%d (%d light pixels)\n", x0, y0, w, h, light);
+            const bool want_text = opt == "--text-in";
+            if (want_text ? light < 50 : light > 0) {
+                std::printf("FAIL %s in %d,%d %dx%d (%d light pixels)\n", want_text ? "no text" : "text", x0, y0, w, h, light);
                 ++failures;
             } else {
-                std::printf("ok   text in %d,%d %dx%d (%d light pixels)\n", x0, y0, w, h, light);
+                std::printf("ok   %s in %d,%d %dx%d (%d light pixels)\n", want_text ? "text" : "blank", x0, y0, w, h, light);
             }
         } else {
             std::vector<double>& v = opt == "--tool" ? tool : opt == "--not-tool" ? not_tool : bounds;

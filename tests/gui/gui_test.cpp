@@ -2,12 +2,16 @@
 // ideal line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "emu/board/machine.h"
+#include "emu/gui/debug_panes.h"
 #include "emu/gui/input.h"
 #include "emu/gui/layout.h"
 #include "emu/gui/pacer.h"
 #include "emu/gui/tool_view.h"
 #include "emu/gui/toolpath.h"
+#include "tests/board/led_latch.h"
 
 namespace alp85::gui {
 namespace {
@@ -209,6 +213,23 @@ TEST(Labels, TheTableTitleAndTheAxisHeadersAreNotClipped) {
     EXPECT_LE(headers, kAxesRect.w - 2 * ImGui::GetStyle().WindowPadding.x);
     ImGui::EndFrame();
     ImGui::DestroyContext();
+}
+
+// The chip pane has a tab per part that describes itself: a toy part attached in one line gets
+// one, listing its two registers as `info leds` renders them, with no GUI code of its own.
+TEST(PartPane, AToyPartAddedInOneLineHasItsTab) {
+    test::LedLatch leds;  // outlives the machine it is attached to
+    script::DebugShell shell{script::SessionOptions{}};
+    shell.debugger().machine().attach(leds, &leds, 0x00, 0x00);
+    const auto panes = part_panes(shell);
+    const auto tab = std::find_if(panes.begin(), panes.end(), [](const DebugPanes::PartPane& p) { return p.name == "leds"; });
+    ASSERT_NE(tab, panes.end());
+    ASSERT_EQ(tab->lines.size(), 3u);
+    EXPECT_EQ(tab->lines[0], "LED latch (a toy part)");
+    EXPECT_EQ(tab->lines[1], "  latch       00H: 0 lit");
+    EXPECT_EQ(tab->lines[2], "  heartbeats  0");
+    for (const char* board_part : {"8155", "8279", "machine tool"})
+        EXPECT_TRUE(std::any_of(panes.begin(), panes.end(), [&](const DebugPanes::PartPane& p) { return p.name == board_part; }));
 }
 
 }  // namespace
