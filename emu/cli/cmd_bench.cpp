@@ -41,7 +41,7 @@ int run_bench_cpu(const BenchArgs& args) {
         std::printf("T-states:     %llu\n", static_cast<unsigned long long>(t));
         std::printf("wall time:    %.3f s (process CPU time %.3f s)\n", seconds, cpu_seconds);
         if (seconds > 0)
-            std::printf("T-states/s:   %.4g (%.0fx a 3.072 MHz 8085)\n", t / seconds, t / seconds / 3.072e6);
+            std::printf("T-states/s:   %.4g (%.0fx a 3.072 MHz 8085)\n", t / seconds, t / seconds / board::kCpuHz);
         if (cpu_seconds > 0) std::printf("per CPU second: %.4g T-states\n", t / cpu_seconds);
     }
     return 0;
@@ -85,7 +85,7 @@ int run_bench_machine() {
         for (const auto& [tool, name] : {std::pair{MachineBenchTool::None, "no tool"}, std::pair{MachineBenchTool::Ideal, "ideal"},
                                          std::pair{MachineBenchTool::Physical, "physical"}}) {
             const MachineBenchRun r = run_machine_bench(tool, 11, fast);
-            const double machine_s = static_cast<double>(r.tstates) / 3.072e6;
+            const double machine_s = static_cast<double>(r.tstates) / board::kCpuHz;
             std::printf("  %-9s   %.3f s machine time in %.4f s CPU time: %.0fx real time", name, machine_s, r.host_seconds,
                         machine_s / r.host_seconds);
             if (tool != MachineBenchTool::None)
@@ -123,7 +123,7 @@ int run_bench_thesis() {
                 "              as alp85 runs it, and with every DL delay-loop iteration interpreted\n");
     // The ideal motors finish; the physical ones are given the same machine time (they may not
     // finish: see docs/results.md on the closed loop and the rotor's ringing).
-    std::uint64_t window = 120ull * 3'072'000;
+    std::uint64_t window = 120ull * board::kCpuHz;
     for (const auto& [model, name, target] :
          {std::tuple{periph::MachineTool::MotorModel::Ideal, "ideal", 1000}, std::tuple{periph::MachineTool::MotorModel::Physical, "physical", 200}}) {
         const ThesisBenchRun r = fastest_thesis_run(model, window, true);
@@ -146,7 +146,7 @@ int run_bench_thesis() {
             }
             window = r.tstates;
         }
-        const double machine_s = static_cast<double>(r.tstates) / 3.072e6;
+        const double machine_s = static_cast<double>(r.tstates) / board::kCpuHz;
         std::printf("%-9s     %.3f s machine time in %.3f s CPU time: %.0fx real time (target >= %dx); %s at %lld/%lld steps\n",
                     name, machine_s, r.host_seconds, machine_s / r.host_seconds, target,
                     r.finished ? "Bitti," : "no Bitti in that time, tables", static_cast<long long>(r.x_steps),
@@ -158,7 +158,7 @@ int run_bench_thesis() {
 }
 int run_bench_debug() {
     std::printf("workload:     thesis-fixed, (0100, 0100) to (3000, 2000) steps at 300 mm/min, physical motors\n");
-    const std::uint64_t window = 50ull * 3'072'000;
+    const std::uint64_t window = 50ull * board::kCpuHz;
     // The fastest of three (a busy host slows single runs unevenly).
     DebugBenchResult r = run_debug_bench(window);
     for (int i = 1; i < 3 && r.error.empty(); ++i) {
@@ -174,7 +174,7 @@ int run_bench_debug() {
         std::fprintf(stderr, "alp85 bench debug: the walk-through failed: %s\n", r.error.c_str());
         return 1;
     }
-    const double machine_s = static_cast<double>(r.tstates) / 3.072e6;
+    const double machine_s = static_cast<double>(r.tstates) / board::kCpuHz;
     std::printf("(the fastest of three runs of each)\n");
     std::printf("script:       %.1f s machine time in %.3f s CPU time: %.0fx real time\n", machine_s, r.script_seconds,
                 machine_s / r.script_seconds);
@@ -185,7 +185,7 @@ int run_bench_debug() {
                 machine_s, r.dap_seconds, machine_s / r.dap_seconds);
     std::printf("DAP / script: %.1f %% of the speed (target: at least 90 %%)\n", 100.0 * r.script_seconds / r.dap_seconds);
     std::printf("history:      %zu snapshots, %.1f MB, at %.3f s\n", r.snapshots, r.snapshot_bytes / 1e6,
-                static_cast<double>(r.reverse_at) / 3.072e6);
+                static_cast<double>(r.reverse_at) / board::kCpuHz);
     std::printf("reverse-step after 60 s: %.2f ms wall time (target: at most 50 ms); %s\n", r.reverse_step_ms,
                 r.exact ? "the state is the one saved before the step" : "NOT the state saved before the step");
     std::printf("reverse-continue to the last OUT: %.2f ms wall time\n", r.reverse_continue_ms);
