@@ -121,7 +121,8 @@ private:
                !button_up_;
     }
     void drive_debug_hooks();
-    void push_click(Vec2 at, bool down);
+    void push_button(Vec2 logical, bool down);
+    void push_click(Vec2 logical, bool down);
     long hook_wait_ = 0;               // frames still to let pass ("frames:N")
     std::optional<Vec2> button_up_;    // a hook's click, released next frame
     Toolpath path_;
@@ -520,17 +521,7 @@ void App::drive_clicks() {
         status_ = 2;
         return;
     }
-    const Vec2 c = key_rect(*k).centre();
-    SDL_Event e{};
-    e.type = click_down_ ? SDL_MOUSEBUTTONUP : SDL_MOUSEBUTTONDOWN;
-    e.button.windowID = SDL_GetWindowID(window_);
-    e.button.button = SDL_BUTTON_LEFT;
-    e.button.state = click_down_ ? SDL_RELEASED : SDL_PRESSED;
-    e.button.clicks = 1;
-    const Vec2 w = logical_to_window(c.x, c.y);
-    e.button.x = static_cast<int>(w.x);
-    e.button.y = static_cast<int>(w.y);
-    SDL_PushEvent(&e);  // handled at the start of the next frame, before the machine runs
+    push_button(key_rect(*k).centre(), !click_down_);  // handled at the start of the next frame, before the machine runs
     click_t_ = machine().now() + (click_down_ ? kClickGap : kKeyHold);
     if (click_down_) ++click_pos_;
     click_down_ = !click_down_;
@@ -555,18 +546,7 @@ void App::drive_debug_hooks() {
         panes_.show(l);
         panes_.last_pc = machine().cpu().regs().pc;  // the pane stays on this line until the PC moves
         const Vec2 c = source_row(l.line - panes_.first).centre();
-        for (const bool down : {true, false}) {
-            SDL_Event e{};
-            e.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
-            e.button.windowID = SDL_GetWindowID(window_);
-            e.button.button = SDL_BUTTON_LEFT;
-            e.button.state = down ? SDL_PRESSED : SDL_RELEASED;
-            e.button.clicks = 1;
-            const Vec2 w = logical_to_window(c.x, c.y);
-            e.button.x = static_cast<int>(w.x);
-            e.button.y = static_cast<int>(w.y);
-            SDL_PushEvent(&e);
-        }
+        for (const bool down : {true, false}) push_button(c, down);
         return;
     }
     if (hook_wait_ > 0) {
@@ -620,10 +600,9 @@ void App::drive_debug_hooks() {
     }
 }
 
-void App::push_click(Vec2 logical, bool down) {
+// A left-button event at a point of the logical picture, as a click on the window delivers it.
+void App::push_button(Vec2 logical, bool down) {
     const Vec2 at = logical_to_window(logical.x, logical.y);
-    // Dear ImGui (1.86) reads the pointer's place from SDL's mouse state: the pointer goes there.
-    SDL_WarpMouseInWindow(window_, static_cast<int>(at.x), static_cast<int>(at.y));
     SDL_Event e{};
     e.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
     e.button.windowID = SDL_GetWindowID(window_);
@@ -633,6 +612,14 @@ void App::push_click(Vec2 logical, bool down) {
     e.button.x = static_cast<int>(at.x);
     e.button.y = static_cast<int>(at.y);
     SDL_PushEvent(&e);
+}
+
+// A click on a Dear ImGui button: ImGui (1.86) reads the pointer's place from SDL's mouse state,
+// so the pointer goes there first.
+void App::push_click(Vec2 logical, bool down) {
+    const Vec2 at = logical_to_window(logical.x, logical.y);
+    SDL_WarpMouseInWindow(window_, static_cast<int>(at.x), static_cast<int>(at.y));
+    push_button(logical, down);
 }
 
 // A borderless, transparent window over `r` that takes no input (the keypad's clicks are
