@@ -29,13 +29,13 @@ public:
     std::function<void(const I8085&)> trace;
     bool run_to = false;  // run_to(): only run_to_pc stops the run
     std::uint16_t run_to_pc = 0;
-    RunMonitor* monitor = nullptr;
-    bool monitor_accesses = false;
+    RunObserver* observer = nullptr;
+    bool observer_accesses = false;
 
     bool before_instruction(I8085& cpu) override {
-        if (monitor && !run_to && monitor->before_instruction(cpu)) {
+        if (observer && !run_to && observer->before_instruction(cpu)) {
             stopped = true;
-            reason = Stop::Monitor;
+            reason = Stop::Observer;
             return false;
         }
         const std::uint16_t pc = cpu.regs().pc;
@@ -52,20 +52,20 @@ public:
     }
     void on_read(I8085& cpu, std::uint16_t addr, std::uint8_t v) override {
         check(cpu, addr);
-        if (monitor_accesses && monitor->on_read(addr, v)) stop_monitor(cpu);
+        if (observer_accesses && observer->on_read(addr, v)) stop_observer(cpu);
     }
     void on_write(I8085& cpu, std::uint16_t addr, std::uint8_t v) override {
         check(cpu, addr);
-        if (monitor_accesses && monitor->on_write(addr, v)) stop_monitor(cpu);
+        if (observer_accesses && observer->on_write(addr, v)) stop_observer(cpu);
     }
     void on_io(I8085& cpu, std::uint8_t port, std::uint8_t value, bool is_out) override {
-        if (monitor_accesses && monitor->on_io(port, value, is_out)) stop_monitor(cpu);
+        if (observer_accesses && observer->on_io(port, value, is_out)) stop_observer(cpu);
     }
 
 private:
-    void stop_monitor(I8085& cpu) {
+    void stop_observer(I8085& cpu) {
         stopped = true;
-        reason = Stop::Monitor;
+        reason = Stop::Observer;
         cpu.request_stop();
     }
     void check(I8085& cpu, std::uint16_t addr) {
@@ -423,15 +423,15 @@ std::array<std::string, 7> Machine::display_art() const {
 void Machine::update_hooks() {
     Hooks& h = *hooks_;
     h.any_watch = h.watch.any();
-    h.monitor_accesses = h.monitor && h.monitor->wants_accesses();
-    cpu_.set_debug_hooks(h.breakpoint.any() || h.any_watch || h.trace || h.monitor ? hooks_.get() : nullptr);
+    h.observer_accesses = h.observer && h.observer->wants_accesses();
+    cpu_.set_debug_hooks(h.breakpoint.any() || h.any_watch || h.trace || h.observer ? hooks_.get() : nullptr);
 }
 
-void Machine::set_monitor(RunMonitor* monitor) {
-    hooks_->monitor = monitor;
+void Machine::set_observer(RunObserver* observer) {
+    hooks_->observer = observer;
     update_hooks();
 }
-RunMonitor* Machine::monitor() const { return hooks_->monitor; }
+RunObserver* Machine::observer() const { return hooks_->observer; }
 
 void Machine::rewind_inputs(std::size_t log_size, const std::vector<InputEvent>& pending, std::uint64_t next_seq) {
     if (log_size < input_log_.size()) input_log_.resize(log_size);

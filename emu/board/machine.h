@@ -31,16 +31,16 @@
 
 namespace alp85 {
 
-// A debugger's eyes on a run (Machine::set_monitor): consulted before every instruction and at
+// A debugger's eyes on a run (Machine::set_observer): consulted before every instruction and at
 // every data access and I/O transfer while installed. While none is installed the CPU runs its
 // plain path and pays nothing for it.
-class RunMonitor {
+class RunObserver {
 public:
-    virtual ~RunMonitor() = default;
-    // Before each instruction (registers current). True: stop before it (Stop::Monitor).
+    virtual ~RunObserver() = default;
+    // Before each instruction (registers current). True: stop before it (Stop::Observer).
     virtual bool before_instruction(const I8085& cpu) = 0;
     // Data accesses and I/O of the instruction running (its registers are not current). True:
-    // stop after that instruction (Stop::Monitor).
+    // stop after that instruction (Stop::Observer).
     virtual bool on_read(std::uint16_t addr, std::uint8_t value) { (void)addr, (void)value; return false; }
     virtual bool on_write(std::uint16_t addr, std::uint8_t value) { (void)addr, (void)value; return false; }
     virtual bool on_io(std::uint8_t port, std::uint8_t value, bool is_out) { (void)port, (void)value, (void)is_out; return false; }
@@ -63,7 +63,7 @@ public:
         Breakpoint,  // the PC reached a breakpoint (the instruction there has not run)
         Watchpoint,  // a watched address was accessed (after the instruction)
         Target,      // run_to reached its address (the instruction there has not run)
-        Monitor,     // the installed RunMonitor asked to stop
+        Observer,    // the installed RunObserver asked to stop
     };
 
     Machine();
@@ -139,10 +139,10 @@ public:
     void set_trace(std::function<void(const I8085&)> trace);
     // What stopped the last run at a watchpoint: the address accessed.
     std::uint16_t watch_hit() const { return watch_hit_; }
-    // Installs a debugger's monitor (nullptr removes it); like breakpoints, it puts the CPU on its
-    // debug path only while installed. The monitor must outlive its installation.
-    void set_monitor(RunMonitor* monitor);
-    RunMonitor* monitor() const;
+    // Installs a debugger's run observer (nullptr removes it); like breakpoints, it puts the CPU on its
+    // debug path only while installed. The observer must outlive its installation.
+    void set_observer(RunObserver* observer);
+    RunObserver* observer() const;
     // Rewinding for reverse execution: after restore_bytes() of an earlier snapshot, the input log
     // is cut back to `log_size` entries (what had been applied at that snapshot) and the queue
     // holds `pending` (every input still to come on this timeline), numbered as before.

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "asm/isa.h"
-#include "emu/debug/monitor.h"
+#include "emu/debug/observer.h"
 
 namespace alp85::debug {
 
@@ -30,10 +30,10 @@ std::string_view name(StopReason reason) {
 }
 
 Debugger::Debugger(Machine& machine)
-    : m_(machine), monitor_(std::make_unique<Monitor>(*this)), history_(std::make_unique<History>()) {}
+    : m_(machine), observer_(std::make_unique<Observer>(*this)), history_(std::make_unique<History>()) {}
 
 Debugger::~Debugger() {
-    if (m_.monitor() == monitor_.get()) m_.set_monitor(nullptr);
+    if (m_.observer() == observer_.get()) m_.set_observer(nullptr);
 }
 
 Stop Debugger::here(StopReason reason) const {
@@ -47,10 +47,10 @@ Stop Debugger::here(StopReason reason) const {
 }
 
 void Debugger::arm() {
-    Monitor& mon = *monitor_;
+    Observer& mon = *observer_;
     mon.rebuild();
     const bool needed = mon.replay && !mon.hits ? mon.record != nullptr : mon.needed();
-    m_.set_monitor(needed ? &mon : nullptr);
+    m_.set_observer(needed ? &mon : nullptr);
 }
 
 void Debugger::rebaseline() {
@@ -104,7 +104,7 @@ std::string runaway_message(const Machine& m, std::uint16_t pc, std::optional<st
 std::optional<Stop> Debugger::drive(const Budget& budget) {
     Active& run = *active_;
     check_inputs();
-    Monitor& mon = *monitor_;
+    Observer& mon = *observer_;
     mon.skip_at = run.first ? std::optional<std::uint64_t>(m_.now()) : std::nullopt;
     run.first = false;
     mon.stop_hit.reset();
@@ -141,7 +141,7 @@ std::optional<Stop> Debugger::drive(const Budget& budget) {
             case Machine::Stop::Breakpoint: return end_run(here(StopReason::Breakpoint));  // the machine's own
             case Machine::Stop::Watchpoint: return end_run(here(StopReason::Watchpoint));
             case Machine::Stop::Target: return end_run(here(StopReason::Target));
-            case Machine::Stop::Monitor: break;
+            case Machine::Stop::Observer: break;
         }
         if (!mon.error.empty()) {
             Stop s = here(StopReason::Error);
@@ -178,7 +178,7 @@ std::optional<Stop> Debugger::begin(Active a, std::function<bool(const I8085&)> 
     }
     if (target) {
         const std::uint64_t start = m_.now();
-        monitor_->target = [start, t = std::move(target)](const I8085& cpu) { return cpu.tstates() != start && t(cpu); };
+        observer_->target = [start, t = std::move(target)](const I8085& cpu) { return cpu.tstates() != start && t(cpu); };
     }
     halted_ = false;
     if (a.stop_at_halt) m_.cpu().on_halt = [this] {
@@ -192,7 +192,7 @@ std::optional<Stop> Debugger::begin(Active a, std::function<bool(const I8085&)> 
 Stop Debugger::end_run(Stop s) {
     const Active run = std::move(*active_);
     active_.reset();
-    monitor_->target = nullptr;
+    observer_->target = nullptr;
     m_.cpu().on_halt = nullptr;
     halted_ = false;
     arm();
@@ -265,7 +265,7 @@ Stop Debugger::stepi() {
     if (active_) pause();
     check_inputs();
     if (history_on_ && history_->due(m_.now())) history_->take(m_);
-    Monitor& mon = *monitor_;
+    Observer& mon = *observer_;
     mon.skip_at = m_.now();
     mon.stop_hit.reset();
     mon.pending.clear();
@@ -356,12 +356,12 @@ std::optional<Stop> Debugger::begin_until(std::optional<std::uint16_t> pc) {
 void Debugger::set_runaway_guard(const std::bitset<0x10000>* code) {
     if (code) code_ = *code;
     else code_.reset();
-    monitor_->runaway_armed = false;
+    observer_->runaway_armed = false;
     arm();
 }
 
 void Debugger::track_stack_base(bool on) {
-    monitor_->track_stack = on;
+    observer_->track_stack = on;
     if (!on) stack_base_.reset();
     arm();
 }

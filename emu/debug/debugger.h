@@ -7,7 +7,7 @@
 // (reverse step, next, finish, continue) by periodic snapshots and deterministic re-execution.
 //
 // It wraps one Machine and adds no cost to a plain run: while no breakpoint or watchpoint is armed
-// and no step is under way, the CPU runs its plain path (the debugger's RunMonitor is installed only
+// and no step is under way, the CPU runs its plain path (the debugger's RunObserver is installed only
 // while needed). Reading anything through the debugger never changes a device.
 //
 //   Machine m;  debug::Debugger d(m);
@@ -186,7 +186,7 @@ struct Budget {
     double seconds = 0;                         // host time in this slice, at most (0: no limit)
 };
 
-struct Boundary;    // emu/debug/monitor.h, the debugger's inside
+struct Boundary;    // emu/debug/observer.h, the debugger's inside
 struct Hit;
 struct Checkpoint;
 
@@ -357,9 +357,9 @@ public:
     const std::vector<InputEvent>& input_log() const { return m_.input_log(); }
 
 private:
-    class Monitor;
+    class Observer;
     class History;
-    friend class Monitor;
+    friend class Observer;
     friend class History;
 
     // A run begun and not yet ended (resumable).
@@ -373,7 +373,7 @@ private:
         bool emit_stops = false;              // run_until: stops are also Stopped events
         Origin origin;
     };
-    // The one run loop: a slice of chunks up to the next snapshot time, monitor armed as needed;
+    // The one run loop: a slice of chunks up to the next snapshot time, observer armed as needed;
     // nullopt when the slice's budget ran out before the run ended.
     std::optional<Stop> drive(const Budget& budget);
     std::optional<Stop> begin(Active a, std::function<bool(const I8085&)> target = {});
@@ -393,7 +393,7 @@ private:
     // now belong to the old future and go.
     void check_inputs();
     Stop no_history(std::string why);
-    void arm();     // installs the monitor iff something needs it
+    void arm();     // installs the observer iff something needs it
     void rebaseline();  // watched values as they are now
     Stop finish_stop(Stop s);  // temporary breakpoints, the line
     std::optional<std::uint16_t> return_slot() const;  // the current routine's return address slot
@@ -409,7 +409,7 @@ private:
     std::vector<Breakpoint> breakpoints_;
     std::vector<Watchpoint> watchpoints_;
     int last_number_ = 0;
-    std::unique_ptr<Monitor> monitor_;
+    std::unique_ptr<Observer> observer_;
     std::unique_ptr<History> history_;
     bool history_on_ = false;
     bool replaying_ = false;

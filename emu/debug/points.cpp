@@ -6,7 +6,7 @@
 
 #include "asm/isa.h"
 #include "emu/debug/debugger.h"
-#include "emu/debug/monitor.h"
+#include "emu/debug/observer.h"
 #include "emu/util/text.h"
 
 namespace alp85::debug {

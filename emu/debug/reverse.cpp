@@ -1,12 +1,12 @@
 // Reverse execution: the machine goes back to a checkpoint (a whole snapshot: memory, chips,
 // machine tool, time) and runs forward again to the wanted instruction. The machine is
-// deterministic, so the re-run is the run; while it runs the monitor records each instruction
+// deterministic, so the re-run is the run; while it runs the observer records each instruction
 // boundary or each breakpoint/watchpoint hit, from which the wanted position is chosen.
 #include <fmt/format.h>
 
 #include "asm/isa.h"
 #include "emu/debug/debugger.h"
-#include "emu/debug/monitor.h"
+#include "emu/debug/observer.h"
 
 namespace alp85::debug {
 
@@ -38,7 +38,7 @@ std::uint64_t Debugger::history_start() const {
 std::size_t Debugger::history_snapshots() const { return history_->points.size(); }
 
 void Debugger::replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits) {
-    Monitor& mon = *monitor_;
+    Observer& mon = *observer_;
     const auto target = std::move(mon.target);
     mon.target = nullptr;
     history_->restore(m_, c);

@@ -1,4 +1,4 @@
-// Inside the Debugger (not for front ends): the RunMonitor it installs on the machine while
+// Inside the Debugger (not for front ends): the RunObserver it installs on the machine while
 // breakpoints, watchpoints, a step or a re-execution need to see the run, and the snapshots
 // of reverse execution.
 #pragma once
@@ -20,7 +20,7 @@ struct Boundary {
     std::uint8_t op = 0;  // the opcode at pc
 };
 
-// A breakpoint or watchpoint hit, as the monitor saw it.
+// A breakpoint or watchpoint hit, as the observer saw it.
 struct Hit {
     std::uint64_t t = 0;  // the position: before the breakpoint's instruction, after the watched one
     StopReason reason = StopReason::Breakpoint;
@@ -31,9 +31,9 @@ struct Hit {
     std::vector<int> numbers{};  // breakpoints: all that stop here
 };
 
-class Debugger::Monitor final : public RunMonitor {
+class Debugger::Observer final : public RunObserver {
 public:
-    explicit Monitor(Debugger& d) : d_(d) {}
+    explicit Observer(Debugger& d) : d_(d) {}
 
     // What is armed, rebuilt by Debugger::arm() from the breakpoint and watchpoint lists.
     void rebuild();

@@ -1,4 +1,4 @@
-#include "emu/debug/monitor.h"
+#include "emu/debug/observer.h"
 
 #include <algorithm>
 
@@ -16,7 +16,7 @@ std::int64_t memory_value(const Machine& m, const Watchpoint& w) {
 }
 }  // namespace
 
-void Debugger::Monitor::rebuild() {
+void Debugger::Observer::rebuild() {
     bp_.reset();
     read_.reset();
     write_.reset();
@@ -49,7 +49,7 @@ void Debugger::Monitor::rebuild() {
     accesses_ = read_.any() || write_.any() || port_in_.any() || port_out_.any();
 }
 
-bool Debugger::Monitor::before_instruction(const I8085& cpu) {
+bool Debugger::Observer::before_instruction(const I8085& cpu) {
     const std::uint64_t t = cpu.tstates();
     const Registers& r = cpu.regs();
     if (!pending.empty() && hits) flush_pending(t);
@@ -80,7 +80,7 @@ bool Debugger::Monitor::before_instruction(const I8085& cpu) {
     return false;
 }
 
-bool Debugger::Monitor::check_breakpoint(const I8085& cpu) {
+bool Debugger::Observer::check_breakpoint(const I8085& cpu) {
     const std::uint64_t t = cpu.tstates();
     if (skip_at && *skip_at == t) return false;
     std::vector<int> stopping;
@@ -119,7 +119,7 @@ bool Debugger::Monitor::check_breakpoint(const I8085& cpu) {
     return true;
 }
 
-bool Debugger::Monitor::check_state(const I8085& cpu) {
+bool Debugger::Observer::check_state(const I8085& cpu) {
     const std::uint64_t t = cpu.tstates();
     Hit hit{t, StopReason::Watchpoint, 0, {}, {}, last_pc};
     for (Watchpoint& w : d_.watchpoints_) {
@@ -162,7 +162,7 @@ bool Debugger::Monitor::check_state(const I8085& cpu) {
     return true;
 }
 
-void Debugger::Monitor::memory_access(std::uint16_t addr, bool write) {
+void Debugger::Observer::memory_access(std::uint16_t addr, bool write) {
     for (Watchpoint& w : d_.watchpoints_) {
         if (!w.enabled || addr < w.first || addr > w.last) continue;
         if (w.kind == WatchKind::Write && write) {
@@ -198,19 +198,19 @@ void Debugger::Monitor::memory_access(std::uint16_t addr, bool write) {
     }
 }
 
-bool Debugger::Monitor::on_read(std::uint16_t addr, std::uint8_t) {
+bool Debugger::Observer::on_read(std::uint16_t addr, std::uint8_t) {
     if (!read_[addr]) return false;
     memory_access(addr, false);
     return !pending.empty() && !hits;
 }
 
-bool Debugger::Monitor::on_write(std::uint16_t addr, std::uint8_t) {
+bool Debugger::Observer::on_write(std::uint16_t addr, std::uint8_t) {
     if (!write_[addr]) return false;
     memory_access(addr, true);
     return !pending.empty() && !hits;
 }
 
-bool Debugger::Monitor::on_io(std::uint8_t port, std::uint8_t value, bool is_out) {
+bool Debugger::Observer::on_io(std::uint8_t port, std::uint8_t value, bool is_out) {
     if (!(is_out ? port_out_[port] : port_in_[port])) return false;
     for (const Watchpoint& w : d_.watchpoints_) {
         if (!w.enabled || w.kind != WatchKind::Port || w.first != port) continue;
@@ -222,7 +222,7 @@ bool Debugger::Monitor::on_io(std::uint8_t port, std::uint8_t value, bool is_out
     return !pending.empty() && !hits;
 }
 
-std::vector<Hit> Debugger::Monitor::decide_pending(bool count) {
+std::vector<Hit> Debugger::Observer::decide_pending(bool count) {
     std::vector<Hit> kept;
     for (Hit& h : pending) {
         Watchpoint* w = d_.find_wp(h.number);
@@ -248,7 +248,7 @@ std::vector<Hit> Debugger::Monitor::decide_pending(bool count) {
     return kept;
 }
 
-void Debugger::Monitor::flush_pending(std::uint64_t t) {
+void Debugger::Observer::flush_pending(std::uint64_t t) {
     for (Hit& h : decide_pending(false)) {
         h.t = t;
         hits->push_back(std::move(h));
