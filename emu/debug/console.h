@@ -126,6 +126,7 @@ private:
     std::string cmd_disassemble(std::string_view a, int col);
     std::string cmd_backtrace(std::string_view a, int col);
     std::string cmd_frame(std::string_view a, int col);
+    std::optional<std::size_t> frame_count(std::string_view a, int col, std::string& err);
     std::string cmd_up(std::string_view a, int col);
     std::string cmd_down(std::string_view a, int col);
     std::string cmd_jump(std::string_view a, int col);

@@ -39,32 +39,30 @@ std::string Console::cmd_frame(std::string_view a, int col) {
     return show_frame(selected_frame_);
 }
 
+// up N / down N: how many frames (default 1), or an error already formatted.
+std::optional<std::size_t> Console::frame_count(std::string_view a, int col, std::string& err) {
+    if (a.empty()) return 1;
+    const auto v = number_arg(a, col, err);
+    if (!v) return std::nullopt;
+    return static_cast<std::size_t>(*v);
+}
+
 std::string Console::cmd_up(std::string_view a, int col) {
-    std::size_t n = 1;
-    const int at = col;
-    if (!a.empty()) {
-        std::string err;
-        const auto v = number_arg(a, col, err);
-        if (!v) return err;
-        n = static_cast<std::size_t>(*v);
-    }
+    std::string err;
+    const auto n = frame_count(a, col, err);
+    if (!n) return err;
     const auto frames = d_.backtrace();
-    if (selected_frame_ + 1 >= frames.size()) return error(at, "Initial frame selected; you cannot go up.");
-    selected_frame_ = std::min(selected_frame_ + n, frames.size() - 1);
+    if (selected_frame_ + 1 >= frames.size()) return error(col, "Initial frame selected; you cannot go up.");
+    selected_frame_ = std::min(selected_frame_ + *n, frames.size() - 1);
     return show_frame(selected_frame_);
 }
 
 std::string Console::cmd_down(std::string_view a, int col) {
-    std::size_t n = 1;
-    const int at = col;
-    if (!a.empty()) {
-        std::string err;
-        const auto v = number_arg(a, col, err);
-        if (!v) return err;
-        n = static_cast<std::size_t>(*v);
-    }
-    if (selected_frame_ == 0) return error(at, "Bottom (innermost) frame selected; you cannot go down.");
-    selected_frame_ = selected_frame_ > n ? selected_frame_ - n : 0;
+    std::string err;
+    const auto n = frame_count(a, col, err);
+    if (!n) return err;
+    if (selected_frame_ == 0) return error(col, "Bottom (innermost) frame selected; you cannot go down.");
+    selected_frame_ = selected_frame_ > *n ? selected_frame_ - *n : 0;
     return show_frame(selected_frame_);
 }
 
