@@ -71,7 +71,7 @@ ThesisBenchRun run_thesis_bench(periph::MachineTool::MotorModel model, std::uint
                      if (now == last) return false;
                      last = now;
                      return m.display_text() == "  8itti ";
-                 }) == Machine::Stop::Condition;
+                 }) == Machine::RunEnd::Condition;
     r.host_seconds = watch.cpu_seconds();
     r.tstates = session.machine().now() - t0;
     const auto& tool = session.machine().tool();

@@ -37,8 +37,8 @@ inline std::uint64_t schedule_press(Machine& m, Button button, periph::Key key, 
     return t + hold + gap;
 }
 
-// schedule_press, then run until the gap has passed (or a breakpoint: the Stop says which).
-inline Machine::Stop press_button(Machine& m, Button button, periph::Key key, std::uint64_t hold = kKeyHold,
+// schedule_press, then run until the gap has passed (or the observer stops the run).
+inline Machine::RunEnd press_button(Machine& m, Button button, periph::Key key, std::uint64_t hold = kKeyHold,
                                   std::uint64_t gap = kKeyGap) {
     return m.run_until(schedule_press(m, button, key, hold, gap));
 }

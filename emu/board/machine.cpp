@@ -13,19 +13,15 @@ namespace alp85 {
 
 using periph::I8155;
 
-// The debugger's view of a run: breakpoints before an instruction, watchpoints on data accesses.
-// Installed on the CPU only while some are set, so a plain run pays nothing for them.
+// The debugger's view of a run (its RunObserver), run_to's target and a trace, on the CPU's
+// debug path; installed on the CPU only while one of them is set, so a plain run pays nothing.
 class Machine::Hooks final : public DebugHooks {
 public:
-    std::bitset<0x10000> breakpoint;
-    std::bitset<0x10000> watch;
-    bool any_watch = false;
-    // A run that starts on a breakpoint executes that instruction (as a debugger's "continue").
+    // A run starts by executing the instruction at the PC (run_to's target is ahead).
     bool skip_armed = false;
     std::uint16_t skip_pc = 0;
     bool stopped = false;
-    Stop reason = Stop::Deadline;
-    std::uint16_t hit_address = 0;
+    RunEnd reason = RunEnd::Deadline;
     std::function<void(const I8085&)> trace;
     bool run_to = false;  // run_to(): only run_to_pc stops the run
     std::uint16_t run_to_pc = 0;
@@ -35,15 +31,14 @@ public:
     bool before_instruction(I8085& cpu) override {
         if (observer && !run_to && observer->before_instruction(cpu)) {
             stopped = true;
-            reason = Stop::Observer;
+            reason = RunEnd::Observer;
             return false;
         }
         const std::uint16_t pc = cpu.regs().pc;
-        const bool stop_here = run_to ? pc == run_to_pc : static_cast<bool>(breakpoint[pc]);
-        if (stop_here && !(skip_armed && pc == skip_pc)) {
+        if (run_to && pc == run_to_pc && !(skip_armed && pc == skip_pc)) {
             skip_armed = false;
             stopped = true;
-            reason = run_to ? Stop::Target : Stop::Breakpoint;
+            reason = RunEnd::Target;
             return false;
         }
         skip_armed = false;
@@ -51,11 +46,9 @@ public:
         return true;
     }
     void on_read(I8085& cpu, std::uint16_t addr, std::uint8_t v) override {
-        check(cpu, addr);
         if (observer_accesses && observer->on_read(addr, v)) stop_observer(cpu);
     }
     void on_write(I8085& cpu, std::uint16_t addr, std::uint8_t v) override {
-        check(cpu, addr);
         if (observer_accesses && observer->on_write(addr, v)) stop_observer(cpu);
     }
     void on_io(I8085& cpu, std::uint8_t port, std::uint8_t value, bool is_out) override {
@@ -65,16 +58,8 @@ public:
 private:
     void stop_observer(I8085& cpu) {
         stopped = true;
-        reason = Stop::Observer;
+        reason = RunEnd::Observer;
         cpu.request_stop();
-    }
-    void check(I8085& cpu, std::uint16_t addr) {
-        if (any_watch && watch[addr]) {
-            stopped = true;
-            reason = Stop::Watchpoint;
-            hit_address = addr;
-            cpu.request_stop();
-        }
     }
 };
 
@@ -353,7 +338,7 @@ void Machine::replay(const std::vector<InputEvent>& events) {
     for (const InputEvent& e : events) inputs_.schedule(e.at, e.kind, e.code, e.level);
 }
 
-Machine::Stop Machine::run_until(std::uint64_t until, const std::function<bool()>& condition) {
+Machine::RunEnd Machine::run_until(std::uint64_t until, const std::function<bool()>& condition) {
     Hooks& h = *hooks_;
     h.stopped = false;
     h.skip_armed = true;
@@ -363,28 +348,35 @@ Machine::Stop Machine::run_until(std::uint64_t until, const std::function<bool()
         deliver_inputs(t);
         if (next_sample_ <= t) sample(t);
         sync_parts(t);
-        if (condition && condition()) return Stop::Condition;
-        if (t >= until) return Stop::Deadline;
+        if (condition && condition()) return RunEnd::Condition;
+        if (t >= until) return RunEnd::Deadline;
         std::uint64_t next = std::min({until, inputs_.next_time(), next_part_event()});
         if (next <= t) next = t + 1;
         cpu_.run(next);
+        if (cpu_.fence_stopped()) {  // the observer's fetch fence: it decides, the CPU goes on
+            if (h.observer->at_fence(cpu_)) {
+                sync_parts(now());
+                return RunEnd::Observer;
+            }
+            cpu_.pass_fence();
+            continue;
+        }
         if (h.stopped) {
             sync_parts(now());
-            if (h.reason == Stop::Watchpoint) watch_hit_ = h.hit_address;
             return h.reason;
         }
     }
 }
 
-Machine::Stop Machine::run_to(std::uint16_t pc, std::uint64_t until) {
+Machine::RunEnd Machine::run_to(std::uint16_t pc, std::uint64_t until) {
     Hooks& h = *hooks_;
     h.run_to = true;
     h.run_to_pc = pc;
     cpu_.set_debug_hooks(hooks_.get());
-    const Stop stop = run_until(until);
+    const RunEnd end = run_until(until);
     h.run_to = false;
     update_hooks();
-    return stop;
+    return end;
 }
 
 void Machine::step() {
@@ -394,6 +386,7 @@ void Machine::step() {
     h.skip_pc = cpu_.regs().pc;
     deliver_inputs(now());
     sync_parts(now());
+    cpu_.pass_fence();  // one instruction, whatever the fence says
     cpu_.step();
     deliver_inputs(now());
     sync_parts(now());
@@ -422,9 +415,12 @@ std::array<std::string, 7> Machine::display_art() const {
 
 void Machine::update_hooks() {
     Hooks& h = *hooks_;
-    h.any_watch = h.watch.any();
     h.observer_accesses = h.observer && h.observer->wants_accesses();
-    cpu_.set_debug_hooks(h.breakpoint.any() || h.any_watch || h.trace || h.observer ? hooks_.get() : nullptr);
+    // An observer content with a fetch fence leaves the CPU on its plain path (I8085::set_fetch_fence).
+    const std::bitset<0x10000>* fence = h.observer && !h.observer_accesses ? h.observer->fetch_fence() : nullptr;
+    const bool hooks = h.trace || (h.observer && !fence);
+    cpu_.set_debug_hooks(hooks ? hooks_.get() : nullptr);
+    cpu_.set_fetch_fence(hooks ? nullptr : fence);
 }
 
 void Machine::set_observer(RunObserver* observer) {
@@ -438,32 +434,8 @@ void Machine::rewind_inputs(std::size_t log_size, const std::vector<InputEvent>&
     inputs_.restore(pending, next_seq);
 }
 
-void Machine::add_breakpoint(std::uint16_t pc) {
-    if (!hooks_->breakpoint[pc]) breakpoints_.push_back(pc);
-    hooks_->breakpoint[pc] = true;
-    update_hooks();
-}
-void Machine::remove_breakpoint(std::uint16_t pc) {
-    hooks_->breakpoint[pc] = false;
-    std::erase(breakpoints_, pc);
-    update_hooks();
-}
-void Machine::clear_breakpoints() {
-    hooks_->breakpoint.reset();
-    breakpoints_.clear();
-    update_hooks();
-}
 void Machine::set_trace(std::function<void(const I8085&)> trace) {
     hooks_->trace = std::move(trace);
     update_hooks();
 }
-void Machine::add_watchpoint(std::uint16_t address) {
-    hooks_->watch[address] = true;
-    update_hooks();
-}
-void Machine::clear_watchpoints() {
-    hooks_->watch.reset();
-    update_hooks();
-}
-
 }  // namespace alp85

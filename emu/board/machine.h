@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -46,6 +47,14 @@ public:
     virtual bool on_io(std::uint8_t port, std::uint8_t value, bool is_out) { (void)port, (void)value, (void)is_out; return false; }
     // Which of the above it needs: before_instruction is always called; these only when true.
     virtual bool wants_accesses() const { return false; }
+    // The addresses where it must look before an instruction, when that is all it needs (no
+    // accesses, no look at every instruction): the CPU then runs its plain path behind this fetch
+    // fence (I8085::set_fetch_fence) and at_fence is called only there. nullptr: every instruction.
+    // Asked whenever the observer is installed (Machine::set_observer).
+    virtual const std::bitset<0x10000>* fetch_fence() const { return nullptr; }
+    // Before an instruction at a fenced address (registers current; cpu.fence_previous() is the
+    // instruction that ran before). True: stop before it (Stop::Observer).
+    virtual bool at_fence(const I8085& cpu) { return before_instruction(cpu); }
 };
 
 class Machine {
@@ -57,13 +66,13 @@ public:
         bool expansion_eprom = false;  // board::kExpansionEprom mapped (thesis 5.3's expansion)
     };
 
-    enum class Stop : std::uint8_t {
-        Deadline,    // the requested time was reached
-        Condition,   // the caller's condition became true
-        Breakpoint,  // the PC reached a breakpoint (the instruction there has not run)
-        Watchpoint,  // a watched address was accessed (after the instruction)
-        Target,      // run_to reached its address (the instruction there has not run)
-        Observer,    // the installed RunObserver asked to stop
+    // Why a run returned. (Breakpoints, watchpoints and the Stop a user sees are the debugger's,
+    // emu/debug/debugger.h: the machine has none of its own.)
+    enum class RunEnd : std::uint8_t {
+        Deadline,   // the requested time was reached
+        Condition,  // the caller's condition became true
+        Target,     // run_to reached its address (the instruction there has not run)
+        Observer,   // the installed RunObserver asked to stop
     };
 
     Machine();
@@ -94,17 +103,19 @@ public:
     std::uint64_t now() const { return cpu_.tstates(); }
     static constexpr std::uint64_t tstates_from_ms(double ms) { return board::tstates_from_ms(ms); }
 
-    // Runs until `until` (whole instructions: it may end a few T-states after), a breakpoint,
-    // a watchpoint, or — checked after every batch and every OUT — `condition` returns true.
-    Stop run_until(std::uint64_t until, const std::function<bool()>& condition = {});
-    Stop run_for(std::uint64_t tstates, const std::function<bool()>& condition = {}) {
+    // Runs until `until` (whole instructions: it may end a few T-states after), until the
+    // observer asks to stop, or until — checked after every batch and every OUT — `condition`
+    // returns true.
+    RunEnd run_until(std::uint64_t until, const std::function<bool()>& condition = {});
+    RunEnd run_for(std::uint64_t tstates, const std::function<bool()>& condition = {}) {
         return run_until(now() + tstates, condition);
     }
-    // Runs until the PC reaches `pc` (Stop::Target) or until `until` (Stop::Deadline). Only `pc`
-    // stops it: the breakpoints are not armed meanwhile (a debugger's "run to here").
-    Stop run_to(std::uint16_t pc, std::uint64_t until);
-    // Exactly one instruction (or interrupt acknowledge, or idle T-state when halted),
-    // ignoring breakpoints at the current PC.
+    // Runs until the PC reaches `pc` (RunEnd::Target; not at the first instruction) or until
+    // `until` (RunEnd::Deadline). Only `pc` stops it: the observer is not consulted meanwhile (a
+    // debugger's "run to here").
+    RunEnd run_to(std::uint16_t pc, std::uint64_t until);
+    // Exactly one instruction (or interrupt acknowledge, or idle T-state when halted), whatever
+    // the observer's fence says about the current PC.
     void step();
 
     // Whether anything but a reset can still end a HLT: maskable interrupts enabled (a key, VECT
@@ -128,19 +139,12 @@ public:
     std::array<std::string, 7> display_art() const;
 
     // ---- debugging -----------------------------------------------------------------------------
-    void add_breakpoint(std::uint16_t pc);
-    void remove_breakpoint(std::uint16_t pc);
-    void clear_breakpoints();
-    const std::vector<std::uint16_t>& breakpoints() const { return breakpoints_; }
-    void add_watchpoint(std::uint16_t address);  // any data read or write of the address
-    void clear_watchpoints();
-    // Called before every instruction while set (a trace); like breakpoints, it puts the CPU on its
-    // debug path only while installed.
+    // Called before every instruction while set (a trace); it puts the CPU on its debug path only
+    // while installed.
     void set_trace(std::function<void(const I8085&)> trace);
-    // What stopped the last run at a watchpoint: the address accessed.
-    std::uint16_t watch_hit() const { return watch_hit_; }
-    // Installs a debugger's run observer (nullptr removes it); like breakpoints, it puts the CPU on its
-    // debug path only while installed. The observer must outlive its installation.
+    // Installs a debugger's run observer (nullptr removes it): the CPU's debug path, or its plain
+    // path behind the observer's fetch fence, while installed. The observer must outlive its
+    // installation.
     void set_observer(RunObserver* observer);
     RunObserver* observer() const;
     // Rewinding for reverse execution: after restore_bytes() of an earlier snapshot, the input log
@@ -225,8 +229,6 @@ private:
 
     std::vector<std::unique_ptr<IoDevice>> chip_ports_;  // the chips' I/O decoding (board::kIoMap)
     std::unique_ptr<Hooks> hooks_;
-    std::vector<std::uint16_t> breakpoints_;
-    std::uint16_t watch_hit_ = 0;
 };
 
 }  // namespace alp85

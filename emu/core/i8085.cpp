@@ -237,7 +237,7 @@ void I8085::halt_entered() {
 // and unmapped-write pages. The T-state counter is advanced by the opcode's base T-states before
 // its body runs (plus the extra of a taken condition), so a handler called from the body sees
 // t - 3 = the first T-state of the instruction's last machine cycle (see tstates()).
-template <Variant V, bool Debug, bool Flat>
+template <Variant V, bool Debug, bool Flat, bool Fence>
 void I8085::execute() {
     constexpr bool k85 = V == Variant::I8085;
     const std::uint8_t* const* const rp = bus_.read_pages();
@@ -261,6 +261,9 @@ void I8085::execute() {
     stop = limit_rel(limit_);
     rem = stop;
     std::uint8_t op = 0;
+    // Fence: the fenced addresses, and the address of the instruction running (for fence_previous).
+    [[maybe_unused]] const std::bitset<0x10000>* const fence = fence_;
+    [[maybe_unused]] std::uint16_t ipc = fence_prev_;
 
 // T-states now, and the instructions run; a new limit from limit_; the batch ends after this
 // instruction.
@@ -399,6 +402,15 @@ void I8085::execute() {
                     goto done;                                             \
                 }                                                          \
             }                                                              \
+        }                                                                  \
+        if constexpr (Fence) {                                             \
+            if ((*fence)[pc] && (pc != pass_pc_ || TNOW() != pass_t_)) [[unlikely]] { \
+                fence_prev_ = ipc;                                         \
+                fence_hit_ = true;                                         \
+                deadline_ = TNOW();                                        \
+                goto done;                                                 \
+            }                                                              \
+            ipc = pc;                                                      \
         }                                                                  \
         op = FETCH_AT(pc, TNOW()); /* the opcode fetch starts now */       \
         pc = static_cast<std::uint16_t>(pc + 1);                           \
@@ -630,6 +642,7 @@ op_30:  // SIM / 8080: NOP
     NEXT();
 op_31:  // LXI SP,d16
     sp = IMM16();
+    sp_load_ = 0x10000u | sp;
     NEXT();
 op_32:  // STA a16
     { const std::uint16_t ad = IMM16(); WR(ad, a); }
@@ -1233,6 +1246,7 @@ op_F8:  // RM
     NEXT();
 op_F9:  // SPHL
     sp = HL();
+    sp_load_ = 0x10000u | sp;
     NEXT();
 op_FA:  // JM a16
     if ((f & F_S)) { pc = IMM16(); ADD_T(kTaken<V>[0xFA]); } else { pc = pc + 2; }
@@ -1260,6 +1274,10 @@ countdown: __attribute__((unused)); {
     constexpr unsigned per = kBase<V>[0x05] + kBase<V>[0xC2] + kTaken<V>[0xC2];
     const std::uint8_t* const code = rp[pc >> 8];
     if (!code || !rp[static_cast<std::uint16_t>(pc + 3) >> 8] || rem <= 0) NEXT();
+    if constexpr (Fence) {  // a breakpoint inside the loop sees every iteration
+        for (unsigned k = 0; k < 4; ++k)
+            if ((*fence)[static_cast<std::uint16_t>(pc + k)]) NEXT();
+    }
     const std::uint64_t fit = static_cast<std::uint64_t>((stop >> kCountBits) - ((stop - rem) >> kCountBits)) / per;
 #define COUNTDOWN(r)                                                                        \
     do {                                                                                    \
@@ -1293,6 +1311,10 @@ countdown16: __attribute__((unused)); {
     const std::uint8_t* const code = rp[pc >> 8];
     const std::uint8_t* const code_end = rp[static_cast<std::uint16_t>(pc + 5) >> 8];
     if (!code || !code_end || rem <= 0) NEXT();
+    if constexpr (Fence) {
+        for (unsigned k = 0; k < 6; ++k)
+            if ((*fence)[static_cast<std::uint16_t>(pc + k)]) NEXT();
+    }
 #define CODE_AT(k) (((pc + (k)) & 0xFF00) == (pc & 0xFF00) ? code[(pc + (k)) & 0xFF] : code_end[(pc + (k)) & 0xFF])
     const std::uint8_t dcx = code[pc & 0xFF], mov = CODE_AT(1), ora = CODE_AT(2);
 #undef CODE_AT
@@ -1375,10 +1397,18 @@ std::uint64_t I8085::run_impl(std::uint64_t deadline) {
         }
         // Plain RAM over all 64 KiB (a CP/M machine, the bare-core benchmarks): no page table.
         // Chosen per batch; a mapping changed by an I/O handler ends the batch (io_out, io_in).
-        if (!Debug && bus_.flat_ram())
-            execute<V, Debug, true>();
-        else
-            execute<V, Debug, false>();
+        if constexpr (Debug) {
+            execute<V, true, false, false>();
+        } else if (fence_) {  // a debugger's breakpoints or runaway guard, on the plain path
+            if (bus_.flat_ram())
+                execute<V, false, true, true>();
+            else
+                execute<V, false, false, true>();
+        } else if (bus_.flat_ram()) {
+            execute<V, false, true, false>();
+        } else {
+            execute<V, false, false, false>();
+        }
         if (after_ei && instructions_ == before) ei_delay_ = true;  // stopped before it ran
     }
     limit_ = 0;
@@ -1386,6 +1416,7 @@ std::uint64_t I8085::run_impl(std::uint64_t deadline) {
 }
 
 std::uint64_t I8085::run(std::uint64_t deadline) {
+    fence_hit_ = false;
     if (variant_ == Variant::I8085)
         return hooks_ ? run_impl<Variant::I8085, true>(deadline) : run_impl<Variant::I8085, false>(deadline);
     return hooks_ ? run_impl<Variant::I8080, true>(deadline) : run_impl<Variant::I8080, false>(deadline);

@@ -13,8 +13,10 @@
 // docs/cpu.md describes the undocumented 8085 behaviour and where each rule comes from.
 #pragma once
 
+#include <bitset>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -135,8 +137,32 @@ public:
     void set_debug_hooks(DebugHooks* hooks) { hooks_ = hooks; }
     DebugHooks* debug_hooks() const { return hooks_; }
 
+    // A fetch fence: the addresses where a debugger must look before the instruction runs (its
+    // breakpoints, and for a runaway guard every address that is not code). While one is set and
+    // no debug hooks are installed, run() takes its plain path with one bit test per opcode fetch,
+    // and stops before fetching an opcode at a fenced address: fence_stopped() is then true until
+    // the next run(), and fence_previous() is the address of the instruction that ran before it.
+    // pass_fence() lets the instruction at the PC through once, now (an interrupt acknowledged
+    // first takes the pass away). Delay loops over a fenced address are not run at once.
+    // The caller keeps the set alive while it is installed; nullptr removes it.
+    void set_fetch_fence(const std::bitset<0x10000>* fence) { fence_ = fence; }
+    const std::bitset<0x10000>* fetch_fence() const { return fence_; }
+    bool fence_stopped() const { return fence_hit_; }
+    std::uint16_t fence_previous() const { return fence_prev_; }
+    void pass_fence() {
+        pass_pc_ = r_.pc;
+        pass_t_ = t_;
+    }
+    // The value the last LXI SP or SPHL loaded into SP, if one has run: where the program put its
+    // stack, the base of a backtrace. One store in those two instructions, no cost elsewhere. Host
+    // bookkeeping for debuggers, not machine state (not in snapshots).
+    std::optional<std::uint16_t> stack_load() const {
+        if (!(sp_load_ & 0x10000u)) return std::nullopt;
+        return static_cast<std::uint16_t>(sp_load_);
+    }
+
 private:
-    template <Variant V, bool Debug, bool Flat>
+    template <Variant V, bool Debug, bool Flat, bool Fence>
     void execute();  // the instruction loop: runs until t_ >= limit_
     void request_stop_batch() { limit_ = 0; }  // end this batch only (run() goes on)
     template <Variant V, bool Debug>
@@ -174,6 +200,12 @@ private:
     bool sid_ = false, sod_ = false;
     bool hold_ = false, hlda_ = false;
     bool fast_loops_ = true;  // host setting, not machine state: not in snapshots
+    const std::bitset<0x10000>* fence_ = nullptr;  // host settings and findings, not in snapshots
+    bool fence_hit_ = false;
+    std::uint16_t fence_prev_ = 0;
+    std::uint16_t pass_pc_ = 0;
+    std::uint64_t pass_t_ = ~std::uint64_t{0};
+    std::uint32_t sp_load_ = 0;  // bit 16: an LXI SP or SPHL has run; bits 0-15: the value
 };
 
 }  // namespace alp85

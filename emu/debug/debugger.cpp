@@ -41,7 +41,6 @@ Stop Debugger::here(StopReason reason) const {
     s.reason = reason;
     s.at = m_.now();
     s.pc = m_.cpu().regs().pc;
-    if (reason == StopReason::Watchpoint) s.data = m_.watch_hit();
     s.line = program_.line_of(s.pc);
     return s;
 }
@@ -123,7 +122,7 @@ std::optional<Stop> Debugger::drive(const Budget& budget) {
             chunk = std::min(slice_end, std::max(history_->next_due(), m_.now() + 1));
         }
         switch (m_.run_until(chunk, stop_condition)) {
-            case Machine::Stop::Condition:
+            case Machine::RunEnd::Condition:
                 if (interrupt_.exchange(false)) return end_run(here(StopReason::Interrupted));
                 if (halted_) {
                     Stop s = here(StopReason::Halted);
@@ -131,17 +130,15 @@ std::optional<Stop> Debugger::drive(const Budget& budget) {
                     return end_run(s);
                 }
                 return end_run(here(StopReason::Condition));
-            case Machine::Stop::Deadline:
+            case Machine::RunEnd::Deadline:
                 if (m_.now() >= run.until) return end_run(here(StopReason::Deadline));
                 if (m_.now() >= slice_end) return std::nullopt;
                 if (budget.seconds > 0 &&
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >= budget.seconds)
                     return std::nullopt;
                 continue;
-            case Machine::Stop::Breakpoint: return end_run(here(StopReason::Breakpoint));  // the machine's own
-            case Machine::Stop::Watchpoint: return end_run(here(StopReason::Watchpoint));
-            case Machine::Stop::Target: return end_run(here(StopReason::Target));
-            case Machine::Stop::Observer: break;
+            case Machine::RunEnd::Target: return end_run(here(StopReason::Target));
+            case Machine::RunEnd::Observer: break;
         }
         if (!mon.error.empty()) {
             Stop s = here(StopReason::Error);
@@ -240,8 +237,8 @@ Stop Debugger::run_to(std::uint16_t pc, std::uint64_t until) {
             if (history_->due(m_.now())) history_->take(m_);
             chunk = std::min(until, std::max(history_->next_due(), m_.now() + 1));
         }
-        const Machine::Stop s = m_.run_to(pc, chunk);
-        if (s == Machine::Stop::Target) return here(StopReason::Target);
+        const Machine::RunEnd s = m_.run_to(pc, chunk);
+        if (s == Machine::RunEnd::Target) return here(StopReason::Target);
         if (m_.now() >= until) return here(StopReason::Deadline);
     }
 }
@@ -360,11 +357,6 @@ void Debugger::set_runaway_guard(const std::bitset<0x10000>* code) {
     arm();
 }
 
-void Debugger::track_stack_base(bool on) {
-    observer_->track_stack = on;
-    if (!on) stack_base_.reset();
-    arm();
-}
 
 // ---- looking ---------------------------------------------------------------------------------------
 

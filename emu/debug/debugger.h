@@ -260,10 +260,10 @@ public:
     // loaded) after having run inside it: the Stop names the instruction that ran away (`after`).
     // nullptr: off.
     void set_runaway_guard(const std::bitset<0x10000>* code);
-    // SP as the program last set it (LXI SP, SPHL), tracked while on: return addresses above it
-    // are older code's (the monitor's), and backtraces end there.
-    void track_stack_base(bool on);
-    std::optional<std::uint16_t> stack_base() const { return stack_base_; }
+    // SP as the program last set it (LXI SP, SPHL; the CPU notes it, I8085::stack_load), while on:
+    // return addresses above it are older code's (the monitor's), and backtraces end there.
+    void track_stack_base(bool on) { track_stack_ = on; }
+    std::optional<std::uint16_t> stack_base() const { return track_stack_ ? m_.cpu().stack_load() : std::nullopt; }
 
     // ---- reverse execution -------------------------------------------------------------------------
     // Snapshots every `interval` T-states while on; the machine can then be taken back to any
@@ -418,7 +418,7 @@ private:
     std::optional<Active> active_;
     Expr::Variables vars_;
     bool halted_ = false;  // set by the CPU's HLT while a run that stops there is under way
-    std::optional<std::uint16_t> stack_base_;
+    bool track_stack_ = false;
     std::optional<std::bitset<0x10000>> code_;  // the runaway guard's map (nullopt: off)
 };
 

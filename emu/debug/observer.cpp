@@ -47,6 +47,24 @@ void Debugger::Observer::rebuild() {
     any_bp_ = bp_.any();
     guard_ = d_.code_.has_value();
     accesses_ = read_.any() || write_.any() || port_in_.any() || port_out_.any();
+    // The fence serves a run that needs breakpoints and the guard alone. The guard needs the
+    // PC inside the code when the run starts (out there it waits, instruction by instruction,
+    // for the PC to come back before it arms).
+    const bool in_code = guard_ && (*d_.code_)[d_.m_.cpu().regs().pc];
+    fence_ok_ = !accesses_ && !state_watches_ && !target && record == nullptr && !replay && hits == nullptr &&
+                (!guard_ || in_code || runaway_armed);
+    if (fence_ok_) {
+        fence_ = bp_;
+        if (guard_) {
+            fence_ |= ~*d_.code_;
+            runaway_armed = true;
+        }
+    }
+}
+
+bool Debugger::Observer::at_fence(const I8085& cpu) {
+    last_pc = cpu.fence_previous();  // the instruction before, for a runaway's "after"
+    return before_instruction(cpu);
 }
 
 bool Debugger::Observer::before_instruction(const I8085& cpu) {
@@ -55,11 +73,6 @@ bool Debugger::Observer::before_instruction(const I8085& cpu) {
     if (!pending.empty() && hits) flush_pending(t);
     if (record) record->push_back({t, r, d_.m_.peek(r.pc)});
     if (replay && !hits) return false;
-    if (track_stack) {
-        if (setting_sp) d_.stack_base_ = r.sp;
-        const std::uint8_t op = d_.m_.peek(r.pc);
-        setting_sp = op == 0x31 || op == 0xF9;  // LXI SP / SPHL
-    }
     // The machine tool and the chips changed during the instruction at last_pc (stop after it).
     if (state_watches_ && check_state(cpu)) return true;
     if (guard_ && !replay) {

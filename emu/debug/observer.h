@@ -38,8 +38,12 @@ public:
     // What is armed, rebuilt by Debugger::arm() from the breakpoint and watchpoint lists.
     void rebuild();
     bool needed() const {
-        return any_bp_ || accesses_ || state_watches_ || target || record != nullptr || guard_ || track_stack;
+        return any_bp_ || accesses_ || state_watches_ || target || record != nullptr || guard_;
     }
+    // Breakpoints and the runaway guard alone need only a fetch fence (the CPU's plain path):
+    // the breakpoints' addresses and, with the guard armed, every address outside the code.
+    const std::bitset<0x10000>* fetch_fence() const override { return fence_ok_ ? &fence_ : nullptr; }
+    bool at_fence(const I8085& cpu) override;
 
     bool before_instruction(const I8085& cpu) override;
     bool on_read(std::uint16_t addr, std::uint8_t value) override;
@@ -60,8 +64,6 @@ public:
     std::vector<Hit>* hits = nullptr;
     std::uint16_t last_pc = 0;  // the instruction running (for "after" in watch reports)
     bool runaway_armed = false;  // the runaway guard: the PC has been in code since the last runaway
-    bool track_stack = false;    // Debugger::track_stack_base
-    bool setting_sp = false;     // the instruction running sets SP (LXI SP, SPHL)
 
     // Watch hits of the last instruction that survive their conditions and ignore counts (counted).
     std::vector<Hit> decide_pending(bool count);
@@ -78,6 +80,8 @@ private:
     std::bitset<0x10000> bp_, read_, write_;
     std::bitset<256> port_in_, port_out_;
     bool any_bp_ = false, accesses_ = false, state_watches_ = false, guard_ = false;
+    std::bitset<0x10000> fence_;
+    bool fence_ok_ = false;
 };
 
 // Snapshots every interval of simulated time, for reverse execution.

@@ -356,11 +356,12 @@ std::vector<Frame> Debugger::backtrace() const {
     constexpr std::uint32_t kMaxGap = 32;
     std::uint32_t last_slot = r.sp;
     std::uint16_t inner = r.pc;
+    const std::optional<std::uint16_t> base = stack_base();
     std::uint32_t slot = r.sp;
     for (int i = 0; i < 256 && frames.size() < kMaxFrames && slot + 1 <= 0xFFFF; ++i, slot += 2) {
         const auto s = static_cast<std::uint16_t>(slot);
         if (m_.bus().page_kind(s) != Bus::PageKind::Ram) break;  // off the end of the stack's memory
-        if (stack_base_ && slot >= *stack_base_) break;           // older code's stack (track_stack_base)
+        if (base && slot >= *base) break;           // older code's stack (track_stack_base)
         if (slot - last_slot > kMaxGap) break;
         const auto w = static_cast<std::uint16_t>(m_.peek(s) | m_.peek(static_cast<std::uint16_t>(s + 1)) << 8);
         const auto target = called_from(m_, program_, w);

@@ -53,7 +53,7 @@ void Debugger::replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary
     arm();
     m_.pause_sampler(true);
     while (m_.now() < t)
-        if (m_.run_until(t) == Machine::Stop::Deadline) break;  // the machine's own breakpoints only pause it
+        if (m_.run_until(t) == Machine::RunEnd::Deadline) break;
     if (hits && !mon.pending.empty()) {
         for (Hit& h : mon.decide_pending(false)) {
             h.t = m_.now();

@@ -3,6 +3,9 @@
 // board map (docs/board.md), worked out in the comments.
 #include <gtest/gtest.h>
 
+#include <bitset>
+#include <optional>
+
 #include <cstdlib>
 
 #include "board_programs.h"
@@ -109,19 +112,17 @@ TEST(Board8279, KeyShorterThanDebounceIsNotRegistered) {
 TEST(Board8155, TimerTerminalCountTrapsEveryPeriod) {
     Machine m;
     boot(m, "timer.asm");
-    m.add_breakpoint(0x0024);
-    ASSERT_EQ(m.run_for(ms(5)), Machine::Stop::Breakpoint);
+    ASSERT_EQ(m.run_to(0x0024, m.now() + ms(5)), Machine::RunEnd::Target);
     const std::uint64_t first = m.now();
     // Continuous pulse mode, count 1000: a TIMER OUT pulse, hence a TRAP edge, every 1000
     // T-states. The CPU takes the TRAP at the first instruction boundary after the edge; the
     // JMP loop's instructions are 10 T-states long, so each entry lies 0-9 T-states after its edge,
     // and the k-th entry within 10 T-states of first + 1000 k.
     for (std::uint64_t k = 1; k <= 10; ++k) {
-        ASSERT_EQ(m.run_for(ms(5)), Machine::Stop::Breakpoint);
+        ASSERT_EQ(m.run_to(0x0024, m.now() + ms(5)), Machine::RunEnd::Target);
         const auto expected = static_cast<std::int64_t>(first + 1000 * k);
         EXPECT_LT(std::llabs(static_cast<std::int64_t>(m.now()) - expected), 10) << "trap " << k;
     }
-    m.clear_breakpoints();
     // 100 more periods: 100 more traps.
     const std::uint16_t before = static_cast<std::uint16_t>(m.peek(0x1000) | m.peek(0x1001) << 8);
     m.run_for(100'000);
@@ -129,20 +130,56 @@ TEST(Board8155, TimerTerminalCountTrapsEveryPeriod) {
     EXPECT_EQ(after - before, 100);
 }
 
-TEST(BoardDebug, RunToStopsOnlyAtItsTargetAndKeepsTheBreakpoints) {
+// An observer that stops the run before the instruction at `pc` (a debugger's breakpoint), on
+// the CPU's debug path, or on its plain path behind a fetch fence.
+struct StopAt final : RunObserver {
+    std::uint16_t pc = 0;
+    std::optional<std::bitset<0x10000>> fence;
+    bool before_instruction(const I8085& cpu) override { return cpu.regs().pc == pc; }
+    const std::bitset<0x10000>* fetch_fence() const override { return fence ? &*fence : nullptr; }
+};
+
+TEST(BoardDebug, RunToStopsOnlyAtItsTargetAndKeepsTheObserver) {
     Machine m;
     const LoadedImage img = boot(m, "hello.asm");
     const std::uint16_t show = img.assembly->find_symbol("SHOW")->value;
-    m.add_breakpoint(0x0040);  // START: passed on the way to SHOW, but not armed by run_to
-    ASSERT_EQ(m.run_to(show, m.now() + ms(5)), Machine::Stop::Target);
+    StopAt start;
+    start.pc = 0x0040;  // START: passed on the way to SHOW, but not consulted by run_to
+    m.set_observer(&start);
+    ASSERT_EQ(m.run_to(show, m.now() + ms(5)), Machine::RunEnd::Target);
     EXPECT_EQ(m.cpu().regs().pc, show);
-    EXPECT_EQ(m.breakpoints(), std::vector<std::uint16_t>{0x0040});
+    EXPECT_EQ(m.observer(), &start);
     // A target that is never reached: the deadline ends the run.
-    EXPECT_EQ(m.run_to(0x0700, m.now() + 10'000), Machine::Stop::Deadline);
-    // The breakpoint at START is armed again for ordinary runs.
+    EXPECT_EQ(m.run_to(0x0700, m.now() + 10'000), Machine::RunEnd::Deadline);
+    // The observer is consulted again for ordinary runs.
     m.reset();
-    EXPECT_EQ(m.run_for(ms(5)), Machine::Stop::Breakpoint);
+    EXPECT_EQ(m.run_for(ms(5)), Machine::RunEnd::Observer);
     EXPECT_EQ(m.cpu().regs().pc, 0x0040);
+    m.set_observer(nullptr);
+}
+
+// The same observer behind a fetch fence: the CPU stays on its plain path (no debug hooks) and
+// the run stops at the same instruction and T-state as on the debug path.
+TEST(BoardDebug, AFencedObserverStopsWhereTheDebugPathStops) {
+    std::uint64_t at[2] = {};
+    for (const bool fenced : {false, true}) {
+        Machine m;
+        const LoadedImage img = boot(m, "hello.asm");
+        StopAt stop;
+        stop.pc = img.assembly->find_symbol("SHOW")->value;
+        if (fenced) {
+            stop.fence.emplace();
+            (*stop.fence)[stop.pc] = true;
+        }
+        m.set_observer(&stop);
+        EXPECT_EQ(m.cpu().debug_hooks() == nullptr, fenced);
+        EXPECT_EQ(m.cpu().fetch_fence() != nullptr, fenced);
+        ASSERT_EQ(m.run_for(ms(5)), Machine::RunEnd::Observer);
+        EXPECT_EQ(m.cpu().regs().pc, stop.pc);
+        at[fenced] = m.now();
+        m.set_observer(nullptr);
+    }
+    EXPECT_EQ(at[0], at[1]);
 }
 
 TEST(BoardReset, ResetKeyRestartsAtZeroAndResetsTheChips) {

@@ -12,6 +12,8 @@ namespace {
 using debug::Debugger;
 using debug::Event;
 using debug::StopReason;
+using debug::WatchKind;
+using debug::WatchSpec;
 
 std::string program(const char* name) { return std::string(ALP85_BOARD_PROGRAMS) + "/" + name; }
 std::uint64_t ms(double v) { return board::tstates_from_ms(v); }
@@ -57,7 +59,7 @@ TEST(Debugger, ALineWithoutCodeBindsToTheNextLineWithCode) {
 
 TEST(Debugger, ABreakpointStopIsAValueAndAnEvent) {
     Rig r;
-    r.m.add_breakpoint(0x0069);
+    const int n = r.d.add_breakpoint_at(0x0069).number;
     const debug::Stop s = r.d.run_until(ms(5), {}, {"x.alp", 3});
     EXPECT_EQ(s.reason, StopReason::Breakpoint);
     EXPECT_EQ(s.pc, 0x0069);
@@ -68,14 +70,18 @@ TEST(Debugger, ABreakpointStopIsAValueAndAnEvent) {
     EXPECT_EQ(r.events[0].stop.pc, 0x0069);
     EXPECT_EQ(r.events[0].origin.line, 3);
     // A run that simply reaches its deadline is no event.
-    r.m.clear_breakpoints();
+    r.d.remove(n);
     EXPECT_EQ(r.d.run_until(r.m.now() + 1000).reason, StopReason::Deadline);
     EXPECT_EQ(r.events.size(), 1u);
 }
 
 TEST(Debugger, AWatchpointNamesTheAddress) {
     Rig r;
-    r.m.add_watchpoint(0x1002);  // DONE, cleared by STA DONE at 004AH
+    WatchSpec w;  // any access of DONE: the first is STA DONE at 004AH
+    w.kind = WatchKind::Access;
+    w.what = "DONE";
+    w.first = w.last = 0x1002;
+    r.d.add_watchpoint(w);
     const debug::Stop s = r.d.run_until(ms(5));
     EXPECT_EQ(s.reason, StopReason::Watchpoint);
     EXPECT_EQ(s.data, std::optional<std::uint16_t>{0x1002});

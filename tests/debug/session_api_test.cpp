@@ -181,6 +181,36 @@ TEST(Resumable, ARunawayStopsBeforeTheFetchNamingTheJumpThatLeft) {
     EXPECT_NE(s.message.find("0803H"), std::string::npos);
 }
 
+// Breakpoints (hit conditions included) and the runaway guard need only the CPU's fetch fence:
+// no debug hooks, so the plain path runs (delay loops too, where no breakpoint is inside them).
+// A memory watch needs every access: the debug path. Both stop where the data sheet says.
+TEST(Resumable, BreakpointsAndTheRunawayGuardKeepTheCpuOnItsPlainPath) {
+    Rig r;
+    r.program(loop_program());
+    std::bitset<0x10000> code;
+    for (int a = kOrg; a < kOrg + 10; ++a) code[static_cast<std::size_t>(a)] = true;
+    r.d.set_runaway_guard(&code);
+    const int n = r.d.add_breakpoint("0805H").number;
+    r.d.set_hit_condition(n, "==7");
+    EXPECT_EQ(r.m.cpu().debug_hooks(), nullptr);
+    ASSERT_NE(r.m.cpu().fetch_fence(), nullptr);
+    EXPECT_TRUE((*r.m.cpu().fetch_fence())[0x0805]);   // the breakpoint
+    EXPECT_TRUE((*r.m.cpu().fetch_fence())[0x9000]);   // outside the code
+    EXPECT_FALSE((*r.m.cpu().fetch_fence())[0x0806]);  // code without a breakpoint
+    const debug::Stop s = r.d.cont();
+    ASSERT_EQ(s.reason, StopReason::Breakpoint);
+    EXPECT_EQ(s.at, 17u + 6u * 14u);  // as in SlicesEndWhereTheWholeRunEnds, on the debug path
+    // A watch on the stack's top word: every write is looked at, on the debug path.
+    debug::WatchSpec w;
+    w.kind = debug::WatchKind::Write;
+    w.what = "stack";
+    w.first = kStack - 2;
+    w.last = kStack - 1;
+    r.d.add_watchpoint(w);
+    EXPECT_NE(r.m.cpu().debug_hooks(), nullptr);
+    EXPECT_EQ(r.m.cpu().fetch_fence(), nullptr);
+}
+
 // ---- the console: one expression language, convenience variables in conditions -----------------
 
 struct Shell {

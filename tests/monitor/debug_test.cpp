@@ -59,19 +59,16 @@ TEST_F(MonitorStep, EachNextRunsExactlyOneInstruction) {
 TEST_F(MonitorStep, TrapIsTakenAsTheSteppedInstructionEnds) {
     b_.type({Key::Next, Key::Next});  // to the NOP at 1003H
     ASSERT_EQ(b_.display(), "1003.  00");
-    b_.m.add_breakpoint(0x1003);
-    b_.m.add_breakpoint(0x0024);
     const std::uint64_t t = b_.m.now();
     b_.m.key_at(Key::Next, true, t);
     b_.m.key_at(Key::Next, false, t + ms(30));
-    ASSERT_EQ(b_.m.run_until(t + ms(60)), Machine::Stop::Breakpoint);
+    ASSERT_EQ(b_.m.run_to(0x1003, t + ms(60)), Machine::RunEnd::Target);
     ASSERT_EQ(b_.m.cpu().regs().pc, 0x1003);
     const std::uint64_t start = b_.m.now();
-    ASSERT_EQ(b_.m.run_until(t + ms(60)), Machine::Stop::Breakpoint);
+    ASSERT_EQ(b_.m.run_to(0x0024, t + ms(60)), Machine::RunEnd::Target);
     ASSERT_EQ(b_.m.cpu().regs().pc, 0x0024);
     // NOP: 4 T-states; the TRAP acknowledge: 12 (8085 data sheet). Nothing in between.
     EXPECT_EQ(b_.m.now() - start, 4u + 12u);
-    b_.m.clear_breakpoints();
     b_.m.run_until(t + ms(60));
     EXPECT_EQ(b_.display(), "1004.  Cd");
 }
@@ -86,20 +83,17 @@ TEST_F(MonitorStep, TimerCountMatchesTheRestoreSequence) {
     const std::uint8_t* at = std::search(rom, end, std::begin(pattern), std::end(pattern));
     ASSERT_NE(at, end);
     const auto out_pc = static_cast<std::uint16_t>(at - rom + 2);
-    b_.m.add_breakpoint(out_pc);
-    b_.m.add_breakpoint(0x1000);
     const std::uint64_t t = b_.m.now();
     b_.m.key_at(Key::Next, true, t);
     b_.m.key_at(Key::Next, false, t + ms(30));
-    ASSERT_EQ(b_.m.run_until(t + ms(60)), Machine::Stop::Breakpoint);
+    ASSERT_EQ(b_.m.run_to(out_pc, t + ms(60)), Machine::RunEnd::Target);
     ASSERT_EQ(b_.m.cpu().regs().pc, out_pc);
     const std::uint64_t out_t = b_.m.now();
-    ASSERT_EQ(b_.m.run_until(t + ms(60)), Machine::Stop::Breakpoint);
+    ASSERT_EQ(b_.m.run_to(0x1000, t + ms(60)), Machine::RunEnd::Target);
     ASSERT_EQ(b_.m.cpu().regs().pc, 0x1000);
     EXPECT_EQ(b_.m.now() - out_t, 112u);
     // The count: 112 - 7 (OUT's I/O write cycle starts 7 T-states in), single pulse mode (10).
     EXPECT_EQ(b_.m.rio().state().count_length, 0x8000 | 105);
-    b_.m.clear_breakpoints();
     b_.m.run_until(t + ms(60));
     EXPECT_EQ(b_.display(), "1002.  3C");
 }
