@@ -2,10 +2,13 @@
 
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <SDL_opengl.h>
 #include <cairo.h>
+
+#include "emu/util/atomic_file.h"
 
 namespace alp85::gui {
 
@@ -25,10 +28,19 @@ void save_screenshot(const std::string& path, int width, int height) {
             dst[x] = 0xFF000000u | std::uint32_t{src[0]} << 16 | std::uint32_t{src[1]} << 8 | src[2];
     }
     cairo_surface_mark_dirty(s);
-    const cairo_status_t st = cairo_surface_write_to_png(s, path.c_str());
+    // Encoded in memory, then written whole or not at all (a killed run leaves no half a PNG).
+    std::string png;
+    const cairo_status_t st = cairo_surface_write_to_png_stream(
+        s,
+        [](void* out, const unsigned char* bytes, unsigned int n) {
+            static_cast<std::string*>(out)->append(reinterpret_cast<const char*>(bytes), n);
+            return CAIRO_STATUS_SUCCESS;
+        },
+        &png);
     cairo_surface_destroy(s);
     if (st != CAIRO_STATUS_SUCCESS)
         throw std::runtime_error("screenshot " + path + ": " + cairo_status_to_string(st));
+    write_atomic(path, png);
 }
 
 }  // namespace alp85::gui
