@@ -65,7 +65,7 @@ public:
         int rotor_teeth = 50;             // 1.8 deg full step (§3.2.1): 200 steps/rev
         // Drive, thesis §3.2.2.1 (values not given: assumed, docs/machine.md).
         double forcing_ohm = 0.0;         // R: Table 3.2's 24 V = 0.21 A x 114 ohm, so R = 0 at 24 V
-        double freewheel_ohm = 100.0;     // Rf: Vce,max = Vs + Rf I = 45 V (eq. 3.2)
+        double freewheel_ohm = 600.0;     // Rf: calibrated (docs/machine.md); Vce,max = Vs + Rf I = 150 V (eq. 3.2)
         double vce_sat = 0.1;             // "typically 0.1 V" (§3.2.2.1)
         double diode_v = 0.7;             // freewheeling diode forward drop
         // Not in the thesis (assumed, docs/machine.md).

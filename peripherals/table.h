@@ -31,7 +31,7 @@ public:
         double lead_mm_per_rev = 10.0;   // thesis §3.2.2: 200 steps x 0.05 mm
         double travel_mm = 1500.0;       // work range [0, travel_mm] from the power-on position
         double overtravel_mm = 5.0;      // hard stops at -overtravel and travel + overtravel (assumed)
-        double mass_kg = 18.0;           // equivalent moving mass (calibrated, docs/machine.md)
+        double mass_kg = 28.0;           // equivalent moving mass (calibrated, docs/machine.md)
         double friction_mu = 0.1;        // Coulomb friction coefficient of the slideway (assumed)
         double screw_efficiency = 1.0;   // friction torque reflected at the motor = mu m g lead / (2 pi eta)
     };

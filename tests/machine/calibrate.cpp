@@ -1,9 +1,12 @@
 // The calibration sweep of docs/machine.md and the doc's figures. Run by hand:
-//   machine_calibrate [--mass KG] [--steps N] [--h TSTATES] [--rates LO HI INC]   -> CSV on stdout
+//   machine_calibrate [--mass KG] [--rf OHM] [--steps N] [--h TSTATES] [--rates LO HI INC]
+//                     [--ramp ACC]                                                -> CSV on stdout
 //   machine_calibrate --plot DIR                                                  -> DIR/*.svg
 // A start-stop run: N pulses at a fixed rate from standstill (pulse high half the period, as a
 // square-wave generator gives, thesis §5.1), then an abrupt stop and 0.5 s to settle; lost steps =
-// commanded - actual (rounded).
+// commanded - actual (rounded). With --ramp ACC, a ramped run instead: from 250 steps/s up to the
+// rate at ACC steps/s^2, N steps there and down again (§5.1: "any rotational speed between 0 and
+// 500 steps/sec can be reached"). --rf sets the freewheel resistance Rf (ohm).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -42,10 +45,10 @@ void figures(const std::string& dir, const std::string& ext) {
     // 2. Start-stop sweep: lost steps against the rate, three table masses.
     {
         std::vector<plot::Series> series;
-        for (double mass : {10.0, 18.0, 30.0}) {
+        for (double mass : {14.0, 28.0, 40.0}) {
             auto p = MachineTool::default_params();
             p.axes[0].table.mass_kg = mass;
-            plot::Series s{"table " + std::to_string(static_cast<int>(mass)) + " kg" + (mass == 18.0 ? " (calibrated)" : ""),
+            plot::Series s{"table " + std::to_string(static_cast<int>(mass)) + " kg" + (mass == 28.0 ? " (calibrated)" : ""),
                            {}};
             for (int rate = 50; rate <= 700; rate += 10)
                 s.points.push_back({static_cast<double>(rate), static_cast<double>(start_stop_loss(p, 200, rate))});
@@ -59,14 +62,34 @@ void figures(const std::string& dir, const std::string& ext) {
         c.legend = plot::Chart::Legend::TopLeft;
         plot::write(c, dir + "/start_stop_sweep" + ext);
     }
+    // 3. Ramped runs: up from 250 steps/s at 1250 steps/s^2, 2000 steps at the rate, down again;
+    // lost steps against the rate, for the freewheel resistance before (100 ohm) and calibrated.
+    {
+        std::vector<plot::Series> series;
+        for (double rf : {100.0, 600.0}) {
+            auto p = MachineTool::default_params();
+            p.axes[0].motor.freewheel_ohm = rf;
+            plot::Series s{"Rf " + std::to_string(static_cast<int>(rf)) + " ohm" + (rf == 600.0 ? " (calibrated)" : ""), {}};
+            for (int rate = 300; rate <= 650; rate += 10) s.points.push_back({static_cast<double>(rate), static_cast<double>(ramped_loss(p, 2000, rate, 1250))});
+            series.push_back(s);
+        }
+        plot::Chart c;
+        c.title = "Ramped runs (250 steps/s up at 1250 steps/s^2, 2000 steps at the rate): lost steps";
+        c.x_label = "step rate (steps/s)";
+        c.y_label = "lost steps";
+        c.series = series;
+        c.legend = plot::Chart::Legend::TopLeft;
+        plot::write(c, dir + "/ramp_sweep" + ext);
+    }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::vector<double> masses = {10, 14, 16, 18, 20, 25, 30};
+    std::vector<double> masses = {14, 20, 24, 26, 28, 30, 35, 40};
     int n = 200, lo = 50, hi = 700, inc = 10;
     unsigned h = 0;
+    double rf = -1, ramp = 0;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--plot") && i + 1 < argc) {
             const std::string dir = argv[++i];
@@ -74,6 +97,8 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (!std::strcmp(argv[i], "--mass") && i + 1 < argc) masses = {std::atof(argv[++i])};
+        if (!std::strcmp(argv[i], "--rf") && i + 1 < argc) rf = std::atof(argv[++i]);
+        if (!std::strcmp(argv[i], "--ramp") && i + 1 < argc) ramp = std::atof(argv[++i]);
         if (!std::strcmp(argv[i], "--steps") && i + 1 < argc) n = std::atoi(argv[++i]);
         if (!std::strcmp(argv[i], "--h") && i + 1 < argc) h = static_cast<unsigned>(std::atoi(argv[++i]));
         if (!std::strcmp(argv[i], "--rates") && i + 3 < argc) {
@@ -82,14 +107,15 @@ int main(int argc, char** argv) {
             inc = std::atoi(argv[++i]);
         }
     }
-    std::printf("mass_kg,rate,lost\n");
+    std::printf("mass_kg,rf_ohm,rate,lost\n");
     for (double mass : masses) {
         auto p = MachineTool::default_params();
         p.axes[0].table.mass_kg = mass;
         if (h) p.axes[0].motor.step_tstates = h;
+        if (rf >= 0) p.axes[0].motor.freewheel_ohm = rf;
         for (int rate = lo; rate <= hi; rate += inc) {
-            const auto lost = start_stop_loss(p, n, rate);
-            std::printf("%g,%d,%lld\n", mass, rate, static_cast<long long>(lost));
+            const auto lost = ramp > 0 ? ramped_loss(p, n, rate, ramp) : start_stop_loss(p, n, rate);
+            std::printf("%g,%g,%d,%lld\n", mass, p.axes[0].motor.freewheel_ohm, rate, static_cast<long long>(lost));
             std::fflush(stdout);
         }
     }
