@@ -1,12 +1,15 @@
 // The calibration sweep of docs/machine.md and the doc's figures. Run by hand:
 //   machine_calibrate [--mass KG] [--rf OHM] [--steps N] [--h TSTATES] [--rates LO HI INC]
-//                     [--ramp ACC]                                                -> CSV on stdout
+//                     [--ramp ACC] [--mu MU] [--detent NM] [--viscous NMS]        -> CSV on stdout
+//   machine_calibrate --sampled [--steps N] [--rates LO HI INC]                   -> CSV on stdout
 //   machine_calibrate --plot DIR                                                  -> DIR/*.svg
 // A start-stop run: N pulses at a fixed rate from standstill (pulse high half the period, as a
 // square-wave generator gives, thesis §5.1), then an abrupt stop and 0.5 s to settle; lost steps =
 // commanded - actual (rounded). With --ramp ACC, a ramped run instead: from 250 steps/s up to the
 // rate at ACC steps/s^2, N steps there and down again (§5.1: "any rotational speed between 0 and
-// 500 steps/sec can be reached"). --rf sets the freewheel resistance Rf (ohm).
+// 500 steps/sec can be reached"). --rf sets the freewheel resistance Rf (ohm), --mu the slideway's
+// friction, --detent and --viscous the motor's (docs/machine.md "Calibration"). --sampled: the master
+// program's 2 ms sampling output ramped up to each rate (sim.h sampled_loss; docs/results.md).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -39,7 +42,7 @@ void figures(const std::string& dir, const std::string& ext) {
             current.points.push_back({ms, 10 * (i[0] - i[1])});
         }
         plot::write_time_series(dir + "/step_response" + ext,
-                                "One step from rest: the rotor's damped ringing (18 kg table, 24 V)",
+                                "One step from rest: the rotor's damped ringing (28 kg table, 24 V)",
                                 {rotor, ideal, current}, "rotor angle (deg)", "t (ms)", plot::Chart::Legend::Right);
     }
     // 2. Start-stop sweep: lost steps against the rate, three table masses.
@@ -89,7 +92,8 @@ int main(int argc, char** argv) {
     std::vector<double> masses = {14, 20, 24, 26, 28, 30, 35, 40};
     int n = 200, lo = 50, hi = 700, inc = 10;
     unsigned h = 0;
-    double rf = -1, ramp = 0;
+    double rf = -1, ramp = 0, mu = -1, detent = -1, viscous = -1;
+    bool sampled = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--plot") && i + 1 < argc) {
             const std::string dir = argv[++i];
@@ -99,6 +103,10 @@ int main(int argc, char** argv) {
         if (!std::strcmp(argv[i], "--mass") && i + 1 < argc) masses = {std::atof(argv[++i])};
         if (!std::strcmp(argv[i], "--rf") && i + 1 < argc) rf = std::atof(argv[++i]);
         if (!std::strcmp(argv[i], "--ramp") && i + 1 < argc) ramp = std::atof(argv[++i]);
+        if (!std::strcmp(argv[i], "--mu") && i + 1 < argc) mu = std::atof(argv[++i]);
+        if (!std::strcmp(argv[i], "--sampled")) sampled = true;
+        if (!std::strcmp(argv[i], "--detent") && i + 1 < argc) detent = std::atof(argv[++i]);
+        if (!std::strcmp(argv[i], "--viscous") && i + 1 < argc) viscous = std::atof(argv[++i]);
         if (!std::strcmp(argv[i], "--steps") && i + 1 < argc) n = std::atoi(argv[++i]);
         if (!std::strcmp(argv[i], "--h") && i + 1 < argc) h = static_cast<unsigned>(std::atoi(argv[++i]));
         if (!std::strcmp(argv[i], "--rates") && i + 3 < argc) {
@@ -113,8 +121,13 @@ int main(int argc, char** argv) {
         p.axes[0].table.mass_kg = mass;
         if (h) p.axes[0].motor.step_tstates = h;
         if (rf >= 0) p.axes[0].motor.freewheel_ohm = rf;
+        if (mu >= 0) p.axes[0].table.friction_mu = mu;
+        if (detent >= 0) p.axes[0].motor.detent_nm = detent;
+        if (viscous >= 0) p.axes[0].motor.viscous_nms = viscous;
         for (int rate = lo; rate <= hi; rate += inc) {
-            const auto lost = ramp > 0 ? ramped_loss(p, n, rate, ramp) : start_stop_loss(p, n, rate);
+            const auto lost = sampled    ? sampled_loss(p, n, rate / 500.0)
+                              : ramp > 0 ? ramped_loss(p, n, rate, ramp)
+                                         : start_stop_loss(p, n, rate);
             std::printf("%g,%g,%d,%lld\n", mass, p.axes[0].motor.freewheel_ohm, rate, static_cast<long long>(lost));
             std::fflush(stdout);
         }

@@ -62,6 +62,31 @@ inline std::int64_t start_stop_loss(const MachineTool::Params& p, int n, double 
     return m.lost_steps(Axis::X);
 }
 
+// The master program's sampling output on one axis (docs/contours.md "Sampling"): a pulse at the
+// start of each 2 ms sample in which x* (advanced by f each sample) passes a whole step, f rising
+// from 0.5 step a sample by 328/65536 a sample to `fs` (1.0 = 500 steps/s), n steps, then 0.5 s to
+// settle. Returns the lost steps.
+inline std::int64_t sampled_loss(const MachineTool::Params& p, int n, double fs) {
+    MachineTool m(p);
+    m.set_model(MachineTool::MotorModel::Physical);
+    const std::uint64_t period = 6144, t0 = tstates(0.01);
+    double f = 0.5, x = 0;
+    long steps = 0;
+    std::uint64_t t = t0;
+    while (steps < n) {
+        f = f + 328.0 / 65536 < fs ? f + 328.0 / 65536 : fs;
+        x += f;
+        if (static_cast<long>(x) > steps) {
+            m.set_drive(Axis::X, true, true, t);
+            m.set_drive(Axis::X, false, true, t + period / 2);
+            steps = static_cast<long>(x);
+        }
+        t += period;
+    }
+    m.advance(t + tstates(0.5));
+    return m.lost_steps(Axis::X);
+}
+
 // Lost steps of one ramped run (ramped_train from 250 steps/s at `acc`, n steps at `rate`).
 inline std::int64_t ramped_loss(const MachineTool::Params& p, int n, double rate, double acc) {
     MachineTool m(p);
