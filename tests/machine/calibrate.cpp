@@ -2,6 +2,9 @@
 //   machine_calibrate [--mass KG] [--rf OHM] [--steps N] [--h TSTATES] [--rates LO HI INC]
 //                     [--ramp ACC] [--mu MU] [--detent NM] [--viscous NMS]        -> CSV on stdout
 //   machine_calibrate --sampled [--steps N] [--rates LO HI INC]                   -> CSV on stdout
+//   machine_calibrate --replay FILE      -> lost steps of X and Y for the pulses in FILE, one a line:
+//                                           "seconds axis(0 X, 1 Y) direction(1 +)" in time order
+//                                           (tests/master/replay_samples.py writes the model's)
 //   machine_calibrate --plot DIR                                                  -> DIR/*.svg
 // A start-stop run: N pulses at a fixed rate from standstill (pulse high half the period, as a
 // square-wave generator gives, thesis §5.1), then an abrupt stop and 0.5 s to settle; lost steps =
@@ -88,6 +91,46 @@ void figures(const std::string& dir, const std::string& ext) {
 
 }  // namespace
 
+// The pulses of a file on the physical motors (X and Y), then 0.5 s to settle.
+int replay(const char* file) {
+    std::FILE* f = std::fopen(file, "r");
+    if (!f) {
+        std::fprintf(stderr, "machine_calibrate: cannot open %s\n", file);
+        return 2;
+    }
+    MachineTool m;
+    m.set_model(MachineTool::MotorModel::Physical);
+    double t = 0, last = 0;
+    int axis = 0, dir = 0, line = 0;
+    bool behind[2] = {false, false};
+    while (std::fscanf(f, "%lf %d %d", &t, &axis, &dir) == 3) {
+        ++line;
+        if (t < last || (axis != 0 && axis != 1)) {
+            std::fprintf(stderr, "machine_calibrate: %s:%d: pulses out of order or axis not 0/1\n", file, line);
+            std::fclose(f);
+            return 2;
+        }
+        last = t;
+        const Axis a = axis ? Axis::Y : Axis::X;
+        m.set_drive(a, true, dir != 0, tstates(t));
+        m.set_drive(a, false, dir != 0, tstates(t + 0.001));
+        for (Axis b : {Axis::X, Axis::Y}) {  // where each motor first falls 2.5 steps behind or ahead
+            const int k = b == Axis::X ? 0 : 1;
+            if (!behind[k] && std::fabs(static_cast<double>(m.commanded_steps(b)) - m.table_steps(b)) > 2.5) {
+                behind[k] = true;
+                std::printf("%c out of step at %.3f s, commanded X %lld Y %lld\n", k ? 'Y' : 'X', t,
+                            static_cast<long long>(m.commanded_steps(Axis::X)), static_cast<long long>(m.commanded_steps(Axis::Y)));
+            }
+        }
+    }
+    std::fclose(f);
+    m.advance(tstates(last + 0.5));
+    std::printf("lost X %lld, lost Y %lld (of %lld, %lld net commanded)\n", static_cast<long long>(m.lost_steps(Axis::X)),
+                static_cast<long long>(m.lost_steps(Axis::Y)), static_cast<long long>(m.commanded_steps(Axis::X)),
+                static_cast<long long>(m.commanded_steps(Axis::Y)));
+    return 0;
+}
+
 int main(int argc, char** argv) {
     std::vector<double> masses = {14, 20, 24, 26, 28, 30, 35, 40};
     int n = 200, lo = 50, hi = 700, inc = 10;
@@ -105,6 +148,7 @@ int main(int argc, char** argv) {
         if (!std::strcmp(argv[i], "--ramp") && i + 1 < argc) ramp = std::atof(argv[++i]);
         if (!std::strcmp(argv[i], "--mu") && i + 1 < argc) mu = std::atof(argv[++i]);
         if (!std::strcmp(argv[i], "--sampled")) sampled = true;
+        if (!std::strcmp(argv[i], "--replay") && i + 1 < argc) return replay(argv[i + 1]);
         if (!std::strcmp(argv[i], "--detent") && i + 1 < argc) detent = std::atof(argv[++i]);
         if (!std::strcmp(argv[i], "--viscous") && i + 1 < argc) viscous = std::atof(argv[++i]);
         if (!std::strcmp(argv[i], "--steps") && i + 1 < argc) n = std::atoi(argv[++i]);
