@@ -175,6 +175,21 @@ TEST(TransducerOnPhysicalTable, RingingAcrossALineGivesRealEdgesBackAndForth) {
     EXPECT_EQ(count, 1);
 }
 
+TEST(TransducerOnPhysicalTable, OvershootPastAQuarterStepLatchesDirectionBack) {
+    // One step from rest: the linear estimate of the overshoot, exp(-pi z/sqrt(1-z^2)) with
+    // z = b_e/(2 sqrt(k J)) = 0.23 (b_e = Kt^2/R, k and J as in SmallSignalRingingFrequency), is
+    // 0.48 step, past the quadrature boundary a quarter step beyond the step position (lines at
+    // half steps, states a quarter pitch apart). The swing back crosses it again: 30 ms later the
+    // count is 1 (one line crossed) and DIRECTION reads - (its last transition was backwards).
+    MachineTool m;
+    int count = 0;
+    EXPECT_EQ(edges_after_one_step(m, count), (std::vector<bool>{true}));
+    EXPECT_EQ(count, 1);
+    EXPECT_FALSE(m.sense(Axis::X, 1000 + tstates(0.030)).direction);
+    EXPECT_GT(m.table_steps(Axis::X), 0.75);  // at rest short of the boundary it swung back across
+    EXPECT_LT(m.table_steps(Axis::X), 1.25);
+}
+
 TEST(TransducerOnPhysicalTable, DefaultOffsetGivesOneEdgePerStep) {
     // Lines half-way between steps: the overshoot (about 0.4 step) never reaches the next line.
     MachineTool m;
