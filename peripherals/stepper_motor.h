@@ -27,10 +27,10 @@
 // (i -> i_inf + (i - i_inf) exp(-h/tau), clamped at zero when a diode or transistor blocks; the
 // torque uses the exponential's exact mean over the step); the rotor is kicked with that torque
 // (Coulomb friction with stiction) and drifts the other half. Because the electrical part is solved
-// exactly, the electrical time constant (L/R = 126 us on, 67 us freewheeling) bounds neither
+// exactly, the electrical time constant (L/R = 126 us on, 20 us freewheeling) bounds neither
 // stability nor the step: the step only has to keep the EMF (the electro-mechanical coupling)
 // nearly constant across it, so H is set to one electrical time constant, H = 384 T-states =
-// 125 us ~ L/R. The mechanics are slow beside it (loaded ringing ~12 ms = 95 steps; rotor alone
+// 125 us ~ L/R. The mechanics are slow beside it (loaded ringing ~14 ms = 112 steps; rotor alone
 // ~4.6 ms = 37 steps; at 500 steps/s the electrical angle moves 0.1 rad per step). Measured against
 // H = 12 T-states: without friction the error falls as H^2 (0.001 step at H = 384, 400 steps/s);
 // the Coulomb friction's stick/slip switching is located to the grid step (first order, at most
@@ -65,7 +65,7 @@ public:
         int rotor_teeth = 50;             // 1.8 deg full step (§3.2.1): 200 steps/rev
         // Drive, thesis §3.2.2.1 (values not given: assumed, docs/machine.md).
         double forcing_ohm = 0.0;         // R: Table 3.2's 24 V = 0.21 A x 114 ohm, so R = 0 at 24 V
-        double freewheel_ohm = 100.0;     // Rf: Vce,max = Vs + Rf I = 45 V (eq. 3.2)
+        double freewheel_ohm = 600.0;     // Rf: calibrated (docs/machine.md); Vce,max = Vs + Rf I = 150 V (eq. 3.2)
         double vce_sat = 0.1;             // "typically 0.1 V" (§3.2.2.1)
         double diode_v = 0.7;             // freewheeling diode forward drop
         // Not in the thesis (assumed, docs/machine.md).

@@ -14,8 +14,9 @@
 //   - end stops: not in the thesis. The work range is [0, travel] from the power-on position
 //     (the firmware counts coordinates from where the table stood); hard stops sit `overtravel_mm`
 //     beyond each end (default 5 mm, a typical allowance), the screw stalls the motor there;
-//   - mass and friction: not in the thesis; `mass_kg` is the one calibrated parameter of the model
-//     (docs/machine.md, "Calibration"); mu is a typical lubricated slideway figure (0.1).
+//   - mass and friction: not in the thesis; `mass_kg` is calibrated to §5.1's start-stop limit
+//     (with the motor's freewheel resistance, calibrated to §5.1's 500 steps/s reached by a ramp:
+//     docs/machine.md, "Calibration"); mu is a typical lubricated slideway figure (0.1).
 //
 // Not emulated: backlash in the gears and the screw, screw and gear-box inertia (lumped into the
 // equivalent mass), elasticity of the screw, a cutting load, limit switches (the thesis has none).
@@ -31,7 +32,7 @@ public:
         double lead_mm_per_rev = 10.0;   // thesis §3.2.2: 200 steps x 0.05 mm
         double travel_mm = 1500.0;       // work range [0, travel_mm] from the power-on position
         double overtravel_mm = 5.0;      // hard stops at -overtravel and travel + overtravel (assumed)
-        double mass_kg = 18.0;           // equivalent moving mass (calibrated, docs/machine.md)
+        double mass_kg = 28.0;           // equivalent moving mass (calibrated, docs/machine.md)
         double friction_mu = 0.1;        // Coulomb friction coefficient of the slideway (assumed)
         double screw_efficiency = 1.0;   // friction torque reflected at the motor = mu m g lead / (2 pi eta)
     };

@@ -2,7 +2,7 @@
 the four examples from scripts/master/NAME.nc, the others from sampling/NAME.nc): the run on the
 emulated board, recorded every 0.5 ms for check_samples.py (CTest master:samples:NAME), and what the
 model (sampling_ref.py) says of its end: the end position, and the run's length in samples.
-The feed runs (diagonal*, xline_1200*) use the physical motors and check the lost steps
+The feed runs (diagonal*, xline_*, contour_1500_noramp) use the physical motors and check the lost steps
 (docs/results.md).
 
   python3 mksampling.py SAMPLING_DIR [OUT_DIR]
@@ -34,12 +34,13 @@ run 10ms
 expect halted
 """
 
-PHYSICAL = ("diagonal", "diagonal_noramp", "xline_1200", "xline_1200_noramp")
+PHYSICAL = ("diagonal", "diagonal_noramp", "xline_1200", "xline_1200_noramp", "xline_1500_noramp", "contour_1500_noramp")
 # Without the ramp the first pulses come one sample (2 ms) apart: 500 steps/s on a motor that moves
-# a step every sample, above the start-stop limit (405 steps/s, docs/machine.md): the X line loses
-# steps. The diagonal's motors step at most every other sample at the start (0.71 step a sample),
-# and the run loses none, as the limit predicts.
-LOSES = {"xline_1200_noramp": "X"}
+# a step every sample, above the start-stop limit (none lost up to 400 steps/s, docs/machine.md): the
+# X lines and the contour (its bottom edge along X from a stop) lose steps. The diagonal's motors step
+# at most every other sample at the start (0.71 step a sample), and the run loses none, as the limit
+# predicts.
+LOSES = {"xline_1200_noramp": "X", "xline_1500_noramp": "X", "contour_1500_noramp": "X"}
 
 
 def script(name, hexpath, src):
