@@ -100,15 +100,20 @@ void MachineTool::advance(std::uint64_t now) {
                 lane_axis[n++] = a;
             }
             if (n == 0) break;
-            unsigned flags[kAxes];
-            StepperMotor::step_grid(motors, states, flags, n);
-            for (int k = 0; k < n; ++k) {
-                const int a = lane_axis[k];
-                AxisState& st = s_.axes[a];
-                st.grid_t += motors[k]->params().step_tstates;
-                after_step(a, flags[k], st.grid_t);
-                --due[a];
-                if (motors[k]->is_settled(st.motor)) st.motor.settled = true, due[a] = 0;
+            // The same lanes until one of them is done or settles.
+            std::uint64_t passes = due[lane_axis[0]];
+            for (int k = 1; k < n; ++k) passes = std::min(passes, due[lane_axis[k]]);
+            for (bool same = true; same && passes > 0; --passes) {
+                unsigned flags[kAxes];
+                StepperMotor::step_grid(motors, states, flags, n);
+                for (int k = 0; k < n; ++k) {
+                    const int a = lane_axis[k];
+                    AxisState& st = s_.axes[a];
+                    st.grid_t += motors[k]->params().step_tstates;
+                    after_step(a, flags[k], st.grid_t);
+                    --due[a];
+                    if (motors[k]->is_settled(st.motor)) st.motor.settled = true, due[a] = 0, same = false;
+                }
             }
         }
     }

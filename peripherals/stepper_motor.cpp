@@ -175,6 +175,7 @@ void StepperMotor::kernel(const StepperMotor* const* ms, State* const* ss, const
         const Drive& d = m.drive_[s.phases & 15];
         const double ea = -m.kt_ * w_mid[k] * sx[k], eb = m.kt_ * w_mid[k] * cx[k];
         // Half-windings A, /A in one pair, B, /B in the other.
+#pragma GCC unroll 2
         for (int j = 0; j < 4; j += 2) {
             const v2d e = j == 0 ? v2d{ea, -ea} : v2d{eb, -eb};
             const v2d inf = load2(d.i0 + j) - e * load2(d.g + j);
