@@ -35,6 +35,8 @@
 // H = 12 T-states: without friction the error falls as H^2 (0.001 step at H = 384, 400 steps/s);
 // the Coulomb friction's stick/slip switching is located to the grid step (first order, at most
 // 0.003 step); the start-stop limit is identical from H = 48 to 768 (docs/machine.md).
+// Axes due at the same time are stepped side by side (step_grid): the same kernel as step(), so
+// the same numbers bit for bit, with the independent chains interleaved for the host.
 //
 // Settling: a rotor whose velocity is zero and stuck (Coulomb friction or an end stop holds it), or
 // whose residual motion is below 1e-6 rad in amplitude (energy test), with all currents within
