@@ -68,7 +68,7 @@ double MachineTool::position_mm(int a, const StepperMotor::State& m) const {
     return m.theta * ax_[a].mm_per_rad;
 }
 
-void MachineTool::after_step(int a, unsigned flags, std::uint64_t t) {
+inline void MachineTool::after_step(int a, unsigned flags, std::uint64_t t) {
     AxisState& st = s_.axes[a];
     if (s_.feedback == Feedback::Scale) ax_[a].transducer.update(st.transducer, st.motor.theta * ax_[a].mm_per_rad);
     const std::int8_t at = (flags & StepperMotor::kStopHigh) ? 1 : (flags & StepperMotor::kStopLow) ? -1 : 0;
@@ -76,24 +76,44 @@ void MachineTool::after_step(int a, unsigned flags, std::uint64_t t) {
         on_end_stop_(static_cast<Axis>(a), at > 0, t);
 }
 
-// The axes are independent, so they are integrated in turn, one grid step each: the three
-// dependency chains (each step needs the last one's angle and speed) then overlap in the host CPU.
-// Each axis goes through exactly the same steps as when integrated alone, one after the other.
+// The axes are independent: each pass steps every axis that is due by one grid step, side by side
+// (StepperMotor::step_grid interleaves the three integrations, so the host overlaps them). Each
+// axis goes through exactly the same steps, bit for bit, as when integrated alone.
 void MachineTool::advance(std::uint64_t now) {
     if (now <= s_.now) return;
     if (s_.model == MotorModel::Physical) {
-        for (bool any = true; any;) {
-            any = false;
+        // Grid steps due per axis.
+        std::uint64_t due[kAxes];
+        for (int a = 0; a < kAxes; ++a) {
+            const AxisState& st = s_.axes[a];
+            due[a] = st.motor.settled || st.grid_t >= now ? 0 : (now - st.grid_t) / ax_[a].motor.params().step_tstates;
+        }
+        for (;;) {
+            const StepperMotor* motors[kAxes];
+            StepperMotor::State* states[kAxes];
+            int lane_axis[kAxes];
+            int n = 0;
             for (int a = 0; a < kAxes; ++a) {
-                AxisState& st = s_.axes[a];
-                const StepperMotor& motor = ax_[a].motor;
-                const std::uint32_t h = motor.params().step_tstates;
-                if (st.motor.settled || st.grid_t + h > now) continue;
-                const unsigned flags = motor.step(st.motor, h);
-                st.grid_t += h;
-                after_step(a, flags, st.grid_t);
-                if (motor.is_settled(st.motor)) st.motor.settled = true;
-                any = true;
+                if (due[a] == 0) continue;
+                motors[n] = &ax_[a].motor;
+                states[n] = &s_.axes[a].motor;
+                lane_axis[n++] = a;
+            }
+            if (n == 0) break;
+            // The same lanes until one of them is done or settles.
+            std::uint64_t passes = due[lane_axis[0]];
+            for (int k = 1; k < n; ++k) passes = std::min(passes, due[lane_axis[k]]);
+            for (bool same = true; same && passes > 0; --passes) {
+                unsigned flags[kAxes];
+                StepperMotor::step_grid(motors, states, flags, n);
+                for (int k = 0; k < n; ++k) {
+                    const int a = lane_axis[k];
+                    AxisState& st = s_.axes[a];
+                    st.grid_t += motors[k]->params().step_tstates;
+                    after_step(a, flags[k], st.grid_t);
+                    --due[a];
+                    if (motors[k]->is_settled(st.motor)) st.motor.settled = true, due[a] = 0, same = false;
+                }
             }
         }
     }

@@ -35,6 +35,8 @@
 // H = 12 T-states: without friction the error falls as H^2 (0.001 step at H = 384, 400 steps/s);
 // the Coulomb friction's stick/slip switching is located to the grid step (first order, at most
 // 0.003 step); the start-stop limit is identical from H = 48 to 768 (docs/machine.md).
+// Axes due at the same time are stepped side by side (step_grid): the same kernel as step(), so
+// the same numbers bit for bit, with the independent chains interleaved for the host.
 //
 // Settling: a rotor whose velocity is zero and stuck (Coulomb friction or an end stop holds it), or
 // whose residual motion is below 1e-6 rad in amplitude (energy test), with all currents within
@@ -123,8 +125,15 @@ public:
     // One step of h T-states (h == step_tstates uses the precomputed factors). Returns StepFlags
     // for an end stop in contact after the step.
     unsigned step(State& s, std::uint32_t h) const;
-    // The settling test (see the file's opening comment).
-    bool is_settled(const State& s) const;
+    // One grid step (step_tstates) each of n <= 3 motors (each with its own parameters and state):
+    // flags[k] is what motors[k]->step(*states[k], step_tstates) returns, and the states end bit
+    // for bit as after those calls; the independent integrations are interleaved for the host.
+    static void step_grid(const StepperMotor* const* motors, State* const* states, unsigned* flags, int n);
+    // The settling test (see the file's opening comment); a rotor with more kinetic energy than a
+    // settled one may have fails at once (the test after every grid step of a moving rotor).
+    bool is_settled(const State& s) const {
+        return j_ * s.omega * s.omega < settle_energy_ && is_settled_at_low_speed(s);
+    }
     // The equilibrium (rad) of the present pattern nearest the rotor.
     double equilibrium(const State& s) const;
 
@@ -140,7 +149,19 @@ private:
         std::uint8_t on[4];
     };
     Drive drive_[16]{};
+    // A step's constants for the integrator's kernel (half the step in s, the step over the
+    // inertia and half that, the decay and mean factors per half-winding); a grid step's are members.
+    struct Lane {
+        double hh, h_j, hh_j;
+        const double* a;
+        const double* mf;
+    };
+    template <int N, bool Grid>
+    static void kernel(const StepperMotor* const* motors, State* const* states, const Lane* split, unsigned* flags);
+    bool is_settled_at_low_speed(const State& s) const;
     double teeth_ = 0;  // rotor_teeth as a double
+    double hh_ = 0, h_j_ = 0, hh_j_ = 0;  // the grid step's 0.5 h, h / J, 0.5 h / J
+    double settle_energy_ = 0;            // k (1e-6 rad)^2: the settling test's energy bound
     double h_ = 0, a_on_ = 0, a_off_ = 0, m_on_ = 0, m_off_ = 0, stiffness_ = 0, inv_j_ = 0, g_on_ = 0, g_off_ = 0;
 };
 

@@ -7,12 +7,6 @@ namespace alp85::periph {
 
 Transducer::Transducer(Params p) : p_(p), quads_per_mm_(4.0 / p.pitch_mm) {}
 
-std::int64_t Transducer::q_of(double x_mm) const {
-    const double v = (x_mm - p_.offset_mm) * quads_per_mm_;
-    const auto t = static_cast<std::int64_t>(v);  // toward zero; floor for negatives below
-    return t - (v < static_cast<double>(t) ? 1 : 0);
-}
-
 void Transducer::init(State& s, double x_mm) const {
     s.q = q_of(x_mm);
     s.count = 0;

@@ -63,7 +63,11 @@ public:
     explicit Transducer(Params p);
 
     const Params& params() const { return p_; }
-    std::int64_t q_of(double x_mm) const;
+    std::int64_t q_of(double x_mm) const {
+        const double v = (x_mm - p_.offset_mm) * quads_per_mm_;
+        const auto t = static_cast<std::int64_t>(v);  // toward zero; floor for negatives below
+        return t - (v < static_cast<double>(t) ? 1 : 0);
+    }
     void init(State& s, double x_mm) const;
     // Walks the discriminator through every quadrature state between the last position and x_mm.
     void update(State& s, double x_mm) const {

@@ -198,6 +198,51 @@ TEST(MachineToolPhysical, SettledRotorsAreNotIntegrated) {
     EXPECT_NEAR(x, 0.15, tc / k * 10.0 / (2 * std::numbers::pi));
 }
 
+// The three axes' integrations run side by side (StepperMotor::step_grid) when they are due at the
+// same time: each must get exactly the numbers its own step() gives, whatever runs beside it. The
+// states cover motion both ways, a rotor at rest held by friction, pressing on either end stop,
+// windings switching on and off, on three motors with different loads and stops.
+TEST(MotorPhysical, StepsSideBySideAreBitForBitTheStepsAlone) {
+    auto p = MachineTool::default_params();
+    p.axes[1].table.mass_kg = 5.0;    // a lighter Y table
+    p.axes[2].table.travel_mm = 1.0;  // Z between stops 1 mm + overtravel apart: hits them
+    p.axes[2].table.friction_mu = 0.3;
+    const MachineTool tool(p);
+    const periph::StepperMotor* motors[3] = {&tool.motor(Axis::X), &tool.motor(Axis::Y), &tool.motor(Axis::Z)};
+    using State = periph::StepperMotor::State;
+    const auto bits = [](const State& s) {
+        std::vector<std::uint64_t> b{std::bit_cast<std::uint64_t>(s.theta), std::bit_cast<std::uint64_t>(s.omega)};
+        for (double i : s.i) b.push_back(std::bit_cast<std::uint64_t>(i));
+        return b;
+    };
+    int stops = 0, at_rest = 0;
+    for (int lanes = 1; lanes <= 3; ++lanes) {
+        State side[3], alone[3];
+        for (int k = 0; k < 3; ++k) motors[k]->init_at_rest(side[k], 0.0, periph::Sequencer::kPattern[0]);
+        for (int n = 0; n < 20000; ++n) {
+            // Each axis steps its sequence at its own rate, reversing now and then; Z runs into its stops.
+            if (n % 15 == 0)
+                for (int k = 0; k < 3; ++k) {
+                    const int idx = (n / 15) * (k == 1 ? -1 : 1) / (k + 1) + (n / 3000) * k;
+                    periph::StepperMotor::set_phases(side[k], periph::Sequencer::kPattern[((idx % 4) + 4) % 4]);
+                }
+            for (int k = 0; k < 3; ++k) alone[k] = side[k];
+            unsigned f_side[3], f_alone[3];
+            State* states[3] = {&side[0], &side[1], &side[2]};
+            periph::StepperMotor::step_grid(motors, states, f_side, lanes);
+            for (int k = 0; k < lanes; ++k) {
+                f_alone[k] = motors[k]->step(alone[k], motors[k]->params().step_tstates);
+                ASSERT_EQ(bits(side[k]), bits(alone[k])) << "lane " << k << " of " << lanes << ", step " << n;
+                ASSERT_EQ(f_side[k], f_alone[k]);
+                stops += f_side[k] != 0;
+                at_rest += side[k].omega == 0.0;
+            }
+        }
+    }
+    EXPECT_GT(stops, 100);    // the end stops were exercised
+    EXPECT_GT(at_rest, 100);  // so was stiction
+}
+
 TEST(MachineTool, IsAPartWithNoEvents) {
     MachineTool m;
     periph::Part& p = m;
