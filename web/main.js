@@ -115,16 +115,17 @@ function drawTable(st) {
   ctx.stroke();
   ctx.fillStyle = '#777'; ctx.font = '11px system-ui';
   ctx.fillText(`${step} mm grid`, 6, canvas.height - 6);
-  if (line) {
-    ctx.strokeStyle = '#3a9a3a'; ctx.setLineDash([6, 4]); ctx.lineWidth = 1.5;
-    ctx.beginPath(); ctx.moveTo(X(line.x0), Y(line.y0)); ctx.lineTo(X(line.x1), Y(line.y1)); ctx.stroke();
-    ctx.setLineDash([]);
-  }
   if (path.length >= 4) {
     ctx.strokeStyle = '#c0392b'; ctx.lineWidth = 2; ctx.beginPath();
     ctx.moveTo(X(path[0]), Y(path[1]));
     for (let i = 2; i < path.length; i += 2) ctx.lineTo(X(path[i]), Y(path[i + 1]));
     ctx.stroke();
+  }
+  // the ideal line over the toolpath, so that both show where they coincide
+  if (line) {
+    ctx.strokeStyle = '#3a9a3a'; ctx.setLineDash([6, 4]); ctx.lineWidth = 1.5;
+    ctx.beginPath(); ctx.moveTo(X(line.x0), Y(line.y0)); ctx.lineTo(X(line.x1), Y(line.y1)); ctx.stroke();
+    ctx.setLineDash([]);
   }
   ctx.fillStyle = '#1f4d8e'; ctx.beginPath(); ctx.arc(X(tx), Y(ty), 5, 0, 2 * Math.PI); ctx.fill();
 }

@@ -114,8 +114,9 @@ async function axes(page) {
 }
 
 // The same session run by the native alp85 (`alp85 script`): its `print axes`.
-function nativeAxes() {
-  const out = execFileSync(alp85, ['script', join(here, 'walkthrough.alp')], { encoding: 'utf8' });
+// It saves bitti.snap into `dir`.
+function nativeAxes(dir) {
+  const out = execFileSync(alp85, ['script', '--out-dir', dir, join(here, 'walkthrough.alp')], { encoding: 'utf8' });
   const axes = {};
   for (const m of out.matchAll(/^\s+([XYZ])\s+(-?\d+) steps.*count\s+(-?\d+)\s+commanded\s+(-?\d+)\s+lost (-?\d+)/gm))
     axes[m[1]] = { steps: Number(m[4]), count: Number(m[3]), lost: Number(m[5]) };
@@ -150,21 +151,29 @@ async function acceptance(page) {
   // the transducers count what the table did, and nothing is lost at 750 mm/min.
   assert.deepEqual(seen, [{ steps: 200, count: 200, lost: 0 }, { steps: 150, count: 150, lost: 0 }, { steps: 12, count: 12, lost: 0 }],
     'the page\'s axes after Bitti');
-  assert.deepEqual(seen, nativeAxes(), 'the page against `alp85 script` on the same line');
-  console.log('walk-through: Bitti; X 200, Y 150, Z 12 steps as alp85 script');
-
   if (process.env.ALP85_DOC_IMAGES) {
     await page.screenshot({ path: join(process.env.ALP85_DOC_IMAGES, 'web.png') });
     console.log(`screenshot: ${join(process.env.ALP85_DOC_IMAGES, 'web.png')}`);
   }
-
-  // A snapshot alp85 wrote, opened by the page: the board comes back as it was saved.
   const snapDir = mkdtempSync(join(tmpdir(), 'alp85-web-snap-'));
   try {
+    assert.deepEqual(seen, nativeAxes(snapDir), 'the page against `alp85 script` on the same line');
+    console.log('walk-through: Bitti; X 200, Y 150, Z 12 steps as alp85 script');
+    await snapshots(page, snapDir, seen);
+  } finally {
+    rmSync(snapDir, { recursive: true, force: true });
+  }
+  await editor(page);
+}
+
+// A snapshot alp85 wrote, opened by the page: the board comes back as it was saved; and the
+// page's own, opened by alp85.
+async function snapshots(page, snapDir, seen) {
+  {
     const snap = join(snapDir, 'bitti.snap');
-    execFileSync(alp85, ['script', '--out-dir', snapDir, join(here, 'walkthrough.alp')], { encoding: 'utf8' });
     assert.ok(existsSync(snap), 'alp85 script wrote no snapshot');
-    await page.click('#firmware');  // nothing: the restore replaces the board whatever runs
+    await type(page, ['RESET']);  // away from Bitti first, so that the restore has to bring it back
+    await waitDisplay(page, '-ALP 85-');
     const input = await page.$('#open');
     await input.uploadFile(snap);
     await waitDisplay(page, '  8itti');
@@ -174,11 +183,11 @@ async function acceptance(page) {
     writeFileSync(join(snapDir, 'page.snap'), Buffer.from(bytes));
     const back = execFileSync(alp85, ['script', '--out-dir', snapDir, join(here, 'restore.alp')], { encoding: 'utf8' });
     assert.match(back, /restored/, 'alp85 script could not restore the page\'s snapshot');
-  } finally {
-    rmSync(snapDir, { recursive: true, force: true });
   }
   console.log('snapshots: alp85 -> page and page -> alp85');
+}
 
+async function editor(page) {
   // asm85 in the page: a deliberate error, its line and column; fixed, loaded and run.
   const good = readFileSync(join(here, '..', '..', 'firmware', 'demo', 'hello85.asm'), 'utf8');
   const lines = good.split('\n');
