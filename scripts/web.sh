@@ -39,7 +39,8 @@ fi
 launcher=()
 command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 wasm_build=$out-build
-emcmake cmake -S web -B "$wasm_build" -G Ninja -DALP85_NATIVE_BUILD="$native" "${launcher[@]}" >/dev/null
+emcmake cmake -S web -B "$wasm_build" -G Ninja -DALP85_NATIVE_BUILD="$native" "${launcher[@]}" >/dev/null 2>&1 ||
+  { echo "scripts/web.sh: configuring $wasm_build failed" >&2; emcmake cmake -S web -B "$wasm_build" -G Ninja -DALP85_NATIVE_BUILD="$native" "${launcher[@]}" >&2; exit 1; }
 cmake --build "$wasm_build"
 
 # The site: the module and the page's own files, nothing from elsewhere.
