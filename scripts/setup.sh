@@ -34,8 +34,10 @@ install_web_client() {
   (cd tests/web && PUPPETEER_SKIP_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error)
 }
 
-# emscripten builds what its prebuilt system libraries lack into its cache on first use; one tiny
-# module with the web build's flags (web/CMakeLists.txt) does it here, not in the test command.
+# emscripten builds a system library it lacks into its cache (Debian's: /usr/share/emscripten/cache,
+# which comes with the libraries the web build uses already built) on first use; one tiny module
+# with the web build's flags (web/CMakeLists.txt) does any such work here, not in the test command,
+# and shows the tool chain works (7 s).
 prepare_emscripten() {
   local dir
   dir=$(mktemp -d)

@@ -3,7 +3,8 @@
 #   scripts/web.sh              build, then serve on http://127.0.0.1:8085/ (Ctrl-C ends it)
 #   scripts/web.sh --build      build only
 #   scripts/web.sh --port N     serve on port N
-# The page needs the native build's generated firmware (build/, which this builds first when it
+# ALP85_WERROR=ON: warnings are errors (the test command's build). The page needs the native
+# build's generated firmware (build/, which this builds first when it
 # is missing: asm85 assembles the monitor, thesis and master) and Debian's emscripten.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -39,8 +40,9 @@ fi
 launcher=()
 command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 wasm_build=$out-build
-emcmake cmake -S web -B "$wasm_build" -G Ninja -DALP85_NATIVE_BUILD="$native" "${launcher[@]}" >/dev/null 2>&1 ||
-  { echo "scripts/web.sh: configuring $wasm_build failed" >&2; emcmake cmake -S web -B "$wasm_build" -G Ninja -DALP85_NATIVE_BUILD="$native" "${launcher[@]}" >&2; exit 1; }
+config=(-S web -B "$wasm_build" -G Ninja -DALP85_NATIVE_BUILD="$native" -DALP85_WERROR="${ALP85_WERROR:-OFF}" "${launcher[@]}")
+emcmake cmake "${config[@]}" >/dev/null 2>&1 ||
+  { echo "scripts/web.sh: configuring $wasm_build failed" >&2; emcmake cmake "${config[@]}" >&2; exit 1; }
 cmake --build "$wasm_build"
 
 # The site: the module and the page's own files, nothing from elsewhere.

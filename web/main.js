@@ -91,45 +91,84 @@ document.addEventListener('keyup', (e) => {
 const canvas = $('table');
 const ctx = canvas.getContext('2d');
 const path = [];  // x, y pairs in table mm
+// Two canvases, one over the other: below, the grid and the toolpath, drawn once and extended as
+// the path grows (redrawn whole only when the view moves); above, the ideal line and the tool,
+// redrawn when they move. The browser composites them; nothing is copied between them.
+const top = $('table-top');
+const tctx = top.getContext('2d');
+const lctx = ctx;
+let bounds = null, view = null, drawnPoints = 0, lastKey = '';
+function grow(x, y) {
+  if (!bounds) bounds = { x0: x, x1: x, y0: y, y1: y };
+  bounds.x0 = Math.min(bounds.x0, x); bounds.x1 = Math.max(bounds.x1, x);
+  bounds.y0 = Math.min(bounds.y0, y); bounds.y1 = Math.max(bounds.y1, y);
+}
+function resetPath() { path.length = 0; bounds = null; view = null; drawnPoints = 0; lastKey = ''; }
 function drawTable(st) {
   const n = board.pathSize();
-  if (n < path.length / 2) path.length = 0;
-  if (n > path.length / 2) path.push(...board.pathSince(path.length / 2));
+  if (n < path.length / 2) resetPath();
+  if (n > path.length / 2) {
+    const more = board.pathSince(path.length / 2);
+    for (let i = 0; i < more.length; i += 2) { path.push(more[i], more[i + 1]); grow(more[i], more[i + 1]); }
+  }
   const line = board.ideal();
   const tx = st.axes[0].mm, ty = st.axes[1].mm;
-  let x0 = Math.min(0, tx), x1 = Math.max(0, tx), y0 = Math.min(0, ty), y1 = Math.max(0, ty);
-  const grow = (x, y) => { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y); };
-  for (let i = 0; i < path.length; i += 2) grow(path[i], path[i + 1]);
+  const key = `${n} ${tx} ${ty} ${line ? [line.x0, line.y0, line.x1, line.y1].join() : ''}`;
+  if (key === lastKey) return;  // nothing moved: the picture stands
+  lastKey = key;
+  grow(0, 0); grow(tx, ty);
   if (line) { grow(line.x0, line.y0); grow(line.x1, line.y1); }
-  const span = Math.max(x1 - x0, (y1 - y0) * canvas.width / canvas.height, 20) * 1.15;
-  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
-  const scale = canvas.width / span;
-  const X = (x) => canvas.width / 2 + (x - cx) * scale;
-  const Y = (y) => canvas.height / 2 - (y - cy) * scale;
-  ctx.clearRect(0, 0, canvas.width, canvas.height);
-  // millimetre grid, every 5 mm
-  ctx.strokeStyle = '#e2ded3'; ctx.lineWidth = 1; ctx.beginPath();
-  const step = span > 200 ? 50 : span > 60 ? 10 : 5;
-  for (let g = Math.floor((cx - span) / step) * step; g < cx + span; g += step) { ctx.moveTo(X(g), 0); ctx.lineTo(X(g), canvas.height); }
-  for (let g = Math.floor((cy - span) / step) * step; g < cy + span; g += step) { ctx.moveTo(0, Y(g)); ctx.lineTo(canvas.width, Y(g)); }
-  ctx.stroke();
-  ctx.fillStyle = '#777'; ctx.font = '11px system-ui';
-  ctx.fillText(`${step} mm grid`, 6, canvas.height - 6);
-  if (path.length >= 4) {
-    ctx.strokeStyle = '#c0392b'; ctx.lineWidth = 2; ctx.beginPath();
-    ctx.moveTo(X(path[0]), Y(path[1]));
-    for (let i = 2; i < path.length; i += 2) ctx.lineTo(X(path[i]), Y(path[i + 1]));
-    ctx.stroke();
+  const b = bounds;
+  const span = Math.max(b.x1 - b.x0, (b.y1 - b.y0) * canvas.width / canvas.height, 20) * 1.15;
+  const cx = (b.x0 + b.x1) / 2, cy = (b.y0 + b.y1) / 2;
+  // The view's span is a 1-2-5 step at or above the picture's, centred on it: a growing path moves
+  // the view now and then (when it leaves it), not every frame.
+  const decade = 10 ** Math.floor(Math.log10(span));
+  const vspan = [1, 2, 5, 10].map((m) => m * decade).find((v) => v >= span);
+  const fits = view && span <= view.span && b.x0 >= view.cx - view.span / 2 && b.x1 <= view.cx + view.span / 2 &&
+    b.y0 >= view.cy - view.span * canvas.height / canvas.width / 2 && b.y1 <= view.cy + view.span * canvas.height / canvas.width / 2;
+  if (!fits) {
+    view = { span: vspan, cx, cy };
+    drawnPoints = 0;
   }
-  // the ideal line over the toolpath, so that both show where they coincide
+  const scale = canvas.width / view.span;
+  const X = (x) => canvas.width / 2 + (x - view.cx) * scale;
+  const Y = (y) => canvas.height / 2 - (y - view.cy) * scale;
+  if (drawnPoints === 0) drawGrid();
+  if (path.length / 2 > drawnPoints + 1 || (drawnPoints === 0 && path.length >= 4)) {
+    const from = Math.max(0, drawnPoints - 1);
+    lctx.strokeStyle = '#c0392b'; lctx.lineWidth = 2; lctx.lineJoin = 'round'; lctx.beginPath();
+    lctx.moveTo(X(path[2 * from]), Y(path[2 * from + 1]));
+    for (let i = 2 * (from + 1); i < path.length; i += 2) lctx.lineTo(X(path[i]), Y(path[i + 1]));
+    lctx.stroke();
+    drawnPoints = path.length / 2;
+  }
+  // above: the ideal line over the toolpath, so that both show where they coincide, and the tool
+  tctx.clearRect(0, 0, top.width, top.height);
   if (line) {
-    ctx.strokeStyle = '#3a9a3a'; ctx.setLineDash([6, 4]); ctx.lineWidth = 1.5;
-    ctx.beginPath(); ctx.moveTo(X(line.x0), Y(line.y0)); ctx.lineTo(X(line.x1), Y(line.y1)); ctx.stroke();
-    ctx.setLineDash([]);
+    tctx.strokeStyle = '#3a9a3a'; tctx.setLineDash([6, 4]); tctx.lineWidth = 1.5;
+    tctx.beginPath(); tctx.moveTo(X(line.x0), Y(line.y0)); tctx.lineTo(X(line.x1), Y(line.y1)); tctx.stroke();
+    tctx.setLineDash([]);
   }
-  ctx.fillStyle = '#1f4d8e'; ctx.beginPath(); ctx.arc(X(tx), Y(ty), 5, 0, 2 * Math.PI); ctx.fill();
+  tctx.fillStyle = '#1f4d8e'; tctx.beginPath(); tctx.arc(X(tx), Y(ty), 5, 0, 2 * Math.PI); tctx.fill();
+
+  function drawGrid() {  // the grid, 5, 10 or 50 mm, on a clean lower canvas
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    const step = view.span > 200 ? 50 : view.span > 60 ? 10 : 5;
+    ctx.strokeStyle = '#e2ded3'; ctx.lineWidth = 1; ctx.beginPath();
+    for (let g = Math.floor((view.cx - view.span) / step) * step; g < view.cx + view.span; g += step) { ctx.moveTo(X(g), 0); ctx.lineTo(X(g), canvas.height); }
+    for (let g = Math.floor((view.cy - view.span) / step) * step; g < view.cy + view.span; g += step) { ctx.moveTo(0, Y(g)); ctx.lineTo(canvas.width, Y(g)); }
+    ctx.stroke();
+    ctx.fillStyle = '#777'; ctx.font = '11px system-ui';
+    ctx.fillText(`${step} mm grid`, 6, canvas.height - 6);
+  }
 }
-function drawAxes(st) {
+let lastAxes = '', axesAt = 0;
+function drawAxes(st, now) {
+  const key = JSON.stringify(st.axes);
+  if (key === lastAxes || (now - axesAt < 100 && st.running)) return;  // figures at 10 Hz: readable, cheap
+  lastAxes = key;
+  axesAt = now;
   ['x', 'y', 'z'].forEach((name, i) => {
     const a = st.axes[i];
     const row = $(`axis-${name}`);
@@ -157,11 +196,23 @@ function status(st, now) {
     `${st.running ? ratio.toFixed(ratio < 10 ? 2 : 0) + '× real time' : ''} · PC ${st.pc.toString(16).toUpperCase().padStart(4, '0')}H`;
   $('run').textContent = st.running ? 'Pause' : 'Run';
 }
+// The log keeps its last 200 lines and is written to the page at most four times a second (a
+// table at its end stop says so at every step).
+const logLines = [];
+let logDirty = false, logAt = 0;
 function log(lines) {
-  if (!lines.length) return;
+  if (lines.length) {
+    logLines.push(...lines);
+    if (logLines.length > 200) logLines.splice(0, logLines.length - 200);
+    logDirty = true;
+  }
+  const now = performance.now();
+  if (!logDirty || now - logAt < 250) return;
   const l = $('log');
-  l.textContent += lines.join('\n') + '\n';
+  l.textContent = logLines.join('\n') + '\n';
   l.scrollTop = l.scrollHeight;
+  logDirty = false;
+  logAt = now;
 }
 function frame(now) {
   board.frame(FRAME_BUDGET_S);
@@ -170,19 +221,19 @@ function frame(now) {
   window.alp85.frames++;
   drawDisplay();
   drawTable(st);
-  drawAxes(st);
+  drawAxes(st, now);
   status(st, now);
   log(board.takeLog());
   requestAnimationFrame(frame);
 }
 
 $('run').addEventListener('click', () => { if (board.running()) board.pause(); else { board.start(); board.setSpeed(speed); } });
-$('reset').addEventListener('click', () => { board.key('RESET', true); board.key('RESET', false); path.length = 0; board.clearPath(); });
+$('reset').addEventListener('click', () => { board.key('RESET', true); board.key('RESET', false); resetPath(); board.clearPath(); });
 for (const r of document.querySelectorAll('input[name=speed]'))
   r.addEventListener('change', () => { speed = Number(r.value); board.setSpeed(speed); });
 function boot(name) {
   const err = board.boot(name);
-  path.length = 0;
+  resetPath();
   log([err ? `firmware ${name}: ${err}` : `firmware ${name}: loaded, RESET`]);
   board.setSpeed(speed);
 }
@@ -203,7 +254,7 @@ $('open').addEventListener('change', async (e) => {
   const f = e.target.files[0];
   if (!f) return;
   const err = board.restore(new Uint8Array(await f.arrayBuffer()));
-  path.length = 0;
+  resetPath();
   board.setSpeed(speed);
   log([err ? `restore ${f.name}: ${err}` : `restored ${f.name}`]);
   e.target.value = '';

@@ -5,7 +5,7 @@
 // Environment: ALP85 (the native alp85), ALP85_WEB_DIR (the built site), ALP85_DOC_IMAGES (a
 // folder: the page's screenshot goes there as web.png).
 import { spawn, execFileSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -52,8 +52,7 @@ const browser = await puppeteer.launch({
   headless: true,
   userDataDir: profile,
   args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
-    '--disable-component-update', '--disable-sync', '--disable-background-timer-throttling',
-    '--disable-renderer-backgrounding', '--disable-backgrounding-occluded-windows'],
+    '--disable-component-update', '--disable-sync'],
 });
 let status = 0;
 try {
@@ -281,22 +280,46 @@ async function figures(page, loadMs) {
     { timeout: 120000, polling: 'raf' }, t0 + 17.152 * CLOCK_HZ);
   const t1 = await machineT(page), h1 = Date.now();
   const unpaced = (t1 - t0) / CLOCK_HZ / ((h1 - h0) / 1000);
-  // Real time: 1x for 10 s with the board idle at its prompt after Bitti, the page drawing at
-  // 60 fps; the renderer's busy time (CDP TaskDuration) over the wall time.
+  // Real time: 1x for 10 s with the line still being drawn (the physical motors stall at 1000
+  // mm/min: no Bitti), the page drawing at 60 fps; the CPU time of every chromium process (user +
+  // system, /proc) over the wall time, and the renderer's busy time (CDP TaskDuration).
   await page.click('input[name=speed][value="1"]');
   await new Promise((r) => setTimeout(r, 1000));
-  const m0 = await metrics(), w0 = Date.now(), tt0 = await machineT(page);
+  const c0 = chromiumCpu(), m0 = await metrics(), w0 = Date.now(), tt0 = await machineT(page);
   const frames0 = await page.evaluate(() => window.alp85.frames);
   await new Promise((r) => setTimeout(r, 10000));
-  const m1 = await metrics(), w1 = Date.now(), tt1 = await machineT(page);
+  const c1 = chromiumCpu(), m1 = await metrics(), w1 = Date.now(), tt1 = await machineT(page);
   const frames1 = await page.evaluate(() => window.alp85.frames);
   const wall = (w1 - w0) / 1000;
   const cpu = (m1.TaskDuration - m0.TaskDuration) / wall;
+  const processes = (c1 - c0) / wall;
+  const script = (m1.ScriptDuration - m0.ScriptDuration) / wall;
   const realtime = (tt1 - tt0) / CLOCK_HZ / wall;
   const fps = (frames1 - frames0) / wall;
   const wasm = readFileSync(join(site, 'alp85.wasm')).length;
   const js = readFileSync(join(site, 'alp85.js')).length;
   console.log(JSON.stringify({ wasm_bytes: wasm, js_bytes: js, load_ms: loadMs, unpaced_x: Number(unpaced.toFixed(1)),
     line_machine_s: Number(((t1 - t0) / CLOCK_HZ).toFixed(3)), realtime_x: Number(realtime.toFixed(3)),
-    fps: Number(fps.toFixed(1)), renderer_cpu_share: Number(cpu.toFixed(3)) }));
+    fps: Number(fps.toFixed(1)), renderer_busy_share: Number(cpu.toFixed(3)), script_share: Number(script.toFixed(3)), chromium_cpu_share: Number(processes.toFixed(3)) }));
+}
+
+// CPU seconds (user + system) of the browser and all its descendants, from /proc.
+function chromiumCpu() {
+  const root = browser.process().pid;
+  const tick = 100;  // USER_HZ on Linux
+  const all = new Map();
+  for (const d of readdirSync('/proc')) {
+    if (!/^\d+$/.test(d)) continue;
+    try {
+      const stat = readFileSync(`/proc/${d}/stat`, 'utf8');
+      const f = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
+      all.set(Number(d), { ppid: Number(f[1]), cpu: (Number(f[11]) + Number(f[12])) / tick });
+    } catch { /* gone */ }
+  }
+  let sum = 0;
+  for (const [pid, p] of all) {
+    for (let q = pid, hops = 0; q && hops < 10; q = all.get(q)?.ppid, hops++)
+      if (q === root) { sum += p.cpu; break; }
+  }
+  return sum;
 }
