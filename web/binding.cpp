@@ -247,6 +247,13 @@ public:
 
     // G-code (docs/contours.md's subset) to the master program's path table, loaded at 3D00H.
     std::string gcode(const std::string& text) {
+        try {
+            return load_gcode(text);
+        } catch (const std::exception& e) {  // the page shows it; the board is as it was
+            return e.what();
+        }
+    }
+    std::string load_gcode(const std::string& text) {
         const gcode::Parsed p = gcode::parse(text);
         if (p.error) return "line " + std::to_string(p.error->line) + ", column " + std::to_string(p.error->column) + ": " + p.error->message;
         const bool sampling = p.method && *p.method == gcode::Method::Sampling;

@@ -171,6 +171,10 @@ async function acceptance(page) {
 // for the path's number and starts it (scripts/master/circle.alp's displays).
 async function master(page) {
   await page.select('#firmware', 'master');
+  // a word outside the subset: refused with its line and column (Q at line 2, column 5)
+  await page.$eval('#gcode-text', (t) => { t.value = 'G21 G90\nG01 Q5\n'; });
+  await page.click('#gcode-load');
+  assert.match(await page.$eval('#gcode-msg', (d) => d.textContent), /^G-code: line 2, column 5: 'Q' is not in the subset/);
   await page.$eval('#gcode-text', (t, v) => { t.value = v; }, readFileSync(join(here, '..', '..', 'scripts', 'master', 'circle.nc'), 'utf8'));
   await page.click('#gcode-load');
   assert.match(await page.$eval('#gcode-msg', (d) => d.textContent), /^path table loaded/);
@@ -209,6 +213,12 @@ async function snapshots(page, snapDir, seen) {
     const input = await page.$('#open');
     await input.uploadFile(snap);
     await waitDisplay(page, '  8itti');
+    // a snapshot cut short is refused, with a reason in the log
+    const cut = join(snapDir, 'cut.snap');
+    writeFileSync(cut, readFileSync(snap).subarray(0, 40));
+    await (await page.$('#open')).uploadFile(cut);
+    await page.waitForFunction(() => /restore cut\.snap: .*(truncated|trailing|corrupt)/.test(document.querySelector('#log').textContent),
+      { timeout: 10000 });
     assert.deepEqual(await axes(page), seen, 'the restored snapshot\'s axes');
     // and the page's own snapshot: alp85's file format (ALP85SNP and its CRC-32), opened by alp85
     const bytes = await page.evaluate(() => Array.from(window.alp85.board.save()));
