@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs everything ALP85's build and tests need, from Debian's packages, and the DAP tests'
-# client (@vscode/debugadapter-testsupport) from the npm registry into tests/dap/node_modules.
+# Installs everything ALP85's build and tests need, from Debian's packages, and the test clients
+# from the npm registry: the DAP tests' (@vscode/debugadapter-testsupport, tests/dap/node_modules)
+# and the web page's (puppeteer-core, tests/web/node_modules); then readies emscripten's cache.
 # Non-interactive and idempotent: when all is present it only checks and returns.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,6 +20,39 @@ install_dap_client() {
   (cd tests/dap && npm ci --no-audit --no-fund --loglevel=error)
 }
 
+# The web page's test client (puppeteer-core, pinned by tests/web/package-lock.json); it drives
+# Debian's chromium, so it downloads no browser.
+install_web_client() {
+  local want have
+  want=$(sed -n 's/.*"puppeteer-core": "\([^"]*\)".*/\1/p' tests/web/package.json)
+  have=$(sed -n 's/.*"version": "\([^"]*\)".*/\1/p' tests/web/node_modules/puppeteer-core/package.json 2>/dev/null | head -1 || true)
+  if [ -n "$have" ] && [ "$have" = "$want" ]; then
+    echo "setup: puppeteer-core $have present"
+    return
+  fi
+  echo "setup: installing puppeteer-core $want (tests/web)"
+  (cd tests/web && PUPPETEER_SKIP_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error)
+}
+
+# emscripten builds a system library it lacks into its cache (Debian's: /usr/share/emscripten/cache,
+# which comes with the libraries the web build uses already built) on first use; one tiny module
+# with the web build's flags (web/CMakeLists.txt) does any such work here, not in the test command,
+# and shows the tool chain works (7 s).
+prepare_emscripten() {
+  local dir
+  dir=$(mktemp -d)
+  printf '#include <emscripten/bind.h>\n#include <string>\nstd::string f() { try { throw 1; } catch (int) { return "ok"; } }\nEMSCRIPTEN_BINDINGS(m) { emscripten::function("f", &f); }\n' > "$dir/warm.cpp"
+  if NODE_PATH=/usr/share/nodejs em++ -std=c++20 -O2 -sDISABLE_EXCEPTION_CATCHING=0 --bind -sMODULARIZE=1 -sEXPORT_ES6=1 \
+       -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=web -sFILESYSTEM=1 "$dir/warm.cpp" -o "$dir/warm.js"; then
+    echo "setup: emscripten ready"
+  else
+    echo "setup: emscripten could not build a test module" >&2
+    rm -rf "$dir"
+    return 1
+  fi
+  rm -rf "$dir"
+}
+
 packages=(
   g++ cmake ninja-build make pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev
@@ -32,6 +66,8 @@ packages=(
   # the Debian package and its test (scripts/package.sh, tests/install): dpkg-shlibdeps, man -l,
   # the man pages from --help, the package check, the bash completion's helpers, fish (its completion)
   dpkg-dev man-db help2man lintian bash-completion fish
+  # the web page (scripts/web.sh, tests/web): emscripten (its tools need node-acorn), a browser
+  emscripten node-acorn chromium
 )
 # node and npm: Debian's, unless the machine already has both (a nodejs package of another
 # origin brings its own npm, which Debian's npm would conflict with).
@@ -57,3 +93,5 @@ else
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 install_dap_client
+install_web_client
+prepare_emscripten

@@ -1,52 +1,17 @@
-// Keys of the board pressed from the PC: the keyboard mapping (shown on screen) and the presses
-// themselves. A press closes the key now (machine time) and opens it when released, but never
-// sooner than kMinHold after it closed, so that the 8279's debounce (two scans, about 10 ms)
-// always sees it: the script's default hold, 30 ms of simulated time.
+// The window's keyboard: SDL's keycodes onto the one key map (keys.h).
 #pragma once
 
-#include <cstdint>
 #include <optional>
-#include <string_view>
-#include <vector>
 
 #include <SDL.h>
 
-#include "emu/board/key_press.h"
-#include "emu/board/machine.h"
-#include "emu/gui/layout.h"
+#include "emu/gui/keys.h"
 
 namespace alp85::gui {
 
-inline constexpr std::uint64_t kMinHold = kKeyHold;
-
-// The PC key for a board key, and back.
+// The board key for an SDL keycode (the keypad's digits and Enter as the main ones).
 std::optional<PadKey> pad_key_for(SDL_Keycode key);
-// What to press on the PC for a button, as shown under its keycap ("Enter", "7", "Esc").
-std::string_view pc_key_label(const PadKey& k);
-// The caption on the keycap ("EXEC", "VECT INTR").
-std::string_view cap_label(const PadKey& k);
 // F1 or '?' (Shift+/ on most layouts): show or hide the key map.
 bool is_key_map_key(const SDL_Keysym& k);
-// What the keyboard and the mouse do, as rows of (keys, action), for the key map.
-struct KeyMapRow {
-    std::string_view keys, action;
-};
-std::vector<KeyMapRow> key_map_rows(bool debug);
-
-class Presser {
-public:
-    // Button down / up from the mouse or the keyboard (a second down of a held key is ignored).
-    void down(const PadKey& k, Machine& m);
-    void up(const PadKey& k, Machine& m);
-    void release_all(Machine& m);
-    bool held(const PadKey& k) const;
-
-private:
-    struct Held {
-        PadKey key;
-        std::uint64_t since;
-    };
-    std::vector<Held> held_;
-};
 
 }  // namespace alp85::gui

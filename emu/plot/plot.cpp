@@ -2,8 +2,15 @@
 #include "emu/plot/plot.h"
 #include "emu/util/text.h"
 
+// The web build (emscripten, docs/web.md) has no cairo: there the page draws its own charts and
+// write() says so.
+#if __has_include(<cairo.h>)
+#define ALP85_PLOT_CAIRO 1
 #include <cairo-svg.h>
 #include <cairo.h>
+#else
+#define ALP85_PLOT_CAIRO 0
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -18,12 +25,6 @@ namespace alp85::plot {
 
 namespace {
 
-struct Rgb {
-    double r, g, b;
-};
-constexpr Rgb kPalette[] = {{0.12, 0.47, 0.71}, {0.84, 0.15, 0.16}, {0.17, 0.63, 0.17},
-                            {1.00, 0.50, 0.05}, {0.58, 0.40, 0.74}, {0.55, 0.34, 0.29}};
-
 double nice_step(double span, int target) {
     const double raw = span / std::max(1, target);
     const double mag = std::pow(10.0, std::floor(std::log10(raw)));
@@ -31,6 +32,14 @@ double nice_step(double span, int target) {
         if (m * mag >= raw) return m * mag;
     return 10.0 * mag;
 }
+
+#if ALP85_PLOT_CAIRO
+struct Rgb {
+    double r, g, b;
+};
+constexpr Rgb kPalette[] = {{0.12, 0.47, 0.71}, {0.84, 0.15, 0.16}, {0.17, 0.63, 0.17},
+                            {1.00, 0.50, 0.05}, {0.58, 0.40, 0.74}, {0.55, 0.34, 0.29}};
+
 
 std::string label(double v, double step) {
     const int digits = std::max(0, static_cast<int>(-std::floor(std::log10(step) + 1e-9)));
@@ -135,6 +144,7 @@ void add_svg_title(const std::string& path, const std::string& title) {
     if (!out) throw PlotError("plot: cannot rewrite " + path);
 }
 
+#endif
 }  // namespace
 
 std::vector<double> ticks(double lo, double hi, int target) {
@@ -152,6 +162,7 @@ void draw(const Chart& c, const std::string& path);
 // The chart is drawn to a temporary file beside `path` and renamed over it when complete, so a
 // failed plot never leaves a half-written file (nor removes an older one).
 void write(const Chart& c, const std::string& path) {
+    if (!ALP85_PLOT_CAIRO) throw PlotError("plot: " + path + ": this build draws no charts (no cairo)");
     const std::filesystem::path target(path);
     std::filesystem::path tmp = target;
     tmp.replace_filename("." + target.stem().string() + ".partial" + target.extension().string());
@@ -172,6 +183,7 @@ void write(const Chart& c, const std::string& path) {
 }
 
 namespace {
+#if ALP85_PLOT_CAIRO
 void draw(const Chart& c, const std::string& path) {
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
     for (const auto& s : c.series)
@@ -309,6 +321,9 @@ void draw(const Chart& c, const std::string& path) {
     surf.finish();
     if (svg) add_svg_title(path, c.title);
 }
+#else
+void draw(const Chart&, const std::string&) {}
+#endif
 }  // namespace
 
 void write_toolpath(const std::string& path, const std::string& title, const std::vector<Series>& paths,

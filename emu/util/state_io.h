@@ -11,7 +11,7 @@
 #pragma once
 
 #include <array>
-#include <bit>
+#include <cstring>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -110,7 +110,10 @@ public:
         } else if constexpr (std::is_enum_v<T>) {
             (*this)(static_cast<std::underlying_type_t<T>>(v));
         } else if constexpr (std::is_same_v<T, double>) {
-            u64(std::bit_cast<std::uint64_t>(v));
+            // memcpy, not std::bit_cast: emscripten's libc++ (clang 14, the web build) lacks it.
+            std::uint64_t bits = 0;
+            std::memcpy(&bits, &v, sizeof bits);
+            u64(bits);
         } else if constexpr (std::is_integral_v<T>) {
             using U = std::make_unsigned_t<T>;
             const U u = static_cast<U>(v);
@@ -142,7 +145,8 @@ public:
             (*this)(raw);
             v = static_cast<T>(raw);
         } else if constexpr (std::is_same_v<T, double>) {
-            v = std::bit_cast<double>(u64());
+            const std::uint64_t bits = u64();
+            std::memcpy(&v, &bits, sizeof v);
         } else if constexpr (std::is_integral_v<T>) {
             using U = std::make_unsigned_t<T>;
             U u = 0;

@@ -1,7 +1,7 @@
 # Fails when a lower layer includes a higher one (docs/architecture.md). Run as
 #   cmake -DROOT=<tree> -P check_layers.cmake
 # Each folder may include only the folders listed for it (and the standard library and Debian
-# packages, which are not checked). A front end (emu/cli) is included by nothing.
+# packages, which are not checked). A front end (emu/cli, web) is included by nothing.
 set(allowed_asm          "asm/;emu/util/")
 set(allowed_emu/util     "emu/util/")
 set(allowed_emu/core     "emu/core/;emu/util/;asm/isa.h")
@@ -17,7 +17,10 @@ set(allowed_emu/cpm      "emu/cpm/;emu/program/ihex.h;emu/core/;emu/util/;asm/is
 set(allowed_emu/bench    "emu/bench/;emu/dap/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
 set(allowed_emu/gui      "emu/gui/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/isa.h")
 set(allowed_emu/dap      "emu/dap/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/isa.h")
-set(layers asm emu/util emu/core peripherals emu/board emu/program emu/plot emu/gcode emu/pisa emu/debug emu/script emu/cpm emu/bench emu/gui emu/dap)
+# The web page's binding: a front end as thin as the window, sharing the window's plain parts
+# (the keypad's layout, the key map and presses, pacing, the toolpath), none of SDL's.
+set(allowed_web          "web/;emu/gui/layout.h;emu/gui/keys.h;emu/gui/pacer.h;emu/gui/toolpath.h;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/gcode/;peripherals/;asm/asm85.h;asm/isa.h")
+set(layers asm emu/util emu/core peripherals emu/board emu/program emu/plot emu/gcode emu/pisa emu/debug emu/script emu/cpm emu/bench emu/gui emu/dap web)
 
 set(violations "")
 foreach(layer ${layers})

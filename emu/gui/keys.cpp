@@ -1,0 +1,112 @@
+#include "emu/gui/keys.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <string>
+
+#include "emu/board/key_press.h"
+
+namespace alp85::gui {
+namespace {
+
+bool same(const PadKey& a, const PadKey& b) { return a.pad == b.pad && (a.pad != Pad::Matrix || a.key == b.key); }
+
+void apply(const PadKey& k, bool down, std::uint64_t at, Machine& m) {
+    const Button b = k.pad == Pad::Matrix ? Button::Matrix : k.pad == Pad::Reset ? Button::Reset : Button::Vect;
+    schedule_key(m, b, k.key, down, at);
+}
+
+// The function keys on the PC (the hex keys are their own names); key_map_rows describes them.
+// The last two are the browser's names (KeyboardEvent.key) of Esc and Space.
+constexpr std::array<PcKey, 12> kPcKeys{{
+    {"Enter", "EXEC", "Enter"}, {"Space", "NEXT", "Space"}, {"Backspace", "PREV", "Bksp"},
+    {"R", "R", "R"}, {"G", "GO", "G"}, {"M", "MEM", "M"}, {"X", "REG", "X"}, {"S", "STEP", "S"},
+    {"Esc", "RESET", "Esc"}, {"V", "VECT", "V"}, {"Escape", "RESET", "Esc"}, {" ", "NEXT", "Space"},
+}};
+
+bool same_name(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
+           });
+}
+
+}  // namespace
+
+std::span<const PcKey> pc_keys() { return kPcKeys; }
+
+std::optional<PadKey> pad_key_for_pc(std::string_view pc_name) {
+    if (pc_name.size() == 1 && std::isxdigit(static_cast<unsigned char>(pc_name[0])))
+        return find_pad_key(std::string(1, static_cast<char>(std::toupper(static_cast<unsigned char>(pc_name[0])))));
+    for (const PcKey& p : kPcKeys)
+        if (same_name(p.pc, pc_name)) return find_pad_key(p.pad);
+    return std::nullopt;
+}
+
+std::vector<KeyMapRow> key_map_rows(bool debug) {
+    std::vector<KeyMapRow> rows = {
+        {"0-9, A-F", "the hex keys"},
+        {"Enter", "EXEC"},
+        {"Space", "NEXT"},
+        {"Backspace", "PREV"},
+        {"R", "R (run a program: R 7 0800 EXEC)"},
+        {"G", "GO"},
+        {"M", "SUBST MEM"},
+        {"X", "EXAM REG"},
+        {"S", "SINGLE STEP"},
+        {"Esc", "RESET"},
+        {"V", "VECT INTR (RST 7.5)"},
+        {"click a key", "press it (held at least 30 ms of machine time)"},
+    };
+    if (!debug) {
+        rows.push_back({"wheel on the table", "zoom about the pointer"});
+        rows.push_back({"right or middle drag", "pan the table view"});
+        rows.push_back({"Home, double click", "frame the toolpath"});
+        rows.push_back({"End", "back to the automatic fit"});
+    } else {
+        rows.push_back({"click a source line", "set or clear a breakpoint"});
+    }
+    rows.push_back({"F1, ?", "show or hide this key map"});
+    return rows;
+}
+
+std::string_view pc_key_label(const PadKey& k) {
+    for (const PcKey& p : kPcKeys)
+        if (const auto pad = find_pad_key(p.pad); pad && pad->pad == k.pad && (k.pad != Pad::Matrix || pad->key == k.key))
+            return p.label;
+    return periph::Keypad::info(k.key).name;  // the hex digit itself
+}
+
+std::string_view cap_label(const PadKey& k) {
+    if (k.pad == Pad::Reset) return "RESET";
+    if (k.pad == Pad::Vect) return "VECT\nINTR";
+    switch (k.key) {
+        case periph::Key::Mem: return "SUBST\nMEM";
+        case periph::Key::Reg: return "EXAM\nREG";
+        case periph::Key::Step: return "SINGLE\nSTEP";
+        default: return periph::Keypad::info(k.key).label;
+    }
+}
+
+void Presser::down(const PadKey& k, Machine& m) {
+    if (held(k)) return;
+    held_.push_back({k, m.now()});
+    apply(k, true, m.now(), m);
+}
+
+void Presser::up(const PadKey& k, Machine& m) {
+    const auto it = std::find_if(held_.begin(), held_.end(), [&](const Held& h) { return same(h.key, k); });
+    if (it == held_.end()) return;
+    apply(k, false, std::max(m.now(), it->since + kMinHold), m);
+    held_.erase(it);
+}
+
+void Presser::release_all(Machine& m) {
+    while (!held_.empty()) up(held_.back().key, m);
+}
+
+bool Presser::held(const PadKey& k) const {
+    return std::any_of(held_.begin(), held_.end(), [&](const Held& h) { return same(h.key, k); });
+}
+
+}  // namespace alp85::gui

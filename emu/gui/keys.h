@@ -1,0 +1,58 @@
+// The board's keys from a PC, with no window system: which PC key presses which button (the one
+// key map of every front end: the window maps SDL's keycodes onto it, the web page the browser's
+// key names), the captions, the key map's rows, and the presses themselves. A press closes the key
+// now (machine time) and opens it when released, but never sooner than kMinHold after it closed,
+// so that the 8279's debounce (two scans, about 10 ms) always sees it: the script's default hold,
+// 30 ms of simulated time.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "emu/board/key_press.h"
+#include "emu/board/machine.h"
+#include "emu/gui/layout.h"
+
+namespace alp85::gui {
+
+inline constexpr std::uint64_t kMinHold = kKeyHold;
+
+// A PC key by its name ("0"-"9", "A"-"F" for the hex keys, then "Enter", "Space", "Backspace",
+// "R", "G", "M", "X", "S", "Esc", "V"), the board key's name (find_pad_key), and the short label
+// shown under the keycap.
+struct PcKey {
+    std::string_view pc, pad, label;
+};
+std::span<const PcKey> pc_keys();  // the function keys; the hex keys are their own names
+// The board key a PC key presses (case-insensitive name as above).
+std::optional<PadKey> pad_key_for_pc(std::string_view pc_name);
+// What to press on the PC for a button, as shown under its keycap ("Enter", "7", "Esc").
+std::string_view pc_key_label(const PadKey& k);
+// The caption on the keycap ("EXEC", "VECT INTR").
+std::string_view cap_label(const PadKey& k);
+// What the keyboard and the mouse do, as rows of (keys, action), for the key map.
+struct KeyMapRow {
+    std::string_view keys, action;
+};
+std::vector<KeyMapRow> key_map_rows(bool debug);
+
+class Presser {
+public:
+    // Button down / up from the mouse or the keyboard (a second down of a held key is ignored).
+    void down(const PadKey& k, Machine& m);
+    void up(const PadKey& k, Machine& m);
+    void release_all(Machine& m);
+    bool held(const PadKey& k) const;
+
+private:
+    struct Held {
+        PadKey key;
+        std::uint64_t since;
+    };
+    std::vector<Held> held_;
+};
+
+}  // namespace alp85::gui

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Builds the web page (docs/web.md) into build/web/ and serves it on 127.0.0.1.
+#   scripts/web.sh              build, then serve on http://127.0.0.1:8085/ (Ctrl-C ends it)
+#   scripts/web.sh --build      build only
+#   scripts/web.sh --port N     serve on port N
+# ALP85_WERROR=ON: warnings are errors (the test command's build). The page needs the native
+# build's generated firmware (build/, which this builds first when it
+# is missing: asm85 assembles the monitor, thesis and master) and Debian's emscripten.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+
+serve=1
+port=8085
+native=${ALP85_NATIVE_BUILD:-$root/build}
+out=${ALP85_WEB_OUT:-$root/build/web}
+while [ $# -gt 0 ]; do
+  case $1 in
+    --build) serve=0 ;;
+    --port) port=$2; shift ;;
+    *) echo "scripts/web.sh: unknown option $1 (--build, --port N)" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+if ! command -v emcmake >/dev/null 2>&1; then
+  echo "scripts/web.sh: emscripten is not installed; run scripts/setup.sh" >&2
+  exit 1
+fi
+# Debian's emscripten finds Debian's node-acorn only here.
+export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
+
+# The firmware the page carries, assembled by the native build (its generated sources; a build
+# folder that has built alp85 has them).
+if [ ! -f "$native/emu/program/embed_kMasterHex.cpp" ] || [ ! -f "$native/firmware/monitor/monitor_embed.cpp" ]; then
+  [ -f "$native/CMakeCache.txt" ] || cmake -S . -B "$native" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$native" --target alp85_program monitor_embed >/dev/null
+fi
+
+launcher=()
+command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+wasm_build=$out-build
+config=(-S web -B "$wasm_build" -G Ninja -DALP85_NATIVE_BUILD="$native" -DALP85_WERROR="${ALP85_WERROR:-OFF}" "${launcher[@]}")
+emcmake cmake "${config[@]}" >/dev/null 2>&1 ||
+  { echo "scripts/web.sh: configuring $wasm_build failed" >&2; emcmake cmake "${config[@]}" >&2; exit 1; }
+cmake --build "$wasm_build"
+
+# The site: the module and the page's own files, nothing from elsewhere.
+mkdir -p "$out"
+cp "$wasm_build/site/alp85.js" "$wasm_build/site/alp85.wasm" "$out/"
+cp web/index.html web/style.css web/main.js web/walkthrough.js "$out/"
+echo "web: build/web/ ready ($(du -k "$out/alp85.wasm" | cut -f1) KB of WebAssembly)"
+
+if [ $serve -eq 1 ]; then
+  echo "web: http://127.0.0.1:$port/  (Ctrl-C ends it)"
+  cd "$out" && exec python3 -m http.server "$port" --bind 127.0.0.1
+fi

@@ -1,0 +1,370 @@
+// The web page's handle on the board (embind): one script Session, driven through its typed calls
+// and the Debugger's resumable run, exactly as the window (emu/gui) drives it. The page draws;
+// nothing here builds command text or decodes instructions. The key map, the presses, the pacing
+// and the toolpath with its ideal line are the window's own (emu/gui: keys, pacer, toolpath).
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "asm/asm85.h"
+#include "emu/board/board_map.h"
+#include "emu/debug/tool_record.h"
+#include "emu/gcode/gcode.h"
+#include "emu/gcode/path_table.h"
+#include "emu/gui/keys.h"
+#include "emu/gui/pacer.h"
+#include "emu/gui/toolpath.h"
+#include "emu/program/firmware.h"
+#include "emu/script/session.h"
+
+namespace alp85::web {
+namespace {
+
+using emscripten::val;
+using gui::HostClock;
+
+// Files the page hands the board live in the module's memory file system (MEMFS), under /work;
+// the firmware sources the editor's INCLUDEs reach are packed under /src (web/CMakeLists.txt).
+const std::filesystem::path kWork = "/work";
+constexpr std::uint64_t kSamplePeriod = board::tstates_from_ms(1);  // the window's toolpath clock
+
+script::SessionOptions options() {
+    script::SessionOptions o;
+    o.monitor_rom = [] { return firmware::monitor(); };
+    return o;
+}
+
+val outcome(const script::Session::Outcome& o) {
+    return val(o.status == script::Session::Status::Ok ? std::string() : o.message);
+}
+
+}  // namespace
+
+class Board {
+public:
+    Board() : session_(options()) {
+        std::filesystem::create_directories(kWork);
+        session_.debugger().listen([this](const debug::Event& e) {
+            if (!e.text.empty()) log_.push_back(e.text);
+        });
+    }
+
+    // The monitor and the named firmware ("thesis-fixed", "thesis", "master": the master program
+    // goes in beside thesis-fixed, whose line routine it calls), then RESET, and the board runs.
+    std::string boot(const std::string& name) {
+        pause();
+        script::Session::Boot b;
+        if (name == "master") b.firmware = {"thesis-fixed", "master"};
+        else b.firmware = {name};
+        const auto o = session_.boot(b);
+        after_load();
+        if (o.status != script::Session::Status::Ok) return o.message;
+        start();
+        return {};
+    }
+
+    std::string reset() {
+        const auto o = session_.reset();
+        path_.clear();
+        return o.status == script::Session::Status::Ok ? std::string() : o.message;
+    }
+
+    // The run: a Continue that a HLT does not end (a board left running still answers RESET and
+    // the keys), cut into slices by frame().
+    void start() {
+        if (session_.debugger().running()) return;
+        if (const auto s = session_.debugger().begin_continue(~std::uint64_t{0}, false)) stopped(*s);
+        pacer_.rebase(session_.machine().now(), HostClock::now());
+    }
+    void pause() {
+        if (session_.debugger().running()) stopped(session_.debugger().pause());
+    }
+    bool running() { return session_.debugger().running(); }
+
+    // speed: 1 real time, 10, ... ; 0 as fast as possible.
+    void set_speed(double speed) { pacer_.set_speed(speed, session_.machine().now(), HostClock::now()); }
+
+    // One frame's slice: runs the machine to where the pacer says it should be by now, for at
+    // most `seconds` of host time. Returns the T-states run.
+    double frame(double seconds) {
+        Machine& m = session_.machine();
+        const std::uint64_t before = m.now();
+        debug::Debugger& d = session_.debugger();
+        if (!d.running()) return 0;
+        const std::uint64_t goal = pacer_.target(m.now(), HostClock::now());
+        if (goal > m.now()) {
+            debug::Budget b;
+            b.tstates = goal - m.now();
+            b.seconds = seconds;
+            if (const auto s = d.resume(b)) stopped(*s);
+        }
+        return static_cast<double>(m.now() - before);
+    }
+
+    // A board key by its name (find_pad_key: "0"-"F", "EXEC", "NEXT", "RESET", "VECT", ...), down
+    // or up, or a PC key by the key map's name (KeyboardEvent.key: "Enter", "a", "Escape").
+    bool key(const std::string& name, bool down) {
+        const auto k = gui::find_pad_key(name);
+        if (!k) return false;
+        press(*k, down);
+        return true;
+    }
+    std::string pc_key(const std::string& pc_name, bool down) {
+        const auto k = gui::pad_key_for_pc(pc_name);
+        if (!k) return {};
+        press(*k, down);
+        return pad_name(*k);
+    }
+
+    // The keypad as the window lays it out: name, caption, PC key, row, column.
+    val keypad() const {
+        val out = val::array();
+        for (const gui::PadKey& k : gui::pad_keys()) {
+            val o = val::object();
+            o.set("name", pad_name(k));
+            o.set("cap", std::string(gui::cap_label(k)));
+            o.set("pc", std::string(gui::pc_key_label(k)));
+            o.set("row", k.row);
+            o.set("col", k.col);
+            o.set("fn", k.pad != gui::Pad::Matrix || static_cast<int>(k.key) >= static_cast<int>(periph::Key::Exec));
+            out.call<void>("push", o);
+        }
+        return out;
+    }
+    val key_map() const {
+        val out = val::array();
+        for (const gui::KeyMapRow& r : gui::key_map_rows(false)) {
+            if (r.keys.find("drag") != std::string_view::npos || r.keys.find("wheel") != std::string_view::npos ||
+                r.keys.find("Home") != std::string_view::npos || r.keys.find("End") != std::string_view::npos)
+                continue;  // the window's table view; the page has its own
+            val o = val::array();
+            o.call<void>("push", std::string(r.keys));
+            o.call<void>("push", std::string(r.action));
+            out.call<void>("push", o);
+        }
+        return out;
+    }
+
+    // The eight digits: segment bytes (a = bit 0 ... g = bit 6, dp = bit 7), and as text.
+    val display() const {
+        val segs = val::array();
+        for (std::uint8_t s : session_.machine().display()) segs.call<void>("push", static_cast<int>(s));
+        return segs;
+    }
+    std::string display_text() const { return session_.machine().display_text(); }
+
+    // Time, the CPU's PC, the three axes (commanded steps, table mm, transducer count, lost).
+    val state() {
+        const Machine& m = session_.machine();
+        const debug::ToolSample s = debug::sample_tool(m.tool(), m.now());
+        val o = val::object();
+        o.set("t", static_cast<double>(m.now()));
+        o.set("ms", board::ms_from_tstates(m.now()));
+        o.set("pc", static_cast<int>(m.cpu().regs().pc));
+        o.set("running", running());
+        o.set("stop", stop_);
+        val axes = val::array();
+        for (const debug::AxisSample& a : s.axes) {
+            val x = val::object();
+            x.set("steps", static_cast<double>(a.commanded));
+            x.set("mm", a.mm);
+            x.set("count", static_cast<double>(a.count));
+            x.set("lost", static_cast<double>(a.lost));
+            axes.call<void>("push", x);
+        }
+        o.set("axes", axes);
+        return o;
+    }
+
+    // The toolpath's points from index `from` on (x, y in table mm, flat), and the ideal line.
+    val path_since(int from) const {
+        const auto& p = path_.points();
+        val out = val::array();
+        for (std::size_t i = static_cast<std::size_t>(std::max(0, from)); i < p.size(); ++i) {
+            out.call<void>("push", p[i].x);
+            out.call<void>("push", p[i].y);
+        }
+        return out;
+    }
+    int path_size() const { return static_cast<int>(path_.points().size()); }
+    val ideal() const {
+        const auto l = path_.ideal(session_.machine());
+        if (!l) return val::null();
+        val o = val::object();
+        o.set("x0", l->from.x), o.set("y0", l->from.y), o.set("x1", l->to.x), o.set("y1", l->to.y);
+        o.set("started", l->started);
+        return o;
+    }
+    void clear_path() { path_.clear(); }
+
+    // asm85 on the editor's text: its diagnostics (severity, line, col, message); with no error,
+    // the image is loaded through the session as any .asm is (the symbols come with it).
+    val assemble(const std::string& source) {
+        const std::filesystem::path file = "/src/user/program.asm";  // INCLUDE ../monitor/monitor.inc works
+        std::filesystem::create_directories(file.parent_path());
+        {
+            std::ofstream out(file, std::ios::binary | std::ios::trunc);
+            out << source;
+        }
+        asm85::Options opt;
+        const asm85::Result r = asm85::assemble_file(file, opt);
+        val o = val::object();
+        val diags = val::array();
+        for (const asm85::Diagnostic& d : r.diagnostics) {
+            val x = val::object();
+            x.set("severity", std::string(d.severity == asm85::Severity::Error     ? "error"
+                                          : d.severity == asm85::Severity::Warning ? "warning"
+                                                                                   : "note"));
+            x.set("file", d.file);
+            x.set("line", d.line);
+            x.set("col", d.col);
+            x.set("message", d.message);
+            x.set("text", asm85::format_diagnostic(d));
+            diags.call<void>("push", x);
+        }
+        o.set("diagnostics", diags);
+        o.set("ok", r.ok());
+        if (r.ok()) {
+            o.set("bytes", static_cast<int>(r.image.size()));
+            if (!r.image.empty()) o.set("lowest", static_cast<int>(r.image.lowest()));
+            if (!r.image.empty()) o.set("highest", static_cast<int>(r.image.highest()));
+            const bool was = running();
+            pause();
+            const auto l = session_.load_image(file);
+            after_load();
+            if (was) start();
+            o.set("load", outcome(l));
+        }
+        return o;
+    }
+
+    // G-code (docs/contours.md's subset) to the master program's path table, loaded at 3D00H.
+    std::string gcode(const std::string& text) {
+        try {
+            return load_gcode(text);
+        } catch (const std::exception& e) {  // the page shows it; the board is as it was
+            return e.what();
+        }
+    }
+    std::string load_gcode(const std::string& text) {
+        const gcode::Parsed p = gcode::parse(text);
+        if (p.error) return "line " + std::to_string(p.error->line) + ", column " + std::to_string(p.error->column) + ": " + p.error->message;
+        const bool sampling = p.method && *p.method == gcode::Method::Sampling;
+        const bool ramp = p.ramp.value_or(true);
+        const std::vector<std::vector<gcode::Entry>> paths{sampling ? gcode::sampling_path(p.entries, ramp) : p.entries};
+        const std::vector<std::uint8_t> bytes = gcode::table_bytes(paths);
+        if (bytes.size() > gcode::kTableSize)
+            return "the path needs " + std::to_string(bytes.size()) + " bytes; the EPROM holds " + std::to_string(gcode::kTableSize);
+        const std::filesystem::path file = kWork / "path.hex";
+        {
+            std::ofstream out(file, std::ios::binary | std::ios::trunc);
+            out << gcode::intel_hex(gcode::kTableBase, bytes);
+        }
+        const bool was = running();
+        pause();
+        const auto o = session_.load_image(file);
+        if (was) start();
+        return o.status == script::Session::Status::Ok ? std::string() : o.message;
+    }
+
+    // A snapshot as the bytes of the file alp85 writes (the page downloads them), and back.
+    val save() {
+        const bool was = running();
+        pause();
+        const std::filesystem::path file = kWork / "board.alp85snap";
+        const auto o = session_.save(file);
+        if (was) start();
+        if (o.status != script::Session::Status::Ok) return val(o.message);
+        std::ifstream in(file, std::ios::binary);
+        const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        return val::global("Uint8Array").new_(emscripten::typed_memory_view(bytes.size(), bytes.data()));
+    }
+    std::string restore(const std::string& bytes) {
+        const std::filesystem::path file = kWork / "picked.alp85snap";
+        {
+            std::ofstream out(file, std::ios::binary | std::ios::trunc);
+            out << bytes;
+        }
+        pause();
+        const auto o = session_.restore(file);
+        path_.clear();
+        after_load();
+        start();
+        return o.status == script::Session::Status::Ok ? std::string() : o.message;
+    }
+
+    // What the session said (prints, failures), oldest first; taken once.
+    val take_log() {
+        val out = val::array();
+        for (const std::string& l : log_) out.call<void>("push", l);
+        log_.clear();
+        return out;
+    }
+
+private:
+    static std::string pad_name(const gui::PadKey& k) {
+        if (k.pad == gui::Pad::Reset) return "RESET";
+        if (k.pad == gui::Pad::Vect) return "VECT";
+        return std::string(periph::Keypad::info(k.key).name);
+    }
+    void press(const gui::PadKey& k, bool down) {
+        if (down) presser_.down(k, session_.machine());
+        else presser_.up(k, session_.machine());
+    }
+    void stopped(const debug::Stop& s) {
+        stop_ = std::string(debug::name(s.reason));
+        if (!s.message.empty()) stop_ += ": " + s.message;
+    }
+    // As the window: the thesis's variables give the ideal line; the sampler draws the toolpath.
+    void after_load() {
+        const auto& sym = session_.symbols();
+        path_.set_variables(sym.value_of("X2") && sym.value_of("Y2") ? sym.value_of("X1") : std::nullopt);
+        Machine& m = session_.machine();
+        m.set_sampler(kSamplePeriod, [this, &m](std::uint64_t t) { path_.observe(debug::sample_tool(m.tool(), t), m); });
+    }
+
+    script::Session session_;
+    gui::Presser presser_;
+    gui::Pacer pacer_;
+    gui::Toolpath path_;
+    std::vector<std::string> log_;
+    std::string stop_;
+};
+
+}  // namespace alp85::web
+
+EMSCRIPTEN_BINDINGS(alp85) {
+    using alp85::web::Board;
+    emscripten::class_<Board>("Board")
+        .constructor<>()
+        .function("boot", &Board::boot)
+        .function("reset", &Board::reset)
+        .function("start", &Board::start)
+        .function("pause", &Board::pause)
+        .function("running", &Board::running)
+        .function("setSpeed", &Board::set_speed)
+        .function("frame", &Board::frame)
+        .function("key", &Board::key)
+        .function("pcKey", &Board::pc_key)
+        .function("keypad", &Board::keypad)
+        .function("keyMap", &Board::key_map)
+        .function("display", &Board::display)
+        .function("displayText", &Board::display_text)
+        .function("state", &Board::state)
+        .function("pathSince", &Board::path_since)
+        .function("pathSize", &Board::path_size)
+        .function("ideal", &Board::ideal)
+        .function("clearPath", &Board::clear_path)
+        .function("assemble", &Board::assemble)
+        .function("gcode", &Board::gcode)
+        .function("save", &Board::save)
+        .function("restore", &Board::restore)
+        .function("takeLog", &Board::take_log);
+}
