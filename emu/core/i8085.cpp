@@ -1400,10 +1400,7 @@ std::uint64_t I8085::run_impl(std::uint64_t deadline) {
         if constexpr (Debug) {
             execute<V, true, false, false>();
         } else if (fence_) {  // a debugger's breakpoints or runaway guard, on the plain path
-            if (bus_.flat_ram())
-                execute<V, false, true, true>();
-            else
-                execute<V, false, false, true>();
+            execute<V, false, false, true>();  // the page table serves flat RAM too (one copy less to compile)
         } else if (bus_.flat_ram()) {
             execute<V, false, true, false>();
         } else {
