@@ -28,6 +28,17 @@ using namespace alp85::test;
 
 namespace {
 
+// A sweep's chart: lost steps against the step rate, one series per parameter value.
+void lost_against_rate(const std::string& title, const std::vector<plot::Series>& series, const std::string& path) {
+    plot::Chart c;
+    c.title = title;
+    c.x_label = "step rate (steps/s)";
+    c.y_label = "lost steps";
+    c.series = series;
+    c.legend = plot::Chart::Legend::TopLeft;
+    plot::write(c, path);
+}
+
 void figures(const std::string& dir, const std::string& ext) {
     // 1. Step response: one step from rest (pulse high for 1 ms), rotor angle every 0.1 ms.
     {
@@ -60,13 +71,8 @@ void figures(const std::string& dir, const std::string& ext) {
                 s.points.push_back({static_cast<double>(rate), static_cast<double>(start_stop_loss(p, 200, rate))});
             series.push_back(s);
         }
-        plot::Chart c;
-        c.title = "Start-stop runs of 200 steps: lost steps against the step rate";
-        c.x_label = "step rate (steps/s)";
-        c.y_label = "lost steps";
-        c.series = series;
-        c.legend = plot::Chart::Legend::TopLeft;
-        plot::write(c, dir + "/start_stop_sweep" + ext);
+        lost_against_rate("Start-stop runs of 200 steps: lost steps against the step rate", series,
+                          dir + "/start_stop_sweep" + ext);
     }
     // 3. Ramped runs: up from 250 steps/s at 1250 steps/s^2, 2000 steps at the rate, down again;
     // lost steps against the rate, for the freewheel resistance before (100 ohm) and calibrated.
@@ -79,13 +85,8 @@ void figures(const std::string& dir, const std::string& ext) {
             for (int rate = 300; rate <= 650; rate += 10) s.points.push_back({static_cast<double>(rate), static_cast<double>(ramped_loss(p, 2000, rate, 1250))});
             series.push_back(s);
         }
-        plot::Chart c;
-        c.title = "Ramped runs (250 steps/s up at 1250 steps/s^2, 2000 steps at the rate): lost steps";
-        c.x_label = "step rate (steps/s)";
-        c.y_label = "lost steps";
-        c.series = series;
-        c.legend = plot::Chart::Legend::TopLeft;
-        plot::write(c, dir + "/ramp_sweep" + ext);
+        lost_against_rate("Ramped runs (250 steps/s up at 1250 steps/s^2, 2000 steps at the rate): lost steps", series,
+                          dir + "/ramp_sweep" + ext);
     }
 }
 
