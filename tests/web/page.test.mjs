@@ -112,6 +112,19 @@ async function axes(page) {
   })));
 }
 
+// The axes' figures once they hold still: the page redraws them at most 10 times a second while
+// it runs, so right after the display changes they may be one redraw behind.
+async function settledAxes(page) {
+  let last = await axes(page);
+  for (let i = 0; i < 20; ++i) {
+    await new Promise((r) => setTimeout(r, 250));
+    const now = await axes(page);
+    if (JSON.stringify(now) === JSON.stringify(last)) return now;
+    last = now;
+  }
+  return last;
+}
+
 // The same session run by the native alp85 (`alp85 script`): its `print axes`.
 // It saves bitti.snap into `dir`.
 function nativeAxes(dir) {
@@ -145,7 +158,7 @@ async function acceptance(page) {
   await waitDisplay(page, 'H=0750');
   await type(page, ['EXEC']);
   await waitDisplay(page, '  8itti', 30000);
-  const seen = await axes(page);
+  const seen = await settledAxes(page);
   // From the thesis line: (X2 - X1, Y2 - Y1) = (300 - 100, 200 - 50) steps of 0.05 mm, and Z's 12;
   // the transducers count what the table did, and nothing is lost at 750 mm/min.
   assert.deepEqual(seen, [{ steps: 200, count: 200, lost: 0 }, { steps: 150, count: 150, lost: 0 }, { steps: 12, count: 12, lost: 0 }],
@@ -219,7 +232,7 @@ async function snapshots(page, snapDir, seen) {
     await (await page.$('#open')).uploadFile(cut);
     await page.waitForFunction(() => /restore cut\.snap: .*(truncated|trailing|corrupt)/.test(document.querySelector('#log').textContent),
       { timeout: 10000 });
-    assert.deepEqual(await axes(page), seen, 'the restored snapshot\'s axes');
+    assert.deepEqual(await settledAxes(page), seen, 'the restored snapshot\'s axes');
     // and the page's own snapshot: alp85's file format (ALP85SNP and its CRC-32), opened by alp85
     const bytes = await page.evaluate(() => Array.from(window.alp85.board.save()));
     writeFileSync(join(snapDir, 'page.snap'), Buffer.from(bytes));
