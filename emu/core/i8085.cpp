@@ -263,6 +263,7 @@ void I8085::execute() {
     std::uint8_t op = 0;
     // Fence: the fenced addresses, and the address of the instruction running (for fence_previous).
     [[maybe_unused]] const std::bitset<0x10000>* const fence = fence_;
+    [[maybe_unused]] const std::uint8_t* const* const xp = exec_pages_.data();
     [[maybe_unused]] std::uint16_t ipc = fence_prev_;
 
 // T-states now, and the instructions run; a new limit from limit_; the batch ends after this
@@ -404,15 +405,23 @@ void I8085::execute() {
             }                                                              \
         }                                                                  \
         if constexpr (Fence) {                                             \
-            if ((*fence)[pc] && (pc != pass_pc_ || TNOW() != pass_t_)) [[unlikely]] { \
-                fence_prev_ = ipc;                                         \
-                fence_hit_ = true;                                         \
-                deadline_ = TNOW();                                        \
-                goto done;                                                 \
+            /* a page with no fenced address: no test */                   \
+            const std::uint8_t* const xpg_ = xp[pc >> 8];                  \
+            if (xpg_) [[likely]] {                                         \
+                op = xpg_[pc & 0xFF];                                      \
+            } else {                                                       \
+                if ((*fence)[pc] && (pc != pass_pc_ || TNOW() != pass_t_)) [[unlikely]] { \
+                    fence_prev_ = ipc;                                     \
+                    fence_hit_ = true;                                     \
+                    deadline_ = TNOW();                                    \
+                    goto done;                                             \
+                }                                                          \
+                op = FETCH_AT(pc, TNOW());                                 \
             }                                                              \
             ipc = pc;                                                      \
+        } else {                                                           \
+            op = FETCH_AT(pc, TNOW()); /* the opcode fetch starts now */   \
         }                                                                  \
-        op = FETCH_AT(pc, TNOW()); /* the opcode fetch starts now */       \
         pc = static_cast<std::uint16_t>(pc + 1);                           \
         rem -= kDispatch.cost[op];                                         \
         goto* kDispatch.label[op];                                         \
@@ -1400,6 +1409,7 @@ std::uint64_t I8085::run_impl(std::uint64_t deadline) {
         if constexpr (Debug) {
             execute<V, true, false, false>();
         } else if (fence_) {  // a debugger's breakpoints or runaway guard, on the plain path
+            if (exec_pages_maps_ != bus_.map_changes()) map_exec_pages();
             execute<V, false, false, true>();  // the page table serves flat RAM too (one copy less to compile)
         } else if (bus_.flat_ram()) {
             execute<V, false, true, false>();
@@ -1410,6 +1420,25 @@ std::uint64_t I8085::run_impl(std::uint64_t deadline) {
     }
     limit_ = 0;
     return t_ - start;
+}
+
+void I8085::set_fetch_fence(const std::bitset<0x10000>* fence) {
+    fence_ = fence;
+    fenced_pages_.reset();
+    if (fence)
+        for (unsigned p = 0; p < 256; ++p)
+            for (unsigned a = p << 8; a < (p + 1) << 8; ++a)
+                if ((*fence)[a]) {
+                    fenced_pages_[p] = true;
+                    break;
+                }
+    exec_pages_maps_ = ~std::uint64_t{0};
+}
+
+void I8085::map_exec_pages() {
+    const std::uint8_t* const* const rp = bus_.read_pages();
+    for (unsigned p = 0; p < 256; ++p) exec_pages_[p] = fenced_pages_[p] ? nullptr : rp[p];
+    exec_pages_maps_ = bus_.map_changes();
 }
 
 std::uint64_t I8085::run(std::uint64_t deadline) {

@@ -13,6 +13,7 @@
 // docs/cpu.md describes the undocumented 8085 behaviour and where each rule comes from.
 #pragma once
 
+#include <array>
 #include <bitset>
 #include <cstdint>
 #include <functional>
@@ -144,8 +145,11 @@ public:
     // the next run(), and fence_previous() is the address of the instruction that ran before it.
     // pass_fence() lets the instruction at the PC through once, now (an interrupt acknowledged
     // first takes the pass away). Delay loops over a fenced address are not run at once.
-    // The caller keeps the set alive while it is installed; nullptr removes it.
-    void set_fetch_fence(const std::bitset<0x10000>* fence) { fence_ = fence; }
+    // The caller keeps the set alive while it is installed; nullptr removes it. The CPU notes
+    // which 256-byte pages hold a fenced address when the set is installed (opcodes in the other
+    // pages are fetched through a page table of their own, with no test): install it again after
+    // changing it.
+    void set_fetch_fence(const std::bitset<0x10000>* fence);
     const std::bitset<0x10000>* fetch_fence() const { return fence_; }
     bool fence_stopped() const { return fence_hit_; }
     std::uint16_t fence_previous() const { return fence_prev_; }
@@ -168,6 +172,7 @@ private:
     template <Variant V, bool Debug>
     std::uint64_t run_impl(std::uint64_t deadline);
     void accept_interrupt();
+    void map_exec_pages();  // exec_pages_ from the bus's read pages and fenced_pages_
     void push_pc_and_jump(std::uint16_t vector);
     void wake_check() { limit_ = 0; }  // a pin changed: revisit interrupts after this instruction
     std::uint8_t rim();                  // RIM: rim_value(), and the TRAP-saved IE is consumed
@@ -201,6 +206,10 @@ private:
     bool hold_ = false, hlda_ = false;
     bool fast_loops_ = true;  // host setting, not machine state: not in snapshots
     const std::bitset<0x10000>* fence_ = nullptr;  // host settings and findings, not in snapshots
+    std::bitset<256> fenced_pages_;                 // pages holding a fenced address
+    // Opcode fetches behind a fence: the read page where it holds no fenced address, else null.
+    std::array<const std::uint8_t*, 256> exec_pages_{};
+    std::uint64_t exec_pages_maps_ = ~std::uint64_t{0};  // bus_.map_changes() they were made for
     bool fence_hit_ = false;
     std::uint16_t fence_prev_ = 0;
     std::uint16_t pass_pc_ = 0;
