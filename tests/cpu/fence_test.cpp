@@ -21,6 +21,8 @@ protected:
         rig.cpu.set_fetch_fence(&fence);
     }
     bool i8080() const { return rig.is8080(); }
+    // The CPU reads which pages hold a fenced address when the set is installed.
+    void arm() { rig.cpu.set_fetch_fence(&fence); }
 };
 
 // 0100H: MVI A,1 / INR A / INR A / HLT, fenced at the second INR (0103H).
@@ -29,6 +31,7 @@ TEST_P(Fence, StopsBeforeTheFencedInstructionAndPassesItOnce) {
     rig.load(0x0100, {0x3E, 0x01, 0x3C, 0x3C, 0x76});
     rig.r().pc = 0x0100;
     fence[0x0103] = true;
+    arm();
     rig.cpu.run(1000);
     EXPECT_TRUE(rig.cpu.fence_stopped());
     EXPECT_EQ(rig.r().pc, 0x0103);
@@ -57,6 +60,7 @@ TEST_P(Fence, APassIsForOneFetchOnly) {
     rig.load(0x0200, {0x06, 0x03, 0x05, 0xC2, 0x02, 0x02, 0x76});
     rig.r().pc = 0x0200;
     fence[0x0202] = true;
+    arm();
     int stops = 0;
     while (!rig.cpu.halted() && stops < 10) {
         rig.cpu.run(10000);
@@ -83,6 +87,7 @@ TEST_P(Fence, DelayLoopsStopAtEveryFencedIteration) {
         fence.reset();
         fence[0x0309] = true;
         if (inside) fence[0x0306] = true;  // the JNZ
+        arm();
         int stops = 0;
         for (int runs = 0; runs < 20; ++runs) {
             rig.cpu.run(100000);
@@ -112,6 +117,7 @@ TEST_P(Fence, AnInterruptFirstTakesThePassAway) {
     rig.cpu.on_inta = [](unsigned) -> std::uint8_t { return 0xE7; };  // RST 4
     rig.r().pc = 0x00FE;
     fence[0x0100] = true;
+    arm();
     rig.cpu.run(1000);
     ASSERT_TRUE(rig.cpu.fence_stopped());
     ASSERT_EQ(rig.r().pc, 0x0100);
@@ -127,6 +133,46 @@ TEST_P(Fence, AnInterruptFirstTakesThePassAway) {
     rig.cpu.run(1000);
     EXPECT_TRUE(rig.cpu.halted());
     EXPECT_EQ(rig.r().a, 1);
+}
+
+// Opcodes in a page with no fenced address come through a page table of the CPU's own: a jump
+// from such a page into a fenced one stops at the fenced address, and the fence's pages follow
+// the set as it is installed again.
+TEST_P(Fence, AJumpFromAnUnfencedPageStopsInTheFencedOne) {
+    rig.load(0x0100, {0x3E, 0x05, 0xC3, 0x00, 0x04});  // MVI A,5 / JMP 0400H
+    rig.load(0x0400, {0x3C, 0x3C, 0x76});              // INR A / INR A / HLT
+    rig.r().pc = 0x0100;
+    fence[0x0401] = true;
+    arm();
+    rig.cpu.run(1000);
+    ASSERT_TRUE(rig.cpu.fence_stopped());
+    EXPECT_EQ(rig.r().pc, 0x0401);
+    EXPECT_EQ(rig.r().a, 6);
+    EXPECT_EQ(rig.cpu.fence_previous(), 0x0400);
+    // Moved to the HLT and installed again: the INR runs, the run stops before the HLT.
+    fence.reset();
+    fence[0x0402] = true;
+    arm();
+    rig.cpu.run(1000);
+    ASSERT_TRUE(rig.cpu.fence_stopped());
+    EXPECT_EQ(rig.r().pc, 0x0402);
+    EXPECT_EQ(rig.r().a, 7);
+}
+
+// A mapping change between runs is seen by the fenced path's own page table: with the code's
+// page unmapped the opcode fetch reads the floating bus, FFH (RST 7), not the RAM behind it.
+TEST_P(Fence, AMappingChangeReachesTheFencedPath) {
+    rig.load(0x0200, {0x00, 0x00, 0x76});  // NOP / NOP / HLT
+    rig.load(0x0038, {0x76});              // RST 7's vector: HLT
+    rig.r().pc = 0x0200;
+    fence[0x8000] = true;  // somewhere else: page 02 holds no fenced address
+    arm();
+    rig.cpu.run(4);  // the first NOP
+    ASSERT_EQ(rig.r().pc, 0x0201);
+    rig.bus.unmap(0x0200, 0x100);
+    rig.cpu.run(1000);
+    EXPECT_TRUE(rig.cpu.halted());
+    EXPECT_EQ(rig.r().pc, 0x0039);  // RST 7 was taken, then its HLT
 }
 
 TEST_P(Fence, StackLoadIsWhereLxiSpAndSphlPutTheStack) {
