@@ -530,7 +530,8 @@ XRND:   PUSH    D
 ; ; 2800H T-states before the terminal count.
 SPER    EQU     6144                    ; T-states a sample (2 ms at 3.072 MHz)
 SKH     EQU     28H                     ; a sample begins below 2800H
-SDT     EQU     107                     ; T-states from STICK's STOP write to its START write
+SDT     EQU     97                      ; T-states from TREW's STOP write to its START write
+KOUT    EQU     132                     ; T-states from WOUT's START write to its pulse write
 FMIN    EQU     8000H                   ; 0.5 step a sample: 250 steps/s, start and stop
 AFS     EQU     328                     ; ramp: 0.16 steps a sample per sample (1250 steps/s^2)
 DWELL   EQU     20                      ; samples at rest at a stop point
@@ -578,6 +579,16 @@ JST     EQU     1C8BH                   ; the job's next stage (RUNJ), 0: none
 OFV     EQU     1C8CH                   ; scratch (4)
 OF2     EQU     1C90H                   ; scratch (4)
 VRDY    EQU     1C94H                   ; 1: NX, NY hold the next vertex
+PDN     EQU     1C95H                   ; POUT's pulses: T-states after their tick, 0 at once
+PSND    EQU     1C97H                   ; port A this sample sends
+PEND    EQU     1C98H                   ; 1: PSND waits for its time
+CTG     EQU     1C99H                   ; minus the counter's value WOUT waits for
+MCNT    EQU     1C9BH                   ; MUL32's count
+QV      EQU     1C9CH                   ; F_LV C_x, 32 bits (mod 2^32), while QOK
+DAV     EQU     1CA0H                   ; A_F C_x, 32 bits
+OWED    EQU     1CA5H                   ; 1: a tick owed (GRD)
+QOK     EQU     1CA4H                   ; 1: QV holds for this chord, 2: DAV too
+SPLH    EQU     (0C000H+3075-KOUT)/256  ; CTG's high byte for a pulse within 3075 T-states
 ;
 SMP:    LXI     H,0000H
         SHLD    OUTX
@@ -588,9 +599,12 @@ SMP:    LXI     H,0000H
         SHLD    POSY
         SHLD    X2                      ; (the look-ahead's start point)
         SHLD    Y2
+        SHLD    PDN
         XRA     A
         STA     POUT
         STA     VRDY
+        STA     PEND
+        STA     OWED
         CALL    TSTART
 SENT:   LHLD    EPTR
         MOV     A,M
@@ -638,7 +652,7 @@ SNXT:   CALL    ENDXY                   ; the next entry starts where this one e
         SHLD    POSX
         LHLD    Y2
         SHLD    POSY
-        LHLD    EPTR
+SNXT2:  LHLD    EPTR
         LXI     D,0010H
         DAD     D
         SHLD    EPTR
@@ -659,6 +673,7 @@ SHDR:   MVI     A,01H                   ; a stop point, the entry after the head
         XRA     A
         STA     JLV
         STA     DSOK
+        STA     QOK
         LXI     H,0000H
         SHLD    KST
         SHLD    KST+2
@@ -684,14 +699,10 @@ SHDR:   MVI     A,01H                   ; a stop point, the entry after the head
         SHLD    FLV
         LDA     SFL
         RRC
-        JNC     SNXT1
+        JNC     SNXT2
         ANA     A                       ; the ramp starts at F_MIN, or at F_s below it
         CALL    SLVL1
-SNXT1:  LHLD    EPTR
-        LXI     D,0010H
-        DAD     D
-        SHLD    EPTR
-        JMP     SENT
+        JMP     SNXT2
 ; ; SENDP: CEV = the entry's end point . 0
 SENDP:  CALL    ENDXY
         LXI     H,0000H
@@ -881,49 +892,86 @@ JL3:    STA     JST
         RET
 ;
 ; ; TSTART: the 8155 timer from 3FFFH, single-pulse mode (TIMER OUT stays high); TSTOP holds it
-TSTART: MVI     A,0FFH
-        OUT     0FCH
-        MVI     A,0BFH
-        OUT     0FDH
-        MVI     A,0C1H                  ; START; port A out, B and C in (the monitor's 01H)
-        OUT     0F8H
-        RET
+TSTART: LXI     H,3FFFH
+        JMP     TRW2
 TSTOP:  MVI     A,41H                   ; STOP
         OUT     0F8H
         RET
 ;
-; ; STICK: waits for the sample's tick, rewinds the timer by one period, sends POUT: the
-; ; directions with the pulses low, then the pulses (both axes in the same OUT)
-STICK:  IN      0FDH
+; ; STICK: waits for the sample's tick, rewinds the timer by one period, takes POUT to send: at
+; ; once (PDN 0: the directions with the pulses low, then the pulses, both axes in the same OUT),
+; ; or PDN T-states after the tick (WOUT), when x* crossed the major axis's step: a pulse at each
+; ; crossing keeps a motor's pulses 1 / rate apart, not on the 2 ms grid (docs/results.md)
+STICK:  LDA     OWED                    ; a tick the set-up's guard took (SY3): now
+        ANA     A
+        JZ      STK0
+        XRA     A
+        STA     OWED
+        JMP     STK2
+STK0:   IN      0FDH
         ANI     3FH
         CPI     SKH
-        JNC     STICK
-        MVI     A,41H                   ; STOP: the counter holds its value v
+        JNC     STK0
+        CALL    TRWP
+STK2:   LDA     POUT
+        STA     PSND
+        LHLD    PDN
+        MOV     A,H
+        ORA     L
+        JZ      STOUT
+        LXI     D,-(4000H+KOUT)         ; CTG = -(4000H + KOUT - PDN): the tick stands at
+        DAD     D                       ; 4000H, the pulse at 4000H - PDN
+        SHLD    CTG
+        MVI     A,01H
+        STA     PEND
+        RET
+STOUT:  LDA     PSND
+        MOV     B,A
+        ANI     0AH
+        OUT     0F9H
+        MOV     A,B
+        OUT     0F9H
+        XRA     A
+        STA     PEND
+        RET
+GRD:    MVI     A,01H                   ; (STICK takes it without waiting or rewinding)
+        STA     OWED
+TRWP:   LXI     D,SPER-SDT              ; v + one period less the SDT T-states it stood still
+; ; TREW: stops the counter at v, restarts it from HL = v + DE (the 8155 takes a new count at START)
+TREW:   MVI     A,41H                   ; STOP: the counter holds its value v
         OUT     0F8H
         IN      0FCH
         MOV     L,A
         IN      0FDH
         ANI     3FH
         MOV     H,A
-        LXI     D,SPER-SDT              ; v + one period less the SDT T-states it stood still
         DAD     D
-        MOV     A,H
+TRW2:   MOV     A,H
         ORI     80H                     ; mode: single pulse
         OUT     0FDH
         MOV     A,L
         OUT     0FCH
-        MVI     A,0C1H                  ; START
+        MVI     A,0C1H                  ; START; port A out, B and C in (the monitor's 01H)
         OUT     0F8H
-STOUT:  LDA     POUT
-        MOV     B,A
-        ANI     0AH
-        OUT     0F9H
-        MOV     A,B
-        OUT     0F9H
         RET
+; ; WOUT: PSND when the counter reaches CTG - KOUT (exact to 20 T-states: the counter read by TREW,
+; ; the rest waited in 20-T-state rounds), at once if that is past
+WOUT:   LXI     D,-SDT
+        CALL    TREW
+        XCHG
+        LHLD    CTG
+        DAD     D                       ; the T-states left (no carry: past)
+        JNC     STOUT
+        LXI     D,-20
+WO1:    DAD     D
+        JC      WO1
+        JMP     STOUT
 ;
 ; ; SSTOP: a stop point: the output catches up with the target, then DWELL samples at rest
 SSTOP:  CALL    STICK
+        CALL    WPND                    ; (the last sample's pulse, if it waits)
+        LXI     H,0000H                 ; the catching up and the dwell: pulses at the tick
+        SHLD    PDN
         LHLD    TPX
         SHLD    SXV
         LHLD    TPY
@@ -973,6 +1021,29 @@ SCH2:   CALL    RUNJ
 ;
 ; ; SSAMP: one sample (the tick, the ramp, eqs. 4-6, POUT for the next tick)
 SSAMP:  CALL    STICK
+        LHLD    KST+2                   ; a pulse early in the sample goes first, a late one
+        XCHG                            ; after the sample's work (up to 3300 T-states,
+        LHLD    CNV                     ; docs/results.md); in the chord's last sample right
+        DCX     H                       ; after its work (the next chord's set-up follows:
+        DCX     H
+        MOV     A,L                     ; up to 11000 T-states before the next tick, the
+        SUB     E                       ; timer's terminal count 16384 after the last)
+        MOV     A,H
+        SBB     D
+        JC      SSL
+        LDA     CTG+1
+        CPI     SPLH
+        CC      WPND
+SSL:    CALL    SSMP
+        LDA     DNF
+        ANA     A
+        JZ      WPND
+        DCR     A
+        STA     CTG+1
+WPND:   LDA     PEND
+        ANA     A
+        RZ
+        JMP     WOUT
 SSMP:   LDA     SFL
         RRC
         JNC     SS3
@@ -994,6 +1065,8 @@ SS1:    LDAX    D
         DCR     A
         STA     JLV
         CALL    DSTSUB
+        LXI     H,SUB4                  ; F_LV C_x -= A_F C_x
+        CALL    QLV
         LHLD    FLV
         LXI     D,-AFS
         DAD     D
@@ -1012,6 +1085,8 @@ SACC:   LHLD    FCU                     ; accelerate while f < F_s: one level up
         LDA     JLV
         INR     A
         STA     JLV
+        LXI     H,ADD4                  ; F_LV C_x += A_F C_x
+        CALL    QLV
         LHLD    FLV
         LXI     D,AFS
         DAD     D
@@ -1038,6 +1113,25 @@ SLV2:   LHLD    FSV
         SHLD    FCU
 SLV3:   XRA     A
         STA     DSOK
+        RET
+; ; QLV: QV +- DAV (HL: ADD4 or SUB4), while QOK
+QLV:    LDA     QOK
+        ANA     A
+        RZ
+        DCR     A                       ; A_F C_x at the first level change (not in the sample
+        JNZ     QLV1                    ; that makes F_LV C_x: one product a sample at most)
+        PUSH    H
+        LXI     B,AFS
+        CALL    MULCX
+        SHLD    DAV+2
+        XCHG
+        SHLD    DAV
+        MVI     A,02H
+        STA     QOK
+        POP     H
+QLV1:   PUSH    H                       ; RET goes to it, and it returns to QLV's caller
+        LXI     H,DAV
+        LXI     D,QV
         RET
 DSTSUB: LHLD    FCU
         XCHG
@@ -1093,22 +1187,81 @@ SS3:    LHLD    FCU                     ; L_rem -= f
         MOV     A,M
         SBI     00H
         MOV     M,A
-        LDA     DSOK                    ; dS_x = f C_x, when f or the chord changed
-        ANA     A
-        JNZ     SS4
+        LDA     DSOK                    ; dS_x = (f C_x) >> 16, when f or the chord changed:
+        ANA     A                       ; at F_s its product, once a chord; below, the level's
+        JNZ     SS4                     ; F_LV C_x, one product a chord, then A_F C_x added or
+        INR     A                       ; taken away at each level (one multiplication a sample
+        STA     DSOK                    ; would leave no time to place the pulse)
         LHLD    FCU
+        XCHG
+        LHLD    FSV
+        MOV     A,L
+        CMP     E
+        JNZ     SQ1
+        MOV     A,H
+        CMP     D
+        JNZ     SQ1
         MOV     B,H
         MOV     C,L
-        LHLD    CCX
+        CALL    MULCX
+        JMP     SQ3
+SQ1:    LDA     QOK
+        ANA     A
+        JNZ     SQ2
+        INR     A
+        STA     QOK
+        LHLD    FLV
+        MOV     B,H
+        MOV     C,L
+        CALL    MULCX
+        SHLD    QV+2
         XCHG
-        CALL    MUL16
-        SHLD    DSV
-        MVI     A,01H
-        STA     DSOK
+        SHLD    QV
+SQ2:    LHLD    QV+2
+SQ3:    SHLD    DSV
 SS4:    LHLD    DSV                     ; eq. 4: k* += dS_x
         XCHG
         LXI     H,KST
-        CALL    ADD16
+        CALL    ADD16                   ; (DE: dS_x still)
+        LHLD    KST                     ; x* crossed a step (the fraction r < dS_x): PDN =
+        MOV     A,L                     ; 24 (255 - floor(256 r / dS_x)), where it did in the
+        SUB     E                       ; sample (eight bits of r / dS_x, restoring); else 0
+        MOV     A,H
+        SBB     D
+        LXI     B,0800H
+        MVI     A,0FFH
+        JNC     PD4
+PD1:    DAD     H
+        JC      PD2
+        MOV     A,L
+        SUB     E
+        MOV     A,H
+        SBB     D
+        JC      PD3
+PD2:    MOV     A,L
+        SUB     E
+        MOV     L,A
+        MOV     A,H
+        SBB     D
+        MOV     H,A
+        ORA     A
+PD3:    CMC
+        MOV     A,C
+        RAL
+        MOV     C,A
+        DCR     B
+        JNZ     PD1
+PD4:    CMA
+        MOV     L,A
+        MVI     H,00H
+        MOV     D,H
+        MOV     E,L
+        DAD     H
+        DAD     D
+        DAD     H
+        DAD     H
+        DAD     H
+        SHLD    PDN
         XRA     A
         STA     DNF
         LHLD    CNV                     ; k = min(n, floor k*)
@@ -1538,7 +1691,7 @@ SO1:    LXI     H,OF2                   ; T_y |off| >> 16 = T_y . int + (T_y . f
         MOV     C,L
         LHLD    OF2
         XCHG
-        CALL    MUL16
+        CALL    MUL32
         SHLD    OFV
         LXI     H,0000H
         SHLD    OFV+2
@@ -1582,9 +1735,15 @@ SY1:    LXI     H,OFV
         CALL    ADD4
         JMP     SY3
 SY2:    CALL    SUB4
-SY3:    LDA     CTY+1                   ; C_x from the table, by T_y's top 6 bits
+SY3:    IN      0FDH                    ; a set-up at a join that ran almost to the timer's
+        ANI     3FH                     ; terminal count (the counter below 0200H, 2.6
+        CPI     02H                     ; periods after the last tick): the timer rewound by
+        CC      GRD                     ; one before the count would trap, the tick owed
+        LDA     CTY+1                   ; C_x from the table, by T_y's top 4 bits
         RRC
-        ANI     7EH
+        RRC
+        RRC
+        ANI     1EH
         MOV     E,A
         MVI     D,00H
         LXI     H,CXTAB
@@ -1598,6 +1757,7 @@ SY3:    LDA     CTY+1                   ; C_x from the table, by T_y's top 6 bit
         STA     CSEG
         STA     DSOK
         STA     DNF
+        STA     QOK                     ; C_x changed: its products to make again
         RET
 ; ; PTRU: HL = 4 CMU (the u coordinate's offset in CAV, CEV)
 PTRU:   LDA     CMU
@@ -1667,18 +1827,16 @@ SR41:   MOV     A,M
         DCR     B
         JNZ     SR41
         RET
-; ; MUL16: HL = (BC x DE) >> 16, unsigned: 16 steps, shifting right
-MUL16:  LXI     H,0000H
-        MVI     A,10H
-MU1:    PUSH    PSW
-        XRA     A
-        MOV     A,D
-        RAR
-        MOV     D,A
-        MOV     A,E
-        RAR
-        MOV     E,A
-        JNC     MU2
+; ; MUL32: HL:DE = BC x DE, unsigned: 16 steps shifting right, the product's low bits into DE as
+; ; the multiplier's leave it
+MULCX:  LHLD    CCX                     ; HL:DE = BC x C_x
+        XCHG
+MUL32:  LXI     H,0000H
+        MVI     A,11H                   ; a first round shifts DE only: CY = its bit 0
+        STA     MCNT
+        ORA     A
+        JMP     MU3
+MU1:    JNC     MU2
         DAD     B
 MU2:    MOV     A,H
         RAR
@@ -1686,19 +1844,20 @@ MU2:    MOV     A,H
         MOV     A,L
         RAR
         MOV     L,A
-        POP     PSW
+MU3:    MOV     A,D
+        RAR
+        MOV     D,A
+        MOV     A,E
+        RAR
+        MOV     E,A
+        LDA     MCNT                    ; (LDA, DCR, STA leave CY)
         DCR     A
+        STA     MCNT
         JNZ     MU1
         RET
-; ; C_x = 1 / sqrt(1 + T^2) at the middle of each 1/64 of T_y (0.16): eq. 4's dS_x = C_x f
-CXTAB:   DW      0FFFEH,0FFEEH,0FFCEH,0FF9EH,0FF5FH,0FF0FH,0FEB1H,0FE43H
-        DW      0FDC6H,0FD3AH,0FC9FH,0FBF7H,0FB41H,0FA7DH,0F9ACH,0F8CFH
-        DW      0F7E5H,0F6EFH,0F5EEH,0F4E3H,0F3CCH,0F2ACH,0F183H,0F050H
-        DW      0EF15H,0EDD1H,0EC87H,0EB35H,0E9DCH,0E87EH,0E719H,0E5B0H
-        DW      0E441H,0E2CFH,0E158H,0DFDEH,0DE61H,0DCE0H,0DB5EH,0D9D9H
-        DW      0D853H,0D6CBH,0D543H,0D3B9H,0D22FH,0D0A5H,0CF1BH,0CD91H
-        DW      0CC08H,0CA80H,0C8F8H,0C772H,0C5EDH,0C46AH,0C2E8H,0C168H
-        DW      0BFEAH,0BE6EH,0BCF5H,0BB7EH,0BA09H,0B897H,0B727H,0B5BAH
+; ; C_x = 1 / sqrt(1 + T^2) at the middle of each 1/16 of T_y (0.16): eq. 4's dS_x = C_x f
+CXTAB:  DW      0FFE0H,0FEE2H,0FCEEH,0FA16H,0F670H,0F219H,0ED2DH,0E7CCH
+        DW      0E214H,0DC1FH,0D607H,0CFE0H,0C9BCH,0C3A9H,0BDB1H,0B7DFH
 ;
 MEND    EQU     $
         IF      $ GT 3D00H
