@@ -10,8 +10,8 @@ rows is one sample's output. Checked:
   - each moving sample's time is the model's: 2 ms a sample, plus where in its sample the pulse
     goes (sampling_ref.py's phases: where x* crossed its step), less each stretch's median offset
     (a stretch: no Z move between): all within 5.5 ms (the samples after a join, which the chord's
-    set-up delays by up to 2.6 periods: no sample is lost or added), nine in ten within 0.75 ms
-    (the 0.5 ms recording);
+    set-up delays by up to 3.3 ms, and the 0.5 ms recording: no sample is lost or added), nine in
+    ten within 0.75 ms;
   - per move (the table's entries), the largest distance of the recorded positions from the true
     line or arc: lines within eq. 7 (B 16, C_L 8, M 15), arcs within eps_A + 1 step;
   - no step lost (commanded = real position in whole steps).
@@ -77,8 +77,8 @@ def main():
             devs += [abs(o - mid) for o in offs]
         worst = max(devs, default=0.0)
         near = sum(d <= 0.75 for d in devs) / max(1, len(devs))
-        # 0.5 ms of recording and 24 T-states of placement; the samples after a join, which the
-        # chord's set-up delays (up to 2.6 periods before the timer's terminal count): at most 5.5 ms,
+        # 0.5 ms of recording and 44 T-states of placement; the samples after a join, which the
+        # chord's set-up delays (up to 3.3 ms: the timer's terminal count): at most 5.5 ms,
         # and nine in ten within 0.75 ms (on the 2 ms grid, two in three of the contour's at 1500
         # mm/min)
         ok = worst <= 5.5 and near >= 0.9
