@@ -34,7 +34,7 @@ run 10ms
 expect halted
 """
 
-PHYSICAL = ("diagonal", "diagonal_noramp", "xline_1200", "xline_1200_noramp", "xline_1500", "xline_1500_noramp",
+PHYSICAL = ("diagonal", "diagonal_noramp", "xline_1200", "xline_1200_noramp", "xline_1300", "xline_1500", "xline_1500_noramp",
             "contour_1500_noramp")
 # Without the ramp the motor starts at the group's full rate. The pulses go where x* crosses each
 # step, so a motor at F_s runs at F_s from its first pulse: at 1500 mm/min along X, 500 steps/s,
