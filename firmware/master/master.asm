@@ -527,7 +527,8 @@ XRND:   PUSH    D
 ; ; counter falls below 2800H (polled, its high byte), and STICK stops it, rewinds it by one
 ; ; period less the T-states the rewinding takes, and starts it again. The period is exact and
 ; ; does not drift; a sample that runs long (a chord's set-up) delays the next one only, by up to
-; ; 2800H T-states before the terminal count.
+; ; 2800H T-states before the terminal count. A sample's pulses go where x* crossed the major
+; ; axis's step, PDN T-states after its tick (STICK, WOUT): a motor's pulses 1 / rate apart.
 SPER    EQU     6144                    ; T-states a sample (2 ms at 3.072 MHz)
 SKH     EQU     28H                     ; a sample begins below 2800H
 SDT     EQU     97                      ; T-states from TREW's STOP write to its START write
