@@ -147,7 +147,8 @@ TEST(PathTable, BytesAndHex) {
     for (int i = 16; i < 32; ++i) EXPECT_EQ(b[i], 0) << i;
     // One record: 02 bytes at 3800H, checksum = -(02+38+00+00+AB+CD) mod 256 = 0x4E.
     EXPECT_EQ(intel_hex(0x3800, {0xAB, 0xCD}), ":02380000ABCD4E\n:00000001FF\n");
-    EXPECT_EQ(kTableBase, 0x3D00);  // after the master program's 3000H-3CFFH
+    EXPECT_EQ(kTableBase, 0x3DD0);  // after the master program's 3000H-3DCFH
+    EXPECT_EQ(kTableSize / kEntrySize, 35u);  // scripts/master/sampling/octants: 35 entries
     EXPECT_EQ(kTableBase + kTableSize, 0x4000);
 }
 

@@ -6,7 +6,8 @@ RECORD.csv: `record ... every 0.5ms` of the run (commanded steps and positions p
 sample period is 2 ms and each sample's pulses go out in one OUT, so every change between two
 rows is one sample's output. Checked:
   - the sequence of the samples' outputs that move the tool (dx, dy), in order, equals the
-    model's (both axes in the same row where the model moves both);
+    model's (both axes in the same row where the model moves both; two samples the model puts
+    within 0.5 ms of each other may share a row, which then holds their sum);
   - each moving sample's time is the model's: 2 ms a sample, plus where in its sample the pulse
     goes (sampling_ref.py's phases: where x* crossed its step), less each stretch's median offset
     (a stretch: no Z move between): all within 5.5 ms (the samples after a join, which the chord's
@@ -59,6 +60,19 @@ def main():
         if d != (0, 0):
             steps.append((b[0], d, b[7]))
         lost = max(lost, abs(b[5]), abs(b[6]))
+    # two samples whose pulses the model puts within 0.5 ms (one where x* crossed near the end of
+    # its sample, the next at its tick) may share a row of the recording: such a row is split back
+    # into the two when it holds exactly their sum
+    split, k = [], 0
+    for st in steps:
+        if k + 1 < len(model) and model[k][1] != st[1] and model[k + 1][0] - model[k][0] < 0.5 \
+                and (model[k][1][0] + model[k + 1][1][0], model[k][1][1] + model[k + 1][1][1]) == st[1]:
+            split += [(st[0], model[k][1], st[2]), (st[0], model[k + 1][1], st[2])]
+            k += 2
+        else:
+            split.append(st)
+            k += 1
+    steps = split
     bad = 0
     if [d for _, d in model] != [s[1] for s in steps]:
         n = next((k for k, (m, r) in enumerate(zip(model, steps)) if m[1] != r[1]), min(len(model), len(steps)))

@@ -58,6 +58,9 @@ def main():
             late += [o - base for o in off[start:k]]
             start = k
     at = {i: k for k, (i, _) in enumerate(model)}
+    if os.environ.get("JL_ALL"):
+        for k, (i, _) in enumerate(model):
+            print("sample %d late %d phase %d" % (i, late[k], run.phases[i]))
     for j in sorted(run.joins):
         row = [late[at[i]] if i in at else None for i in range(j - 1, j + 3)]
         print("join at sample %5d: " % j + "  ".join("%6s" % ("-" if v is None else v) for v in row))
