@@ -2,7 +2,7 @@
 the four examples from scripts/master/NAME.nc, the others from sampling/NAME.nc): the run on the
 emulated board, recorded every 0.5 ms for check_samples.py (CTest master:samples:NAME), and what the
 model (sampling_ref.py) says of its end: the end position, and the run's length in samples.
-The feed runs (diagonal*, xline_*, contour_1500_noramp) use the physical motors and check the lost steps
+The feed runs (diagonal*, xline_*, contour_1500*) use the physical motors and check the lost steps
 (docs/results.md).
 
   python3 mksampling.py SAMPLING_DIR [OUT_DIR]
@@ -35,7 +35,7 @@ expect halted
 """
 
 PHYSICAL = ("diagonal", "diagonal_noramp", "xline_1200", "xline_1200_noramp", "xline_1300", "xline_1500", "xline_1500_noramp",
-            "contour_1500_noramp")
+            "contour_1500", "contour_1500_noramp")
 # Without the ramp the motor starts at the group's full rate. The pulses go where x* crosses each
 # step, so a motor at F_s runs at F_s from its first pulse: at 1500 mm/min along X, 500 steps/s,
 # above the start-stop limit (none lost up to 400 steps/s, docs/machine.md): the X line and the
