@@ -5,8 +5,9 @@ the sampling method gives a motor when every sample is on time (docs/results.md)
   - each sample's pulses where x* crossed the step (the master's placement): no step lost;
   - each sample's pulses at the sample's start (the 2 ms grid): steps lost, where an axis runs
     between 435 and 495 steps/s (a whole-step jerk every few samples: machine_calibrate --sampled);
-  - the placement with each chord's first sample 2.6 ms late (a join's set-up on the master today,
-    8000 T-states): steps lost; 1 ms late (3000 T-states): none.
+  - the placement with each chord's first sample 2.6 ms late (8000 T-states: a join's set-up on
+    the master before it was made ahead of the join): steps lost; 1 ms late (3000 T-states): none.
+    The master's own run: scripts/master/sampling/contour_1500.alp.
 
 The expected outcomes come from the motor's calibration (docs/machine.md) and the arithmetic of
 the grid, not from a run of the master. Exit 1 if any differs.
