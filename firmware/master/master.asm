@@ -592,7 +592,8 @@ JAV     EQU     1CD0H                   ; SDESC's A, E (16.16, 8 each) and P, th
 JEV     EQU     1CD8H                   ; at the chord's start: the chord's, or the next one's
 JPX     EQU     1CE0H                   ; when it is set up ahead (RUNJ)
 JPY     EQU     1CE2H
-SRDY    EQU     1CE4H                   ; 1: the next chord is set up (at CMU + NOF)
+SRDY    EQU     1CE4H                   ; 1: the next chord is set up (at CMU + NOF); 2, 3: the run's
+                                        ; first chord to come (its predecessor's state is not)
 JPT     EQU     1CE5H                   ; the entry whose end point ends the next chord
 JPH     EQU     12H                     ; PDN from 1200H T-states: a late pulse
 CAV     EQU     1CE8H                   ; the chord's start A: x, y 16.16 (8)
@@ -618,6 +619,7 @@ SMP:    LXI     H,0000H
         STA     VRDY
         STA     PEND
         STA     OWED
+        MVI     A,02H                   ; (no chord yet: the first is set up where it comes)
         STA     SRDY
         CALL    TSTART
 SENT:   LHLD    EPTR
@@ -918,8 +920,8 @@ JINC:   LXI     H,JST
         INR     M
         RET
 JS8:    CALL    SDC
-        MVI     A,01H
-        STA     SRDY
+        LXI     H,SRDY                  ; 0 to 1: ready (2, before a run's first chord: not)
+        INR     M
         XRA     A
         STA     JST
         RET
@@ -1082,8 +1084,8 @@ SST1:   PUSH    B
 ; ; SCHRD: one chord from CAV to CEV: its set-up (SDESC, or the one made ahead), then samples
 ; ; until it ends
 SCHRD:  LDA     SRDY                    ; its set-up: made ahead in the chord before (RUNJ
-        ANA     A                       ; 5-9), else here, from A, E, P as the flows left them
-        JNZ     SCH0
+        DCR     A                       ; 5-9: SRDY 1), else here, from A, E, P as the flows
+        JZ      SCH0                    ; left them
         LXI     H,CAV
         LXI     D,JAV
         MVI     C,14H
