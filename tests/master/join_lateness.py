@@ -12,6 +12,7 @@ the largest lateness and how many pulses leave more than 3000 T-states late (fee
 (docs/results.md, the sampling method at 1500 mm/min).
 
   python3 join_lateness.py ALP85 PATH.hex WORKDIR [--path N]
+  JL_ALL=1 python3 join_lateness.py ...   (also every moving sample: its lateness and phase)
 """
 import os
 import re
