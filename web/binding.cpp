@@ -245,7 +245,7 @@ public:
         return o;
     }
 
-    // G-code (docs/contours.md's subset) to the master program's path table, loaded at 3D00H.
+    // G-code (docs/contours.md's subset) to the master program's path table, loaded at 3DD0H.
     std::string gcode(const std::string& text) {
         try {
             return load_gcode(text);

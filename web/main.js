@@ -314,7 +314,7 @@ $('assemble').addEventListener('click', () => {
 $('gcode-load').addEventListener('click', () => {
   if ($('firmware').value !== 'master') { $('firmware').value = 'master'; boot('master'); }
   const err = board.gcode($('gcode-text').value);
-  $('gcode-msg').textContent = err ? `G-code: ${err}` : 'path table loaded at 3D00H: R 7 3000 EXEC, then 1 and EXEC';
+  $('gcode-msg').textContent = err ? `G-code: ${err}` : 'path table loaded at 3DD0H: R 7 3000 EXEC, then 1 and EXEC';
 });
 
 // ---- Appendix C as a guided demo ----------------------------------------------------------------

@@ -38,7 +38,7 @@ inline constexpr std::array<MemoryRegion, 4> kMemoryMap{{
 // as built stays the thesis machine. Where: the map above fills the address space in 4 KB blocks
 // (0xxxH the two 2716s, 1xxxH the RAM, 2xxxH the 8155), so the next free block, 3000H-3FFFH,
 // is where a 2732 (4 KB) on the next decoder output would sit. It holds the master program
-// (3000H-3CFFH, firmware/master) and its path tables (3D00H-3FFFH, alp85 gcode): docs/contours.md.
+// (3000H-3DCFH, firmware/master) and its path tables (3DD0H-3FFFH, alp85 gcode): docs/contours.md.
 inline constexpr MemoryRegion kExpansionEprom{Memory::ExpansionEprom, 0x3000, 0x1000, MemoryKind::Rom, "expansion",
                                               "4 KB expansion EPROM (2732, optional): master program and path tables"};
 

@@ -1,5 +1,5 @@
 // alp85 gcode FILE.nc... -o PATH.hex: G-code (the subset of docs/contours.md) to the master
-// program's path table in the expansion EPROM (3D00H). Each file is one stored path, in order.
+// program's path table in the expansion EPROM (3DD0H). Each file is one stored path, in order.
 // Exit status: 0 written, 1 a file refused (nothing written), 2 a usage error.
 #include <filesystem>
 #include <fstream>

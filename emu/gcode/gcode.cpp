@@ -350,9 +350,10 @@ std::vector<Entry> sampling_path(const std::vector<Entry>& path, bool ramp) {
     std::size_t header = 0;
     double length = 0;
     const auto close = [&] {
-        // The margin (1/128 of the length and 4 steps) covers C_x's table (0.15 %) and the chord
-        // lengths' rounding: the deceleration ends early and the tool creeps in at F_MIN.
-        const double l = std::clamp(length - length / 128 - 4, 0.0, 32767.0);
+        // The margin (1/32 of the length and 4 steps) covers C_x's table (16 entries: the feed up
+        // to 1.6 % fast, the master's code space) and the chord lengths' rounding: the
+        // deceleration ends early and the tool creeps in at F_MIN.
+        const double l = std::clamp(length - length / 32 - 4, 0.0, 32767.0);
         const auto fixed = static_cast<std::uint32_t>(std::lround(l * 65536));
         out[header].x = static_cast<std::uint16_t>(fixed & 0xFFFF);
         out[header].y = static_cast<std::uint16_t>(fixed >> 16);

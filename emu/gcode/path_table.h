@@ -1,5 +1,5 @@
 // The path table the master program (firmware/master/master.asm) walks, as data: entries of 16
-// bytes in the expansion EPROM from 3D00H (docs/contours.md has the layout and why).
+// bytes in the expansion EPROM from 3DD0H (docs/contours.md has the layout and why).
 #pragma once
 
 #include <cstdint>
@@ -8,8 +8,8 @@
 
 namespace alp85::gcode {
 
-inline constexpr std::uint16_t kTableBase = 0x3D00;  // the last 768 bytes of board::kExpansionEprom
-inline constexpr std::uint16_t kTableSize = 0x0300;
+inline constexpr std::uint16_t kTableBase = 0x3DD0;  // the last 560 bytes of board::kExpansionEprom (35 entries)
+inline constexpr std::uint16_t kTableSize = 0x0230;
 inline constexpr std::size_t kEntrySize = 16;
 
 // The machine tool's travel in steps of 0.05 mm (docs/machine.md: X 1500, Y 200, Z 100 mm),

@@ -5,7 +5,7 @@
 ; ; next end point comes from shifts; the first point is pushed out by eps_A = 2^(-2C_R-4) R.
 ; ; A path that opens with a sampling header (type 5) runs by the paper's sampling interpolation
 ; ; instead (SMP, section 2: both axes every 2 ms, a feed ramp), not by the thesis's line routine.
-; ; Runs from the expansion EPROM (3000H, board option `expansion`); tables at 3D00H
+; ; Runs from the expansion EPROM (3000H, board option `expansion`); tables at 3DD0H
 ; ; (alp85 gcode). docs/contours.md.
 ; ;
 ; ; thesis-fixed's routines (checked against build/firmware/thesis/thesis-fixed.json by CTest
@@ -52,7 +52,7 @@ CYV     EQU     1C1BH
 EPTR    EQU     1C1DH                   ; the entry being run
 SEG     EQU     1C1FH                   ; segments handed over (word), shown on the display
 PBASE   EQU     1C21H                   ; P
-TABLE   EQU     3D00H                   ; the path tables (16-byte entries, type 0 ends a path)
+TABLE   EQU     3DD0H                   ; the path tables (16-byte entries, type 0 ends a path)
 ;
         ORG     3000H
 MSTR:   LXI     SP,20B0H
@@ -146,20 +146,22 @@ DONE:   CALL    TBITTI
 ;
 ; ; ENDXY: X2, Y2 = the entry's end point
 ENDXY:  LHLD    EPTR
-        LXI     D,0004H
+        CALL    EXY
+        SHLD    Y2
+        XCHG
+        SHLD    X2
+        RET
+; ; EXY: DE = x, HL = y, the end point of the entry at HL
+EXY:    LXI     D,0004H
         DAD     D
         MOV     E,M
         INX     H
         MOV     D,M
         INX     H
-        XCHG
-        SHLD    X2
-        XCHG
-        MOV     E,M
+        MOV     A,M
         INX     H
-        MOV     D,M
-        XCHG
-        SHLD    Y2
+        MOV     H,M
+        MOV     L,A
         RET
 ;
 ; ; SEGMT: one line from (XAC, YAC) to (X2, Y2) by the thesis line routine; none if no move
@@ -527,10 +529,12 @@ XRND:   PUSH    D
 ; ; counter falls below 2800H (polled, its high byte), and STICK stops it, rewinds it by one
 ; ; period less the T-states the rewinding takes, and starts it again. The period is exact and
 ; ; does not drift; a sample that runs long (a chord's set-up) delays the next one only, by up to
-; ; 2800H T-states before the terminal count.
+; ; 2800H T-states before the terminal count. A sample's pulses go where x* crossed the major
+; ; axis's step, PDN T-states after its tick (STICK, WOUT): a motor's pulses 1 / rate apart.
 SPER    EQU     6144                    ; T-states a sample (2 ms at 3.072 MHz)
 SKH     EQU     28H                     ; a sample begins below 2800H
-SDT     EQU     107                     ; T-states from STICK's STOP write to its START write
+SDT     EQU     97                      ; T-states from TREW's STOP write to its START write
+KOUT    EQU     132                     ; T-states from WOUT's START write to its pulse write
 FMIN    EQU     8000H                   ; 0.5 step a sample: 250 steps/s, start and stop
 AFS     EQU     328                     ; ramp: 0.16 steps a sample per sample (1250 steps/s^2)
 DWELL   EQU     20                      ; samples at rest at a stop point
@@ -546,13 +550,9 @@ JLV     EQU     1C3FH                   ; j, the ramp level
 KST     EQU     1C40H                   ; k*, the progress along u, 16.16 (4)
 OUTX    EQU     1C44H                   ; the position the pulses sent so far make
 OUTY    EQU     1C46H
-TPX     EQU     1C48H                   ; the target where the last chord ended
-TPY     EQU     1C4AH
 POUT    EQU     1C4CH                   ; port A for the next sample
 POSX    EQU     1C4DH                   ; the entry's start point
 POSY    EQU     1C4FH
-CAV     EQU     1C51H                   ; the chord's start A: x, y 16.16 (8)
-CEV     EQU     1C59H                   ; its end E (8)
 CMU     EQU     1C61H                   ; 0: u = x, 1: u = y
 CSU     EQU     1C62H                   ; u direction: 0 +, 1 -
 CSG     EQU     1C63H                   ; sigma, the v direction: 0 +, 1 -
@@ -568,7 +568,6 @@ DSV     EQU     1C77H                   ; dS_x (0.16)
 DSOK    EQU     1C79H                   ; 0: dS_x to compute
 UUV     EQU     1C7AH                   ; |du| (4)
 VVV     EQU     1C7EH                   ; |dv| (4)
-QHV     EQU     1C82H                   ; the quotient's high byte
 DNF     EQU     1C84H                   ; 1: the chord ended in this sample
 DUS     EQU     1C85H                   ; sign of du (0 +, 1 -)
 DVS     EQU     1C86H                   ; sign of dv (0 +, 1 -, 2 zero)
@@ -578,6 +577,32 @@ JST     EQU     1C8BH                   ; the job's next stage (RUNJ), 0: none
 OFV     EQU     1C8CH                   ; scratch (4)
 OF2     EQU     1C90H                   ; scratch (4)
 VRDY    EQU     1C94H                   ; 1: NX, NY hold the next vertex
+PDN     EQU     1C95H                   ; POUT's pulses: T-states after their tick, 0 at once
+PSND    EQU     1C97H                   ; port A this sample sends
+PEND    EQU     1C98H                   ; 1: PSND waits for its time
+CTG     EQU     1C99H                   ; minus the counter's value WOUT waits for
+MCNT    EQU     1C9BH                   ; MUL32's count
+QV      EQU     1C9CH                   ; F_LV C_x, 32 bits (mod 2^32), while QOK
+DAV     EQU     1CA0H                   ; A_F C_x, 32 bits
+OWED    EQU     1CA5H                   ; 1: a tick owed (GRD)
+QOK     EQU     1CA4H                   ; 1: QV holds for this chord, 2: DAV too
+NOF     EQU     4FH                     ; the next chord's set-up (SDESC's results) at CMU + NOF
+                                        ; ... PVV + NOF (1CB0H-1CC5H), copied at its join
+JAV     EQU     1CD0H                   ; SDESC's A, E (16.16, 8 each) and P, the tool's target
+JEV     EQU     1CD8H                   ; at the chord's start: the chord's, or the next one's
+JPX     EQU     1CE0H                   ; when it is set up ahead (RUNJ)
+JPY     EQU     1CE2H
+SRDY    EQU     1CE4H                   ; 1: the next chord is set up (at CMU + NOF); 2, 3: the run's
+                                        ; first chord to come (its predecessor's state is not)
+JPT     EQU     1CE5H                   ; the entry whose end point ends the next chord
+JPH     EQU     12H                     ; PDN from 1200H T-states: a late pulse
+CAV     EQU     1CE8H                   ; the chord's start A: x, y 16.16 (8)
+CEV     EQU     1CF0H                   ; its end E (8)
+TPX     EQU     1CF8H                   ; the target where the last chord ended (as JAV-JPY)
+TPY     EQU     1CFAH
+JALT    EQU     1CE7H                   ; toggles: a stage a sample at most in the chord's end
+JFW     EQU     16                      ; steps to go from which stages run whatever the time
+SPLH    EQU     (0C000H+3075-KOUT)/256  ; CTG's high byte for a pulse within 3075 T-states
 ;
 SMP:    LXI     H,0000H
         SHLD    OUTX
@@ -588,9 +613,14 @@ SMP:    LXI     H,0000H
         SHLD    POSY
         SHLD    X2                      ; (the look-ahead's start point)
         SHLD    Y2
+        SHLD    PDN
         XRA     A
         STA     POUT
         STA     VRDY
+        STA     PEND
+        STA     OWED
+        MVI     A,02H                   ; (no chord yet: the first is set up where it comes)
+        STA     SRDY
         CALL    TSTART
 SENT:   LHLD    EPTR
         MOV     A,M
@@ -638,7 +668,7 @@ SNXT:   CALL    ENDXY                   ; the next entry starts where this one e
         SHLD    POSX
         LHLD    Y2
         SHLD    POSY
-        LHLD    EPTR
+SNXT2:  LHLD    EPTR
         LXI     D,0010H
         DAD     D
         SHLD    EPTR
@@ -659,6 +689,7 @@ SHDR:   MVI     A,01H                   ; a stop point, the entry after the head
         XRA     A
         STA     JLV
         STA     DSOK
+        STA     QOK
         LXI     H,0000H
         SHLD    KST
         SHLD    KST+2
@@ -684,14 +715,10 @@ SHDR:   MVI     A,01H                   ; a stop point, the entry after the head
         SHLD    FLV
         LDA     SFL
         RRC
-        JNC     SNXT1
+        JNC     SNXT2
         ANA     A                       ; the ramp starts at F_MIN, or at F_s below it
         CALL    SLVL1
-SNXT1:  LHLD    EPTR
-        LXI     D,0010H
-        DAD     D
-        SHLD    EPTR
-        JMP     SENT
+        JMP     SNXT2
 ; ; SENDP: CEV = the entry's end point . 0
 SENDP:  CALL    ENDXY
         LXI     H,0000H
@@ -743,26 +770,20 @@ SAL2:   XRA     A
         LXI     D,AX
         MVI     C,08H
         CALL    COPYN
-        LXI     H,AX                    ; E = the centre . 0 + the vertex
+        CALL    NXE                     ; E = the centre . 0 + the vertex (JEV free: no job
+        LXI     H,JEV                   ; runs here)
         LXI     D,CEV
         MVI     C,08H
         CALL    COPYN
-        LHLD    CEV+2
-        XCHG
-        LHLD    CXV
-        DAD     D
-        SHLD    CEV+2
-        LHLD    CEV+6
-        XCHG
-        LHLD    CYV
-        DAD     D
-        SHLD    CEV+6
-        LHLD    NCNT                    ; the next vertex during this chord
-        MOV     A,H
-        ORA     L
-        JZ      SAL3
+        LHLD    NCNT                    ; the next vertex during this chord (3, 4), then the
+        MOV     A,H                     ; next chord's set-up; the last chord next: its
+        ORA     L                       ; set-up to the end point (9)
         MVI     A,03H
-        STA     JST
+        JNZ     SAL4
+        LHLD    EPTR
+        SHLD    JPT
+        MVI     A,09H
+SAL4:   STA     JST
 SAL3:   CALL    SCHRD
         LXI     H,CEV                   ; the next chord starts at this vertex
         LXI     D,CAV
@@ -828,9 +849,11 @@ AVY:    LDA     DIR
         LXI     D,AX
         LXI     B,NY
         JMP     STEP3
-; ; RUNJ: one stage of the job that runs in the samples' spare time (each well within a period):
-; ; 1 the next entry, if an arc: its parameters and X start, 2 its Y start, 3 the next vertex's X,
-; ; 4 its Y
+; ; RUNJ: one stage of the job that runs in the samples' spare time (each at most about 4000
+; ; T-states): 1 the next entry, if an arc: its parameters and X start, 2 its Y start, 3 the next
+; ; vertex's X, 4 its Y; then the next chord's set-up ahead of its join (SDESC into CMU + NOF, which
+; ; SCHRD copies in): 5 (after the vertex) or 9 (to an entry's end point) its A, E and P, once this
+; ; chord is in its last segment; 6, 7, 8 SDESC's three parts
 RUNJ:   LDA     JST
         DCR     A
         JZ      JL1
@@ -838,10 +861,83 @@ RUNJ:   LDA     JST
         JZ      JL2
         DCR     A
         JZ      JV1
-        CALL    AVY
+        DCR     A
+        JZ      JV2
+        DCR     A
+        JZ      JE5
+        DCR     A
+        JZ      JS6
+        DCR     A
+        JZ      JS7
+        DCR     A
+        JZ      JS8
+        CALL    JSEG                    ; 9: the next chord ends on the end point of the entry
+        RNZ                             ; at JPT
+        LHLD    JPT
+        CALL    EXY
+        SHLD    JEV+6
+        XCHG
+        SHLD    JEV+2
+        LXI     H,0000H
+        SHLD    JEV
+        SHLD    JEV+4
+JAP:    LXI     H,CEV                   ; it starts at this chord's end, the tool at this
+        LXI     D,JAV                   ; chord's last target (eq. 5 at k = n)
+        MVI     C,08H
+        CALL    COPYN
+        LHLD    CNV
+        CALL    TGT
+        SHLD    JPX
+        XCHG
+        SHLD    JPY
+        MVI     A,06H
+        STA     JST
+        RET
+JE5:    CALL    JSEG                    ; 5: the next chord ends on the next vertex
+        RNZ
+        CALL    NXE
+        JMP     JAP
+; ; NXE: JEV = the centre . 0 + the next vertex (NX, NY)
+NXE:    LXI     H,NX
+        LXI     D,JEV
+        MVI     C,08H
+        CALL    COPYN
+        LHLD    JEV+2
+        XCHG
+        LHLD    CXV
+        DAD     D
+        SHLD    JEV+2
+        LHLD    JEV+6
+        XCHG
+        LHLD    CYV
+        DAD     D
+        SHLD    JEV+6
+        RET
+JS6:    CALL    SDA                     ; 6-8: its set-up, in three stages
+        JMP     JINC
+JS7:    CALL    SDB
+JINC:   LXI     H,JST
+        INR     M
+        RET
+JS8:    CALL    SDC
+        LXI     H,SRDY                  ; 0 to 1: ready (2, before a run's first chord: not)
+        INR     M
+        XRA     A
+        STA     JST
+        RET
+; ; JSEG: Z when this chord is in its last segment (its target at k = n computable: TGT)
+JSEG:   LHLD    CNV
+        MOV     A,L
+        RAL
+        MOV     A,H
+        RAL
+        LXI     H,CSEG
+        CMP     M
+        RET
+JV2:    CALL    AVY
         MVI     A,01H
         STA     VRDY
-        XRA     A
+        MVI     A,05H                   ; then the next chord's set-up
         STA     JST
         RET
 JV1:    CALL    AVX
@@ -851,6 +947,7 @@ JV1:    CALL    AVX
 JL1:    LHLD    EPTR
         LXI     D,0010H
         DAD     D
+        SHLD    JPT
         MOV     A,M
         CPI     03H
         JC      JL0
@@ -867,63 +964,104 @@ JL1:    LHLD    EPTR
         MVI     A,02H
         STA     JST
         RET
-JL0:    XRA     A
-        STA     JST
-        RET
+JL0:    DCR     A                       ; a line next (type 1, 2): stage 9, its set-up to its
+                                        ; end point; else (the end, a header) none
+        CPI     02H
+        MVI     A,09H
+        JC      JL3
+        XRA     A
+        JMP     JL3
 JL2:    CALL    ASTY
         LHLD    NCNT
         MOV     A,H
         ORA     L
         MVI     A,03H
         JNZ     JL3
-        XRA     A
+        MVI     A,09H                   ; an arc of its last chord only: to its end point
 JL3:    STA     JST
         RET
 ;
 ; ; TSTART: the 8155 timer from 3FFFH, single-pulse mode (TIMER OUT stays high); TSTOP holds it
-TSTART: MVI     A,0FFH
-        OUT     0FCH
-        MVI     A,0BFH
-        OUT     0FDH
-        MVI     A,0C1H                  ; START; port A out, B and C in (the monitor's 01H)
-        OUT     0F8H
-        RET
+TSTART: LXI     H,3FFFH
+        JMP     TRW2
 TSTOP:  MVI     A,41H                   ; STOP
         OUT     0F8H
         RET
 ;
-; ; STICK: waits for the sample's tick, rewinds the timer by one period, sends POUT: the
-; ; directions with the pulses low, then the pulses (both axes in the same OUT)
-STICK:  IN      0FDH
+; ; STICK: waits for the sample's tick, rewinds the timer by one period, takes POUT to send: at
+; ; once (PDN 0: the directions with the pulses low, then the pulses, both axes in the same OUT),
+; ; or PDN T-states after the tick (WOUT), when x* crossed the major axis's step: a pulse at each
+; ; crossing keeps a motor's pulses 1 / rate apart, not on the 2 ms grid (docs/results.md)
+STICK:  LDA     OWED                    ; a tick the set-up's guard took (SY3): now
+        ANA     A
+        JZ      STK0
+        XRA     A
+        STA     OWED
+        JMP     STK2
+STK0:   IN      0FDH
         ANI     3FH
         CPI     SKH
-        JNC     STICK
-        MVI     A,41H                   ; STOP: the counter holds its value v
+        JNC     STK0
+        CALL    TRWP
+STK2:   LDA     POUT
+        STA     PSND
+        LHLD    PDN
+        MOV     A,H
+        ORA     L
+        JZ      STOUT
+        LXI     D,-(4000H+KOUT)         ; CTG = -(4000H + KOUT - PDN): the tick stands at
+        DAD     D                       ; 4000H, the pulse at 4000H - PDN
+        SHLD    CTG
+        MVI     A,01H
+        STA     PEND
+        RET
+STOUT:  LDA     PSND
+        MOV     B,A
+        ANI     0AH
+        OUT     0F9H
+        MOV     A,B
+        OUT     0F9H
+        XRA     A
+        STA     PEND
+        RET
+GRD:    MVI     A,01H                   ; (STICK takes it without waiting or rewinding)
+        STA     OWED
+TRWP:   LXI     D,SPER-SDT              ; v + one period less the SDT T-states it stood still
+; ; TREW: stops the counter at v, restarts it from HL = v + DE (the 8155 takes a new count at START)
+TREW:   MVI     A,41H                   ; STOP: the counter holds its value v
         OUT     0F8H
         IN      0FCH
         MOV     L,A
         IN      0FDH
         ANI     3FH
         MOV     H,A
-        LXI     D,SPER-SDT              ; v + one period less the SDT T-states it stood still
         DAD     D
-        MOV     A,H
+TRW2:   MOV     A,H
         ORI     80H                     ; mode: single pulse
         OUT     0FDH
         MOV     A,L
         OUT     0FCH
-        MVI     A,0C1H                  ; START
+        MVI     A,0C1H                  ; START; port A out, B and C in (the monitor's 01H)
         OUT     0F8H
-STOUT:  LDA     POUT
-        MOV     B,A
-        ANI     0AH
-        OUT     0F9H
-        MOV     A,B
-        OUT     0F9H
         RET
+; ; WOUT: PSND when the counter reaches CTG - KOUT (exact to 20 T-states: the counter read by TREW,
+; ; the rest waited in 20-T-state rounds), at once if that is past
+WOUT:   LXI     D,-SDT
+        CALL    TREW
+        XCHG
+        LHLD    CTG
+        DAD     D                       ; the T-states left (no carry: past)
+        JNC     STOUT
+        LXI     D,-20
+WO1:    DAD     D
+        JC      WO1
+        JMP     STOUT
 ;
 ; ; SSTOP: a stop point: the output catches up with the target, then DWELL samples at rest
 SSTOP:  CALL    STICK
+        CALL    WPND                    ; (the last sample's pulse, if it waits)
+        LXI     H,0000H                 ; the catching up and the dwell: pulses at the tick
+        SHLD    PDN
         LHLD    TPX
         SHLD    SXV
         LHLD    TPY
@@ -943,19 +1081,43 @@ SST1:   PUSH    B
         JNZ     SST1
         RET
 ;
-; ; SCHRD: one chord from CAV to CEV: its set-up (SDESC), then samples until it ends
-SCHRD:  CALL    SDESC
+; ; SCHRD: one chord from CAV to CEV: its set-up (SDESC, or the one made ahead), then samples
+; ; until it ends
+SCHRD:  LDA     SRDY                    ; its set-up: made ahead in the chord before (RUNJ
+        DCR     A                       ; 5-9: SRDY 1), else here, from A, E, P as the flows
+        JZ      SCH0                    ; left them
+        LXI     H,CAV
+        LXI     D,JAV
+        MVI     C,14H
+        CALL    COPYN
+        CALL    SDESC
+SCH0:   XRA     A                       ; then copied in: a join costs a copy, not a set-up
+        STA     SRDY
+        LXI     H,CMU+NOF
+        LXI     D,CMU
+        MVI     C,16H
+        CALL    COPYN
+        XRA     A
+        STA     CSEG
+        STA     DSOK
+        STA     DNF
+        STA     QOK                     ; C_x changed: its products to make again
 SCH1:   CALL    SSAMP
         LDA     DNF
         ANA     A
         RNZ
         LDA     JST                     ; a job's stage in the sample's spare time (a stage takes
-        ANA     A                       ; at most 4000 T-states): while the counter stands above
-        JZ      SCH1                    ; 3100H (it then ends within 1.7 ms of the next tick), or
-        IN      0FDH                    ; when the chord has fewer than 8 steps to go, so that it
-        ANI     3FH                     ; is seldom left for after the chord
+        ANA     A                       ; at most about 4000 T-states): while the counter stands
+        JZ      SCH1                    ; above 3100H (it then ends within 1.7 ms of the next
+        IN      0FDH                    ; tick); in every other sample when the next pulse goes
+        ANI     3FH                     ; late in its sample or the chord has fewer than JFW steps
         CPI     SKJ
         JNC     SCH2
+        CPI     20H                     ; (never nearer the terminal count than 2000H)
+        JC      SCH1
+        LDA     PDN+1                   ; (a late pulse: the next sample's work comes before it,
+        CPI     JPH                     ; so the stage delays it little)
+        JNC     SCH3
         LHLD    KST+2
         XCHG
         LHLD    CNV
@@ -966,13 +1128,41 @@ SCH1:   CALL    SSAMP
         SBB     D
         JNZ     SCH1
         MOV     A,L
-        CPI     08H
+        CPI     JFW
         JNC     SCH1
+SCH3:   LXI     H,JALT                  ; (every other sample: the one after a stage catches up)
+        MOV     A,M
+        XRI     01H
+        MOV     M,A
+        JZ      SCH1
 SCH2:   CALL    RUNJ
         JMP     SCH1
 ;
 ; ; SSAMP: one sample (the tick, the ramp, eqs. 4-6, POUT for the next tick)
 SSAMP:  CALL    STICK
+        LHLD    KST+2                   ; a pulse early in the sample goes first, a late one
+        XCHG                            ; after the sample's work (up to 3300 T-states,
+        LHLD    CNV                     ; docs/results.md); in the chord's last sample right
+        DCX     H                       ; after its work (the next chord's set-up follows:
+        DCX     H
+        MOV     A,L                     ; up to 11000 T-states before the next tick, the
+        SUB     E                       ; timer's terminal count 16384 after the last)
+        MOV     A,H
+        SBB     D
+        JC      SSL
+        LDA     CTG+1
+        CPI     SPLH
+        CC      WPND
+SSL:    CALL    SSMP
+        LDA     DNF
+        ANA     A
+        JZ      WPND
+        DCR     A
+        STA     CTG+1
+WPND:   LDA     PEND
+        ANA     A
+        RZ
+        JMP     WOUT
 SSMP:   LDA     SFL
         RRC
         JNC     SS3
@@ -994,6 +1184,8 @@ SS1:    LDAX    D
         DCR     A
         STA     JLV
         CALL    DSTSUB
+        LXI     H,SUB4                  ; F_LV C_x -= A_F C_x
+        CALL    QLV
         LHLD    FLV
         LXI     D,-AFS
         DAD     D
@@ -1012,6 +1204,8 @@ SACC:   LHLD    FCU                     ; accelerate while f < F_s: one level up
         LDA     JLV
         INR     A
         STA     JLV
+        LXI     H,ADD4                  ; F_LV C_x += A_F C_x
+        CALL    QLV
         LHLD    FLV
         LXI     D,AFS
         DAD     D
@@ -1038,6 +1232,25 @@ SLV2:   LHLD    FSV
         SHLD    FCU
 SLV3:   XRA     A
         STA     DSOK
+        RET
+; ; QLV: QV +- DAV (HL: ADD4 or SUB4), while QOK
+QLV:    LDA     QOK
+        ANA     A
+        RZ
+        DCR     A                       ; A_F C_x at the first level change (not in the sample
+        JNZ     QLV1                    ; that makes F_LV C_x: one product a sample at most)
+        PUSH    H
+        LXI     B,AFS
+        CALL    MULCX
+        SHLD    DAV+2
+        XCHG
+        SHLD    DAV
+        MVI     A,02H
+        STA     QOK
+        POP     H
+QLV1:   PUSH    H                       ; RET goes to it, and it returns to QLV's caller
+        LXI     H,DAV
+        LXI     D,QV
         RET
 DSTSUB: LHLD    FCU
         XCHG
@@ -1093,22 +1306,81 @@ SS3:    LHLD    FCU                     ; L_rem -= f
         MOV     A,M
         SBI     00H
         MOV     M,A
-        LDA     DSOK                    ; dS_x = f C_x, when f or the chord changed
-        ANA     A
-        JNZ     SS4
+        LDA     DSOK                    ; dS_x = (f C_x) >> 16, when f or the chord changed:
+        ANA     A                       ; at F_s its product, once a chord; below, the level's
+        JNZ     SS4                     ; F_LV C_x, one product a chord, then A_F C_x added or
+        INR     A                       ; taken away at each level (one multiplication a sample
+        STA     DSOK                    ; would leave no time to place the pulse)
         LHLD    FCU
+        XCHG
+        LHLD    FSV
+        MOV     A,L
+        CMP     E
+        JNZ     SQ1
+        MOV     A,H
+        CMP     D
+        JNZ     SQ1
         MOV     B,H
         MOV     C,L
-        LHLD    CCX
+        CALL    MULCX
+        JMP     SQ3
+SQ1:    LDA     QOK
+        ANA     A
+        JNZ     SQ2
+        INR     A
+        STA     QOK
+        LHLD    FLV
+        MOV     B,H
+        MOV     C,L
+        CALL    MULCX
+        SHLD    QV+2
         XCHG
-        CALL    MUL16
-        SHLD    DSV
-        MVI     A,01H
-        STA     DSOK
+        SHLD    QV
+SQ2:    LHLD    QV+2
+SQ3:    SHLD    DSV
 SS4:    LHLD    DSV                     ; eq. 4: k* += dS_x
         XCHG
         LXI     H,KST
-        CALL    ADD16
+        CALL    ADD16                   ; (DE: dS_x still)
+        LHLD    KST                     ; x* crossed a step (the fraction r < dS_x): PDN =
+        MOV     A,L                     ; 24 (255 - floor(256 r / dS_x)), where it did in the
+        SUB     E                       ; sample (eight bits of r / dS_x, restoring); else 0
+        MOV     A,H
+        SBB     D
+        LXI     B,0800H
+        MVI     A,0FFH
+        JNC     PD4
+PD1:    DAD     H
+        JC      PD2
+        MOV     A,L
+        SUB     E
+        MOV     A,H
+        SBB     D
+        JC      PD3
+PD2:    MOV     A,L
+        SUB     E
+        MOV     L,A
+        MOV     A,H
+        SBB     D
+        MOV     H,A
+        ORA     A
+PD3:    CMC
+        MOV     A,C
+        RAL
+        MOV     C,A
+        DCR     B
+        JNZ     PD1
+PD4:    CMA
+        MOV     L,A
+        MVI     H,00H
+        MOV     D,H
+        MOV     E,L
+        DAD     H
+        DAD     D
+        DAD     H
+        DAD     H
+        DAD     H
+        SHLD    PDN
         XRA     A
         STA     DNF
         LHLD    CNV                     ; k = min(n, floor k*)
@@ -1126,7 +1398,22 @@ SS4:    LHLD    DSV                     ; eq. 4: k* += dS_x
         XCHG
         MVI     A,01H
         STA     DNF
-SS5:    PUSH    H                       ; k
+SS5:    CALL    TGT
+        SHLD    SXV
+        XCHG
+        SHLD    SYV
+        CALL    CHASE
+        LDA     DNF
+        ANA     A
+        RZ
+        LHLD    SXV                     ; the chord's end: the next one starts from this target
+        SHLD    TPX
+        LHLD    SYV
+        SHLD    TPY
+        RET
+;
+; ; TGT: HL = x, DE = y, the chord's target at step k = HL (eq. 5; k in the segment CSEG)
+TGT:    PUSH    H                       ; k
         MOV     A,L                     ; i = k >> 7: a new segment adds Y_d* (eq. 3's Y_i*)
         RAL
         MOV     A,H
@@ -1207,21 +1494,9 @@ SS8:    LHLD    PUV
         POP     D                       ; HL = u, DE = v
         LDA     CMU
         ANA     A
-        JZ      SS9
-        XCHG
-SS9:    SHLD    SXV
-        XCHG
-        SHLD    SYV
-        CALL    CHASE
-        LDA     DNF
-        ANA     A
         RZ
-        LHLD    SXV                     ; the chord's end: the next one starts from this target
-        SHLD    TPX
-        LHLD    SYV
-        SHLD    TPY
+        XCHG
         RET
-;
 ; ; CHASE: POUT = one pulse per axis toward SXV, SYV where the output is not there (eq. 6)
 CHASE:  MVI     B,00H
         LHLD    OUTX
@@ -1274,21 +1549,104 @@ CH4:    MOV     A,B
         STA     POUT
         RET
 ;
-; ; SDESC: the chord's set-up at its first point (section 2.1-2.2): u, n, T_y, Y_d*, sigma, Y0*
-SDESC:  LXI     H,CEV                   ; UUV = dx, VVV = dy, 16.16
-        LXI     D,UUV
+; ; SDESC: a chord's set-up at its first point (section 2.1-2.2): u, n, T_y, Y_d*, sigma, Y0*, from
+; ; JAV, JEV, JPX, JPY into CMU + NOF ... PVV + NOF; in three parts, SDA, SDB, SDC (RUNJ 6-8)
+SDESC:  CALL    SDA                     ; (at the join; ahead of it, stages 6-8 of RUNJ)
+        CALL    SDB
+SDC:    LXI     H,0000H                 ; off = su (P_u . 0 - A_u)
+        SHLD    OF2
+        LHLD    PUV+NOF
+        SHLD    OF2+2
+        CALL    PTRU
+        LXI     D,JAV
+        DAD     D
+        LXI     D,OF2
+        CALL    SUB4
+        LDA     CSU+NOF
+        ANA     A
+        JZ      SO1
+        LXI     H,OF2
+        CALL    NEG4
+SO1:    LXI     H,OF2                   ; T_y |off| >> 16 = T_y . int + (T_y . frac) >> 16
+        CALL    ABS4
+        STA     DVS                     ; (the sign of off, for a moment)
+        LHLD    CTY+NOF
+        MOV     B,H
+        MOV     C,L
+        LHLD    OF2
+        XCHG
+        CALL    MUL32
+        SHLD    OFV
+        LXI     H,0000H
+        SHLD    OFV+2
+        LDA     OF2+2
+        ANA     A
+        JZ      SO3
+SO2:    PUSH    PSW
+        LHLD    CTY+NOF
+        XCHG
+        LXI     H,OFV
+        CALL    ADD16
+        POP     PSW
+        DCR     A
+        JNZ     SO2
+SO3:    CALL    PTRU                    ; Y0* = sigma (A_v - P_v . 0) +- T_y |off| (eq. 13)
+        MOV     A,L
+        XRI     04H
+        MOV     L,A
+        LXI     D,JAV
+        DAD     D
+        LXI     D,CYI+NOF
         MVI     C,04H
         CALL    COPYN
-        LXI     H,CAV
+        LXI     H,0000H
+        SHLD    OF2
+        LHLD    PVV+NOF
+        SHLD    OF2+2
+        LXI     H,OF2
+        LXI     D,CYI+NOF
+        CALL    SUB4
+        LDA     CSG+NOF
+        ANA     A
+        JZ      SY1
+        LXI     H,CYI+NOF
+        CALL    NEG4
+SY1:    LXI     H,OFV
+        LXI     D,CYI+NOF
+        LDA     DVS
+        ANA     A
+        JNZ     SY2
+        CALL    ADD4
+        JMP     SY3
+SY2:    CALL    SUB4
+SY3:    IN      0FDH                    ; a set-up at a join that ran almost to the timer's
+        ANI     3FH                     ; terminal count (the counter below 0200H, 2.6
+        CPI     02H                     ; periods after the last tick): the timer rewound by
+        CC      GRD                     ; one before the count would trap, the tick owed
+        LDA     CTY+NOF+1                   ; C_x from the table, by T_y's top 4 bits
+        RRC
+        RRC
+        RRC
+        ANI     1EH
+        MOV     E,A
+        MVI     D,00H
+        LXI     H,CXTAB
+        DAD     D
+        MOV     E,M
+        INX     H
+        MOV     D,M
+        XCHG
+        SHLD    CCX+NOF
+        RET
+; ; SDA: dx, dy, u, P, n and their signs (the set-up's first stage)
+SDA:    LXI     H,JEV                   ; UUV = dx, VVV = dy, 16.16 (UUV, VVV as JEV's x, y)
+        LXI     D,UUV
+        MVI     C,08H
+        CALL    COPYN
+        LXI     H,JAV
         LXI     D,UUV
         CALL    SUB4
-        LXI     H,CEV+4
-        LXI     D,VVV
-        MVI     C,04H
-        CALL    COPYN
-        LXI     H,CAV+4
-        LXI     D,VVV
-        CALL    SUB4
+        CALL    SUB4                    ; (HL = JAV + 4, DE = VVV)
         LXI     H,UUV
         CALL    ABS4
         STA     DUS
@@ -1326,18 +1684,18 @@ SW1:    MOV     B,M
         MOV     A,B
         STA     DVS
         MVI     A,01H
-SD2:    STA     CMU
+SD2:    STA     CMU+NOF
         ANA     A                       ; P_u, P_v
-        LHLD    TPX
+        LHLD    JPX
         XCHG
-        LHLD    TPY
+        LHLD    JPY
         JZ      SD3
         XCHG
-SD3:    SHLD    PVV
+SD3:    SHLD    PVV+NOF
         XCHG
-        SHLD    PUV
+        SHLD    PUV+NOF
         CALL    PTRU                    ; round(E_u): the high word of E_u + 8000H
-        LXI     D,CEV
+        LXI     D,JEV
         DAD     D
         MOV     A,M
         INX     H
@@ -1349,7 +1707,7 @@ SD3:    SHLD    PVV
         MOV     B,M
         JNC     SD3A
         INX     B
-SD3A:   LHLD    PUV                     ; n = |round(E_u) - P_u|, su its sign
+SD3A:   LHLD    PUV+NOF                     ; n = |round(E_u) - P_u|, su its sign
         XCHG
         MOV     A,C
         SUB     E
@@ -1362,8 +1720,8 @@ SD3A:   LHLD    PUV                     ; n = |round(E_u) - P_u|, su its sign
         JP      SD4
         CALL    NEGHL
         MVI     A,01H
-SD4:    STA     CSU
-        SHLD    CNV
+SD4:    STA     CSU+NOF
+        SHLD    CNV+NOF
         LXI     H,VVV                   ; sigma: + if dv = 0, else sgn(dv) sgn(du) su
         MOV     A,M
         INX     H
@@ -1378,17 +1736,17 @@ SD4:    STA     CSU
         LDA     DVS
         XRA     B
         MOV     B,A
-        LDA     CSU
+        LDA     CSU+NOF
         XRA     B
-SD5:    STA     CSG
+SD5:    STA     CSG+NOF
         LHLD    UUV                     ; U, V below 2^15: whole steps from the high words
         MOV     A,H
         ORA     L
-        JNZ     SN2
+        RNZ
         LHLD    VVV
         MOV     A,H
         ORA     L
-        JNZ     SN2
+        RNZ
         LHLD    UUV+2
         SHLD    UUV
         LHLD    VVV+2
@@ -1396,6 +1754,9 @@ SD5:    STA     CSG
         LXI     H,0000H
         SHLD    UUV+2
         SHLD    VVV+2
+        RET
+; ; SDB: T_y, Y_d* (the set-up's second stage)
+SDB:
 SN2:    LDA     UUV+3                   ; else both shifted right: in registers while U < 2^24
         ANA     A
         JZ      SN5
@@ -1444,44 +1805,46 @@ SN7:    ORA     A
 SN4:    MOV     A,H                     ; U = HL, V = DE, below 2^15
         ORA     L
         JZ      SQZ
-        XCHG                            ; DE = U, HL = V
         MOV     A,L
         CMP     E
         JNZ     SDV
         MOV     A,H
         CMP     D
         JZ      SQE
-SDV:    LXI     B,0001H                 ; Q = floor(2^24 V / U): restoring, remainder in HL; 24
-        XRA     A                       ; steps, until the 1 put below the quotient leaves its top
-        STA     QHV
-SDV1:   DAD     H
+SDV:    CALL    NEGHL                   ; Q = floor(2^24 V / U): DE = -U, HL = V, the
+        XCHG                            ; remainder; 16 quotient bits, then 8 (SDVL)
+        LXI     B,0001H
+        CALL    SDVL
+        PUSH    B
+        LXI     B,0100H
+        CALL    SDVL
+        POP     H
+        MOV     A,C
+        STA     OFV
+        SHLD    OFV+1
+        XRA     A
+        STA     OFV+3
+        JMP     SQD
+; ; SDVL: restoring division steps until the 1 put below BC's quotient bits leaves B's top: HL =
+; ; 2 HL - U (DAD D, DE = -U: CY when 2 HL >= U, the quotient bit; 2 HL < 2^16 as HL < U < 2^15),
+; ; else HL = 2 HL (the -U taken back, CY 0)
+SDVL:   DAD     H
+        DAD     D
+        JC      SDV2
         MOV     A,L
         SUB     E
         MOV     L,A
         MOV     A,H
         SBB     D
         MOV     H,A
-        JNC     SDV2
-        DAD     D                       ; restore (CY = 1: the quotient bit 0)
-SDV2:   CMC
-        MOV     A,C
+SDV2:   MOV     A,C
         RAL
         MOV     C,A
         MOV     A,B
         RAL
         MOV     B,A
-        LDA     QHV
-        RAL
-        STA     QHV
-        JNC     SDV1
-        MOV     H,B
-        MOV     L,C
-        SHLD    OFV
-        LDA     QHV
-        MOV     L,A
-        MVI     H,00H
-        SHLD    OFV+2
-        JMP     SQD
+        JNC     SDVL
+        RET
 SQZ:    LXI     H,0000H                 ; U = 0 (A = E): Q = 0
         SHLD    OFV
         SHLD    OFV+2
@@ -1502,105 +1865,22 @@ SQD:    LHLD    OFV                     ; T_y = min(FFFFH, (Q + 80H) >> 8)
         XCHG
         JZ      SQT
         LXI     H,0FFFFH
-SQT:    SHLD    CTY
+SQT:    SHLD    CTY+NOF
         LXI     H,OFV                   ; Y_d* = (Q + 1) >> 1
-        LXI     D,CYD
+        LXI     D,CYD+NOF
         MVI     C,04H
         CALL    COPYN
-        LXI     H,CYD
+        LXI     H,CYD+NOF
         MVI     B,04H
 YI1:    INR     M
         JNZ     YI2
         INX     H
         DCR     B
         JNZ     YI1
-YI2:    LXI     H,CYD+3
-        CALL    SHR4
-        LXI     H,0000H                 ; off = su (P_u . 0 - A_u)
-        SHLD    OF2
-        LHLD    PUV
-        SHLD    OF2+2
-        CALL    PTRU
-        LXI     D,CAV
-        DAD     D
-        LXI     D,OF2
-        CALL    SUB4
-        LDA     CSU
-        ANA     A
-        JZ      SO1
-        LXI     H,OF2
-        CALL    NEG4
-SO1:    LXI     H,OF2                   ; T_y |off| >> 16 = T_y . int + (T_y . frac) >> 16
-        CALL    ABS4
-        STA     DNF                     ; (the sign of off, for a moment)
-        LHLD    CTY
-        MOV     B,H
-        MOV     C,L
-        LHLD    OF2
-        XCHG
-        CALL    MUL16
-        SHLD    OFV
-        LXI     H,0000H
-        SHLD    OFV+2
-        LDA     OF2+2
-        ANA     A
-        JZ      SO3
-SO2:    PUSH    PSW
-        LHLD    CTY
-        XCHG
-        LXI     H,OFV
-        CALL    ADD16
-        POP     PSW
-        DCR     A
-        JNZ     SO2
-SO3:    CALL    PTRU                    ; Y0* = sigma (A_v - P_v . 0) +- T_y |off| (eq. 13)
-        MOV     A,L
-        XRI     04H
-        MOV     L,A
-        LXI     D,CAV
-        DAD     D
-        LXI     D,CYI
-        MVI     C,04H
-        CALL    COPYN
-        LXI     H,0000H
-        SHLD    OF2
-        LHLD    PVV
-        SHLD    OF2+2
-        LXI     H,OF2
-        LXI     D,CYI
-        CALL    SUB4
-        LDA     CSG
-        ANA     A
-        JZ      SY1
-        LXI     H,CYI
-        CALL    NEG4
-SY1:    LXI     H,OFV
-        LXI     D,CYI
-        LDA     DNF
-        ANA     A
-        JNZ     SY2
-        CALL    ADD4
-        JMP     SY3
-SY2:    CALL    SUB4
-SY3:    LDA     CTY+1                   ; C_x from the table, by T_y's top 6 bits
-        RRC
-        ANI     7EH
-        MOV     E,A
-        MVI     D,00H
-        LXI     H,CXTAB
-        DAD     D
-        MOV     E,M
-        INX     H
-        MOV     D,M
-        XCHG
-        SHLD    CCX
-        XRA     A
-        STA     CSEG
-        STA     DSOK
-        STA     DNF
-        RET
-; ; PTRU: HL = 4 CMU (the u coordinate's offset in CAV, CEV)
-PTRU:   LDA     CMU
+YI2:    LXI     H,CYD+NOF+3
+        JMP     SHR4
+; ; PTRU: HL = 4 CMU+NOF (the u coordinate's offset in JAV, JEV)
+PTRU:   LDA     CMU+NOF
         ADD     A
         ADD     A
         MOV     L,A
@@ -1667,18 +1947,16 @@ SR41:   MOV     A,M
         DCR     B
         JNZ     SR41
         RET
-; ; MUL16: HL = (BC x DE) >> 16, unsigned: 16 steps, shifting right
-MUL16:  LXI     H,0000H
-        MVI     A,10H
-MU1:    PUSH    PSW
-        XRA     A
-        MOV     A,D
-        RAR
-        MOV     D,A
-        MOV     A,E
-        RAR
-        MOV     E,A
-        JNC     MU2
+; ; MUL32: HL:DE = BC x DE, unsigned: 16 steps shifting right, the product's low bits into DE as
+; ; the multiplier's leave it
+MULCX:  LHLD    CCX                     ; HL:DE = BC x C_x
+        XCHG
+MUL32:  LXI     H,0000H
+        MVI     A,11H                   ; a first round shifts DE only: CY = its bit 0
+        STA     MCNT
+        ORA     A
+        JMP     MU3
+MU1:    JNC     MU2
         DAD     B
 MU2:    MOV     A,H
         RAR
@@ -1686,22 +1964,23 @@ MU2:    MOV     A,H
         MOV     A,L
         RAR
         MOV     L,A
-        POP     PSW
+MU3:    MOV     A,D
+        RAR
+        MOV     D,A
+        MOV     A,E
+        RAR
+        MOV     E,A
+        LDA     MCNT                    ; (LDA, DCR, STA leave CY)
         DCR     A
+        STA     MCNT
         JNZ     MU1
         RET
-; ; C_x = 1 / sqrt(1 + T^2) at the middle of each 1/64 of T_y (0.16): eq. 4's dS_x = C_x f
-CXTAB:   DW      0FFFEH,0FFEEH,0FFCEH,0FF9EH,0FF5FH,0FF0FH,0FEB1H,0FE43H
-        DW      0FDC6H,0FD3AH,0FC9FH,0FBF7H,0FB41H,0FA7DH,0F9ACH,0F8CFH
-        DW      0F7E5H,0F6EFH,0F5EEH,0F4E3H,0F3CCH,0F2ACH,0F183H,0F050H
-        DW      0EF15H,0EDD1H,0EC87H,0EB35H,0E9DCH,0E87EH,0E719H,0E5B0H
-        DW      0E441H,0E2CFH,0E158H,0DFDEH,0DE61H,0DCE0H,0DB5EH,0D9D9H
-        DW      0D853H,0D6CBH,0D543H,0D3B9H,0D22FH,0D0A5H,0CF1BH,0CD91H
-        DW      0CC08H,0CA80H,0C8F8H,0C772H,0C5EDH,0C46AH,0C2E8H,0C168H
-        DW      0BFEAH,0BE6EH,0BCF5H,0BB7EH,0BA09H,0B897H,0B727H,0B5BAH
+; ; C_x = 1 / sqrt(1 + T^2) at the middle of each 1/16 of T_y (0.16): eq. 4's dS_x = C_x f
+CXTAB:  DW      0FFE0H,0FEE2H,0FCEEH,0FA16H,0F670H,0F219H,0ED2DH,0E7CCH
+        DW      0E214H,0DC1FH,0D607H,0CFE0H,0C9BCH,0C3A9H,0BDB1H,0B7DFH
 ;
 MEND    EQU     $
-        IF      $ GT 3D00H
-        ERROR   "the master program does not fit 3000H-3CFFH"
+        IF      $ GT 3DD0H
+        ERROR   "the master program does not fit 3000H-3DCFH"
         ENDIF
         END

@@ -147,7 +147,8 @@ TEST(PathTable, BytesAndHex) {
     for (int i = 16; i < 32; ++i) EXPECT_EQ(b[i], 0) << i;
     // One record: 02 bytes at 3800H, checksum = -(02+38+00+00+AB+CD) mod 256 = 0x4E.
     EXPECT_EQ(intel_hex(0x3800, {0xAB, 0xCD}), ":02380000ABCD4E\n:00000001FF\n");
-    EXPECT_EQ(kTableBase, 0x3D00);  // after the master program's 3000H-3CFFH
+    EXPECT_EQ(kTableBase, 0x3DD0);  // after the master program's 3000H-3DCFH
+    EXPECT_EQ(kTableSize / kEntrySize, 35u);  // scripts/master/sampling/octants: 35 entries
     EXPECT_EQ(kTableBase + kTableSize, 0x4000);
 }
 
@@ -177,13 +178,13 @@ TEST(GcodeSampling, HeadersAtStopsWithFeedAndLength) {
     EXPECT_EQ(s[0].kind, Kind::Sample);
     EXPECT_EQ(s[0].cr, 1);  // the ramp
     EXPECT_EQ(s[0].feed, 32768);  // 750 mm/min = 250 steps/s = 0.5 step a sample
-    // 1000 steps, less 1000/128 + 4: 988.1875 steps in 16.16
+    // 1000 steps, less 1000/32 + 4: 964.75 steps in 16.16 (the margin covers the 16-entry C_x table)
     const double l0 = s[0].y + s[0].x / 65536.0;
-    EXPECT_NEAR(l0, 1000 - 1000 / 128.0 - 4, 1.0 / 65536);
+    EXPECT_NEAR(l0, 1000 - 1000 / 32.0 - 4, 1.0 / 65536);
     EXPECT_EQ(s[1].kind, Kind::Line);
     EXPECT_EQ(s[2].kind, Kind::Line);
     EXPECT_EQ(s[3].kind, Kind::Sample);  // the reversal
-    EXPECT_NEAR(s[3].y + s[3].x / 65536.0, 500 - 500 / 128.0 - 4, 1.0 / 65536);
+    EXPECT_NEAR(s[3].y + s[3].x / 65536.0, 500 - 500 / 32.0 - 4, 1.0 / 65536);
     EXPECT_EQ(s[4].kind, Kind::Line);
     EXPECT_EQ(s[5].kind, Kind::Sample);  // before the Z move
     EXPECT_EQ(s[6].z, 100);

@@ -12,7 +12,7 @@ master hands to the thesis line routine, and the paper's bounds for each move.
 """
 import math
 
-TABLE = 0x3D00
+TABLE = 0x3DD0
 ENTRY = 16
 
 

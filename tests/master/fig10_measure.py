@@ -5,6 +5,10 @@ emulated 8085 with breakpoints (alp85 script); beside them one iteration of the 
 (which runs every 2 ms whatever the feed: dX / S_r,max at 1500 mm/min).
 
   python3 fig10_measure.py BUILD_DIR WORKDIR > docs/contours/fig10.csv
+
+docs/contours/fig10.csv is from the master before each sample's pulses were placed where x*
+crosses the step: since then STOUT may come after the sample's work (a late pulse), and this
+measure would count the wait; the sample's own work is SSMP's (docs/contours.md "The time").
 """
 import os
 import re

@@ -23,8 +23,15 @@ Each sample sends at most one pulse per axis, both in one OUT (eq. 6's dx_s, dy_
 follows the target by -1, 0 or +1 per axis (a target more than a step away, which only a chord's
 first point can ask, is reached in the next sample).
 
+Timing: phases[] holds, per sample,
+the T-states after the sample's tick at which x* crossed its step, 24 (255 - floor(256 r / dS_x))
+with r = frac(k*) after the sample's dS_x (0 <= r < dS_x: the crossing lies (dS_x - r) / dS_x into
+the sample; PERIOD / 256 = 24), where k* passed a whole step; 0 where it did not. The master sends
+the sample's pulses (both axes in one OUT) then, not at the tick: the major axis's pulses come
+1 / rate apart to 24 T-states, not on the 2 ms grid.
+
 Feed (per sample, before the progress): f path steps per sample (0.16), dS_x = (f C_x) >> 16 with
-C_x = CXTAB[T_y >> 10] (64 entries, the cosine at the middle of each interval: eq. 4's C_x). With
+C_x = CXTAB[T_y >> 12] (16 entries, the cosine at the middle of each interval: eq. 4's C_x). With
 the ramp, the group starts at F_MIN (or F_s if lower) and each sample either decelerates (L_rem <= D, the distance the
 deceleration down the levels it came up would need), or accelerates by A_F up to the group's F_s;
 L_rem -= f. Without it f = F_s from the first sample to the last.
@@ -41,7 +48,7 @@ HEADER = 5               # path-table type of a sampling group's header
 CL = 8
 XD = 1 << (16 - 1 - CL)  # 128
 
-CXTAB = [min(0xFFFF, round(65536 / math.sqrt(1 + ((i + 0.5) / 64) ** 2))) for i in range(64)]
+CXTAB = [min(0xFFFF, round(65536 / math.sqrt(1 + ((i + 0.5) / 16) ** 2))) for i in range(16)]
 
 
 def sgn(v):
@@ -88,7 +95,7 @@ class Chord:
         toff = (self.t * abs(off)) >> 16
         self.y0 = self.sigma * (a[mv] - (p[mv] << 16)) + (toff if off >= 0 else -toff)
         self.p = p
-        self.cx = CXTAB[self.t >> 10]
+        self.cx = CXTAB[self.t >> 12]
 
     def target(self, k):
         i, xr = k >> 7, k & (XD - 1)
@@ -115,6 +122,8 @@ class Run:
     def __init__(self, path):
         self.samples = []
         self.targets = []
+        self.phases = []
+        self.joins = set()       # each chord's first sample
         self.out = [0, 0]
         self.z = 0
         self.stops = 0
@@ -146,6 +155,7 @@ class Run:
         return min(self.fs, F_MIN + self.j * A_F)
 
     def chord(self, c):
+        self.joins.add(len(self.samples))
         while True:
             if self.ramp:
                 if self.lrem <= self.d:
@@ -158,19 +168,24 @@ class Run:
                     self.f = self.level()
                     self.d += self.f
             self.lrem -= self.f
-            self.k += (self.f * c.cx) >> 16
+            ds = (self.f * c.cx) >> 16
+            k0 = self.k >> 16
+            self.k += ds
             kr = self.k >> 16
+            r = self.k & 0xFFFF
+            phase = 24 * (255 - (r << 8) // ds) if kr > k0 else 0
             done = kr >= c.n
             if done:
                 kr = c.n
                 self.k -= c.n << 16
             t = c.target(kr)
-            self.emit(t)
+            self.emit(t, phase)
             if done:
                 self.tp = t
                 return
 
-    def emit(self, t):
+    def emit(self, t, phase=0):
+        self.phases.append(phase)
         d = [max(-1, min(1, t[i] - self.out[i])) for i in (0, 1)]
         self.out = [self.out[0] + d[0], self.out[1] + d[1]]
         self.samples.append((d[0], d[1]))

@@ -1,0 +1,15 @@
+(METHOD SAMPLING)
+(The contour example at 1500 mm/min with the ramp, on the physical motors: no step lost)
+G21 G90
+G00 X10 Y10
+G01 Z2 F1500          (plunge: Z moves on its own)
+G01 X50 Y10 F1500     (bottom edge)
+G03 X70 Y30 I0 J20   (fillet R 20, counter-clockwise, centre by I J)
+G91 G01 X0 Y20       (right edge, incremental)
+G90 G03 X40 Y80 R30  (corner R 30 by R, the short way)
+G20 G01 X0.7874 Y3.1496 (top edge in inches: to X20 Y80 mm)
+G21 G03 X10 Y70 R10  (corner R 10)
+G01 Y50              (left edge, down to the keyhole)
+G02 X10 Y30 R-12     (keyhole R 12 cut into the part: clockwise the long way round, R < 0)
+G01 Y10              (left edge back to the start)
+G00 Z0               (retract)
