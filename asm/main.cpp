@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "asm/asm85.h"
 #include "asm/lexer.h"
@@ -144,6 +145,19 @@ int main(int argc, char** argv) {
             std::cerr << "asm85: error: --bin-end is below --bin-start; no output written\n";
             return kUsageError;
         } else {
+            // Bytes the window leaves out: said, so that a ROM image cut short is not a surprise.
+            std::size_t outside = 0;
+            std::optional<std::uint16_t> first_out;
+            for (const Segment& s : r.image.segments())
+                for (std::uint32_t a = s.start; a < s.end(); ++a)
+                    if (a < lo || a > hi) {
+                        ++outside;
+                        if (!first_out) first_out = static_cast<std::uint16_t>(a);
+                    }
+            if (outside)
+                std::cerr << fmt::format("asm85: warning: {} byte{} outside the binary's {:04X}H-{:04X}H left out of {} "
+                                         "(the first at {:04X}H; --bin-start and --bin-end set the range)\n",
+                                         outside, outside == 1 ? "" : "s", lo, hi, bin_out, *first_out);
             auto bytes = write_binary(r.image, lo, hi, static_cast<std::uint8_t>(*fillv));
             outputs.add(bin_out, std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
         }

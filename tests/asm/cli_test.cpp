@@ -48,8 +48,21 @@ TEST_F(Cli, AllOutputs) {
     EXPECT_EQ(read("x.bin"), std::string("\x01\xFF\xFF\x02", 4));
     EXPECT_NE(read("x.lst").find("LOC  OBJ"), std::string::npos);
     EXPECT_NE(read("x.json").find("\"symbols\""), std::string::npos);
+    EXPECT_EQ(read("err.txt"), "");  // the whole program in the binary: nothing to say
     EXPECT_EQ(run("p.asm --bin y.bin --bin-start 0FEH --bin-end 0x101"), 0);
     EXPECT_EQ(read("y.bin"), std::string("\x00\x00\x01\x00", 4));
+}
+
+// A range that leaves emitted bytes out (a ROM image cut short) is written as asked, with a
+// warning that counts them and names the first.
+TEST_F(Cli, ABinaryRangeLeavingBytesOutIsAWarning) {
+    write("p.asm", "\tORG 100H\n\tDB 1\n\tDS 2\n\tDB 2,3\n");  // bytes at 100H, 103H, 104H
+    EXPECT_EQ(run("p.asm --bin y.bin --bin-start 0FEH --bin-end 0x101"), 0);
+    EXPECT_EQ(read("y.bin"), std::string("\x00\x00\x01\x00", 4));
+    const std::string err = read("err.txt");
+    EXPECT_NE(err.find("warning: 2 bytes outside the binary's 00FEH-0101H left out of y.bin (the first at 0103H"),
+              std::string::npos)
+        << err;
 }
 
 TEST_F(Cli, ErrorsMeanExit1AndNoOutput) {
