@@ -98,9 +98,9 @@ document.addEventListener('keyup', (e) => {
 
 // ---- the machine tool: X-Y table (ideal line, toolpath, tool), Z gauge, the axes' figures -------
 // Layers, one over the other: below, a canvas with the grid and the toolpath, drawn once and
-// extended 10 times a second (redrawn whole only when the view moves: a changed canvas is sent to
+// extended 4 times a second (redrawn whole only when the view moves: a changed canvas is sent to
 // the compositor whole); over it the path's newest part, from the canvas's last point to the tool,
-// a straight stroke (the path of a tenth of a second) that the compositor turns and stretches; then
+// a straight stroke (the path of at most a quarter of a second) that the compositor turns and stretches; then
 // the ideal line's canvas, drawn when it or the view changes; on top, the tool, an element the
 // compositor moves. The canvases are as many pixels as they show (no scaling when composited).
 const canvas = $('table');
@@ -128,7 +128,7 @@ function grow(x, y) {
   if (y < bounds.y0) bounds.y0 = y; else if (y > bounds.y1) bounds.y1 = y;
 }
 function resetPath() { pathLen = 0; bounds = null; view = null; drawnPoints = 0; lineKey = ''; toolPx = [NaN, NaN]; }
-// The path's points not yet on the canvas are drawn there 10 times a second.
+// The path's points not yet on the canvas are drawn there 4 times a second.
 function flushRecent(now) {
   if (drawnPoints > canvasPoints + 1) {
     ctx.strokeStyle = '#c0392b'; ctx.lineWidth = 2; ctx.lineJoin = 'round'; ctx.beginPath();
@@ -152,7 +152,7 @@ function drawChord(px, py) {
   if (t !== chordShown) chord.style.transform = chordShown = t;
 }
 // Whether the table's picture would change: the tool a pixel away, the line moved, the path cut
-// back, or grown while the tool stands (its last points, closer than a pixel, drawn within 0.1 s).
+// back, or grown while the tool stands (its last points, closer than a pixel, drawn within 0.25 s).
 function tableChanged(now) {
   if (!view || S[SNAP.pathSize] < pathLen / 2) return true;
   if (Math.round(X(S[SNAP.axes + 1]) * cssScale) !== toolPx[0] || Math.round(Y(S[SNAP.axes + 5]) * cssScale) !== toolPx[1]) return true;
@@ -231,7 +231,7 @@ const cells = ['x', 'y', 'z'].map((name) => ['.steps', '.mm', '.count', '.lost']
 const shownAxes = new Float64Array(12).fill(NaN);
 let axesAt = 0, shownZ = NaN;
 function axesChanged(now) {
-  if (now - axesAt < 250) return false;
+  if (now - axesAt < 100) return false;
   for (let i = 0; i < 12; i++) if (S[SNAP.axes + i] !== shownAxes[i]) return true;
   return false;
 }
