@@ -158,36 +158,8 @@ public:
         return out;
     }
 
-    // The eight digits: segment bytes (a = bit 0 ... g = bit 6, dp = bit 7), and as text.
-    val display() const {
-        val segs = val::array();
-        for (std::uint8_t s : session_.machine().display()) segs.call<void>("push", static_cast<int>(s));
-        return segs;
-    }
+    // The eight digits as text (the nearest character each, '.' for a dot).
     std::string display_text() const { return session_.machine().display_text(); }
-
-    // Time, the CPU's PC, the three axes (commanded steps, table mm, transducer count, lost).
-    val state() {
-        const Machine& m = session_.machine();
-        const debug::ToolSample s = debug::sample_tool(m.tool(), m.now());
-        val o = val::object();
-        o.set("t", static_cast<double>(m.now()));
-        o.set("ms", board::ms_from_tstates(m.now()));
-        o.set("pc", static_cast<int>(m.cpu().regs().pc));
-        o.set("running", running());
-        o.set("stop", stop_);
-        val axes = val::array();
-        for (const debug::AxisSample& a : s.axes) {
-            val x = val::object();
-            x.set("steps", static_cast<double>(a.commanded));
-            x.set("mm", a.mm);
-            x.set("count", static_cast<double>(a.count));
-            x.set("lost", static_cast<double>(a.lost));
-            axes.call<void>("push", x);
-        }
-        o.set("axes", axes);
-        return o;
-    }
 
     // What the page draws, in one array it reads without a call per figure (kSnap* below): time,
     // PC, the run, the eight digits' segments (with a count of their changes), the axes, the
@@ -231,15 +203,6 @@ public:
             points_.push_back(p[i].y);
         }
         return val(emscripten::typed_memory_view(points_.size(), points_.data()));
-    }
-    int path_size() const { return static_cast<int>(path_.points().size()); }
-    val ideal() const {
-        const auto l = path_.ideal(session_.machine());
-        if (!l) return val::null();
-        val o = val::object();
-        o.set("x0", l->from.x), o.set("y0", l->from.y), o.set("x1", l->to.x), o.set("y1", l->to.y);
-        o.set("started", l->started);
-        return o;
     }
     void clear_path() { path_.clear(); }
     std::string stop_text() const { return stop_; }
@@ -401,14 +364,10 @@ EMSCRIPTEN_BINDINGS(alp85) {
         .function("pcKey", &Board::pc_key)
         .function("keypad", &Board::keypad)
         .function("keyMap", &Board::key_map)
-        .function("display", &Board::display)
         .function("displayText", &Board::display_text)
-        .function("state", &Board::state)
         .function("snapshot", &Board::snapshot)
         .function("stopText", &Board::stop_text)
         .function("pathSince", &Board::path_since)
-        .function("pathSize", &Board::path_size)
-        .function("ideal", &Board::ideal)
         .function("clearPath", &Board::clear_path)
         .function("assemble", &Board::assemble)
         .function("gcode", &Board::gcode)
