@@ -5,6 +5,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -44,6 +45,11 @@ script::SessionOptions options() {
 val outcome(const script::Session::Outcome& o) {
     return val(o.status == script::Session::Status::Ok ? std::string() : o.message);
 }
+
+// The snapshot's layout (web/main.js reads it by the same numbers).
+constexpr std::size_t kSnapT = 0, kSnapPc = 1, kSnapRunning = 2, kSnapStops = 3, kSnapDisplayChanges = 4,
+                      kSnapDigits = 5, kSnapAxes = 13, kSnapPathSize = 25, kSnapIdeal = 26, kSnapLog = 31,
+                      kSnapSize = 32;
 
 }  // namespace
 
@@ -152,57 +158,54 @@ public:
         return out;
     }
 
-    // The eight digits: segment bytes (a = bit 0 ... g = bit 6, dp = bit 7), and as text.
-    val display() const {
-        val segs = val::array();
-        for (std::uint8_t s : session_.machine().display()) segs.call<void>("push", static_cast<int>(s));
-        return segs;
-    }
+    // The eight digits as text (the nearest character each, '.' for a dot).
     std::string display_text() const { return session_.machine().display_text(); }
 
-    // Time, the CPU's PC, the three axes (commanded steps, table mm, transducer count, lost).
-    val state() {
+    // What the page draws, in one array it reads without a call per figure (kSnap* below): time,
+    // PC, the run, the eight digits' segments (with a count of their changes), the axes, the
+    // toolpath's length and the ideal line. A view of the module's memory, filled in place.
+    val snapshot() {
         const Machine& m = session_.machine();
-        const debug::ToolSample s = debug::sample_tool(m.tool(), m.now());
-        val o = val::object();
-        o.set("t", static_cast<double>(m.now()));
-        o.set("ms", board::ms_from_tstates(m.now()));
-        o.set("pc", static_cast<int>(m.cpu().regs().pc));
-        o.set("running", running());
-        o.set("stop", stop_);
-        val axes = val::array();
-        for (const debug::AxisSample& a : s.axes) {
-            val x = val::object();
-            x.set("steps", static_cast<double>(a.commanded));
-            x.set("mm", a.mm);
-            x.set("count", static_cast<double>(a.count));
-            x.set("lost", static_cast<double>(a.lost));
-            axes.call<void>("push", x);
+        auto& v = snap_;
+        v[kSnapT] = static_cast<double>(m.now());
+        v[kSnapPc] = m.cpu().regs().pc;
+        v[kSnapRunning] = running() ? 1 : 0;
+        v[kSnapStops] = static_cast<double>(stops_);
+        const auto digits = m.display();
+        if (digits != digits_) {
+            digits_ = digits;
+            ++display_changes_;
         }
-        o.set("axes", axes);
-        return o;
+        v[kSnapDisplayChanges] = static_cast<double>(display_changes_);
+        for (std::size_t i = 0; i < 8; ++i) v[kSnapDigits + i] = digits[i];
+        const debug::ToolSample s = debug::sample_tool(m.tool(), m.now());
+        for (std::size_t i = 0; i < 3; ++i) {
+            const debug::AxisSample& a = s.axes[i];
+            v[kSnapAxes + 4 * i] = static_cast<double>(a.commanded);
+            v[kSnapAxes + 4 * i + 1] = a.mm;
+            v[kSnapAxes + 4 * i + 2] = static_cast<double>(a.count);
+            v[kSnapAxes + 4 * i + 3] = static_cast<double>(a.lost);
+        }
+        v[kSnapPathSize] = static_cast<double>(path_.points().size());
+        const auto l = path_.ideal(m);
+        v[kSnapIdeal] = l ? 1 : 0;
+        if (l) v[kSnapIdeal + 1] = l->from.x, v[kSnapIdeal + 2] = l->from.y, v[kSnapIdeal + 3] = l->to.x, v[kSnapIdeal + 4] = l->to.y;
+        v[kSnapLog] = static_cast<double>(log_.size());
+        return val(emscripten::typed_memory_view(v.size(), v.data()));
     }
 
-    // The toolpath's points from index `from` on (x, y in table mm, flat), and the ideal line.
-    val path_since(int from) const {
+    // The toolpath's points from index `from` on (x, y in table mm, flat): a view the page copies.
+    val path_since(int from) {
         const auto& p = path_.points();
-        val out = val::array();
+        points_.clear();
         for (std::size_t i = static_cast<std::size_t>(std::max(0, from)); i < p.size(); ++i) {
-            out.call<void>("push", p[i].x);
-            out.call<void>("push", p[i].y);
+            points_.push_back(p[i].x);
+            points_.push_back(p[i].y);
         }
-        return out;
-    }
-    int path_size() const { return static_cast<int>(path_.points().size()); }
-    val ideal() const {
-        const auto l = path_.ideal(session_.machine());
-        if (!l) return val::null();
-        val o = val::object();
-        o.set("x0", l->from.x), o.set("y0", l->from.y), o.set("x1", l->to.x), o.set("y1", l->to.y);
-        o.set("started", l->started);
-        return o;
+        return val(emscripten::typed_memory_view(points_.size(), points_.data()));
     }
     void clear_path() { path_.clear(); }
+    std::string stop_text() const { return stop_; }
 
     // asm85 on the editor's text: its diagnostics (severity, line, col, message); with no error,
     // the image is loaded through the session as any .asm is (the symbols come with it).
@@ -319,6 +322,7 @@ private:
         else presser_.up(k, session_.machine());
     }
     void stopped(const debug::Stop& s) {
+        ++stops_;
         stop_ = std::string(debug::name(s.reason));
         if (!s.message.empty()) stop_ += ": " + s.message;
     }
@@ -336,6 +340,11 @@ private:
     gui::Toolpath path_;
     std::vector<std::string> log_;
     std::string stop_;
+    std::uint64_t stops_ = 0;
+    std::array<std::uint8_t, 8> digits_{};
+    std::uint64_t display_changes_ = 0;
+    std::array<double, kSnapSize> snap_{};
+    std::vector<double> points_;
 };
 
 }  // namespace alp85::web
@@ -355,12 +364,10 @@ EMSCRIPTEN_BINDINGS(alp85) {
         .function("pcKey", &Board::pc_key)
         .function("keypad", &Board::keypad)
         .function("keyMap", &Board::key_map)
-        .function("display", &Board::display)
         .function("displayText", &Board::display_text)
-        .function("state", &Board::state)
+        .function("snapshot", &Board::snapshot)
+        .function("stopText", &Board::stop_text)
         .function("pathSince", &Board::path_since)
-        .function("pathSize", &Board::path_size)
-        .function("ideal", &Board::ideal)
         .function("clearPath", &Board::clear_path)
         .function("assemble", &Board::assemble)
         .function("gcode", &Board::gcode)

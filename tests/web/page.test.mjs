@@ -93,12 +93,12 @@ async function waitDisplay(page, text, ms = 20000) {
     throw new Error(`the display did not read "${text}" (it reads "${await display(page)}")`);
   }
 }
-// Machine time from the status line (T-states), to let each key's hold and gap pass.
-function machineT(page) { return page.$eval('#status', (s) => Number(s.dataset.t)); }
+// Machine time (T-states) as the page last drew it, to let each key's hold and gap pass.
+function machineT(page) { return page.evaluate(() => window.alp85.t); }
 async function click(page, key) {
   await page.click(`#keypad button[data-key="${key}"]`);
   const t = await machineT(page);
-  await page.waitForFunction((t0) => Number(document.querySelector('#status').dataset.t) > t0 + 0.07 * 3072000,
+  await page.waitForFunction((t0) => window.alp85.t > t0 + 0.07 * 3072000,
     { timeout: 20000, polling: 'raf' }, t);
 }
 async function type(page, keys) {
@@ -277,13 +277,14 @@ async function setSource(page, text) {
 }
 
 // ---- the figures of docs/web.md -------------------------------------------------------------------
+// The same workload as `alp85 bench thesis`: the thesis firmware drawing its 100 mm diagonal
+// (Appendix C: Z 0, (0100, 0100) to (1514, 1514), 1000 mm/min), the physical motors (the page's,
+// as alp85's), 17.152 s of machine time from EXEC. Typed once; a snapshot at the last prompt
+// starts each run again.
 async function figures(page, loadMs) {
   const cdp = await page.createCDPSession();
   await cdp.send('Performance.enable');
   const metrics = async () => Object.fromEntries((await cdp.send('Performance.getMetrics')).metrics.map((m) => [m.name, m.value]));
-  // The same workload as `alp85 bench thesis`: the thesis firmware drawing its 100 mm diagonal
-  // (Appendix C: Z 0, (0100, 0100) to (1514, 1514), 1000 mm/min), the physical motors (the
-  // page's, as alp85's), 17.152 s of machine time from EXEC, here unpaced.
   await page.click('input[name=speed][value="0"]');
   await type(page, ['RESET']);
   await waitDisplay(page, '-ALP 85-');
@@ -297,52 +298,112 @@ async function figures(page, loadMs) {
   }
   await type(page, [...'1000']);
   await waitDisplay(page, 'H=1000');
-  await page.click('#keypad button[data-key="EXEC"]');
-  const t0 = await machineT(page), h0 = Date.now();
-  await page.waitForFunction((t) => Number(document.querySelector('#status').dataset.t) >= t,
-    { timeout: 120000, polling: 'raf' }, t0 + 17.152 * CLOCK_HZ);
-  const t1 = await machineT(page), h1 = Date.now();
-  const unpaced = (t1 - t0) / CLOCK_HZ / ((h1 - h0) / 1000);
-  // Real time: 1x for 10 s with the line still being drawn (the physical motors stall at 1000
-  // mm/min: no Bitti), the page drawing at 60 fps; the CPU time of every chromium process (user +
-  // system, /proc) over the wall time, and the renderer's busy time (CDP TaskDuration).
-  await page.click('input[name=speed][value="1"]');
+  const dir = mkdtempSync(join(tmpdir(), 'alp85-web-bench-'));
+  const snap = join(dir, 'h1000.alp85snap');
+  writeFileSync(snap, Buffer.from(await page.evaluate(async () => Array.from(await window.alp85.board.save()))));
+  const again = async (speed, exec = true) => {
+    await page.click(`input[name=speed][value="${speed}"]`);
+    const before = await machineT(page);  // the snapshot's time is earlier than any after it
+    await (await page.$('#open')).uploadFile(snap);
+    await page.waitForFunction((t) => window.alp85.t < t, { timeout: 10000 }, before);
+    await waitDisplay(page, 'H=1000');
+    if (exec) await page.click('#keypad button[data-key="EXEC"]');
+  };
+  // The CPU of 10 s of real time (1x): every chromium process (user + system, /proc) over the wall
+  // time, the renderer's busy time (CDP TaskDuration) and its script; the board's ticks (60 a
+  // second) and the frames drawn (only when a tick changed what the page shows).
+  const realTime = async () => {
+    const c0 = chromiumThreads(), m0 = await metrics(), w0 = Date.now(), t0 = await machineT(page);
+    const [k0, f0] = await page.evaluate(() => [window.alp85.ticks, window.alp85.frames]);
+    await new Promise((r) => setTimeout(r, 10000));
+    const c1 = chromiumThreads(), m1 = await metrics(), w1 = Date.now(), t1 = await machineT(page);
+    const [k1, f1] = await page.evaluate(() => [window.alp85.ticks, window.alp85.frames]);
+    const wall = (w1 - w0) / 1000;
+    const r2 = (x) => Number(x.toFixed(3));
+    return { realtime_x: r2((t1 - t0) / CLOCK_HZ / wall), ticks_per_s: Number(((k1 - k0) / wall).toFixed(1)), frames_drawn_per_s: Number(((f1 - f0) / wall).toFixed(1)),
+      chromium_cpu_share: r2([...c1].reduce((sum, [k, v]) => sum + v.cpu - (c0.get(k)?.cpu ?? 0), 0) / wall), threads: threadShares(c0, c1, wall), renderer_busy_share: r2((m1.TaskDuration - m0.TaskDuration) / wall),
+      script_share: r2((m1.ScriptDuration - m0.ScriptDuration) / wall) };
+  };
+  // Real time while the table moves: from 1 s after EXEC, 10 s of the line.
+  await again(1);
   await new Promise((r) => setTimeout(r, 1000));
-  const c0 = chromiumCpu(), m0 = await metrics(), w0 = Date.now(), tt0 = await machineT(page);
-  const frames0 = await page.evaluate(() => window.alp85.frames);
-  await new Promise((r) => setTimeout(r, 10000));
-  const c1 = chromiumCpu(), m1 = await metrics(), w1 = Date.now(), tt1 = await machineT(page);
-  const frames1 = await page.evaluate(() => window.alp85.frames);
-  const wall = (w1 - w0) / 1000;
-  const cpu = (m1.TaskDuration - m0.TaskDuration) / wall;
-  const processes = (c1 - c0) / wall;
-  const script = (m1.ScriptDuration - m0.ScriptDuration) / wall;
-  const realtime = (tt1 - tt0) / CLOCK_HZ / wall;
-  const fps = (frames1 - frames0) / wall;
-  const wasm = readFileSync(join(site, 'alp85.wasm')).length;
-  const js = readFileSync(join(site, 'alp85.js')).length;
-  console.log(JSON.stringify({ wasm_bytes: wasm, js_bytes: js, load_ms: loadMs, unpaced_x: Number(unpaced.toFixed(1)),
-    line_machine_s: Number(((t1 - t0) / CLOCK_HZ).toFixed(3)), realtime_x: Number(realtime.toFixed(3)),
-    fps: Number(fps.toFixed(1)), renderer_busy_share: Number(cpu.toFixed(3)), script_share: Number(script.toFixed(3)), chromium_cpu_share: Number(processes.toFixed(3)) }));
+  const p0 = await page.evaluate(() => window.alp85.pathPoints());
+  const moving = await realTime();
+  if (process.env.ALP85_BENCH_SHOT) await page.screenshot({ path: process.env.ALP85_BENCH_SHOT });
+  if (process.env.ALP85_BENCH_TRACE) {
+    await page.tracing.start({ path: process.env.ALP85_BENCH_TRACE, categories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'toplevel', 'blink', 'cc', 'viz', 'gpu'] });
+    await new Promise((r) => setTimeout(r, 3000));
+    await page.tracing.stop();
+  }
+  moving.toolpath_points = (await page.evaluate(() => window.alp85.pathPoints())) - p0;
+  // Unpaced, eight times: machine time over host time between two of the page's own samples (the
+  // machine's time and the host's instant it was reached), the first right after EXEC. The first
+  // runs include the browser's optimising compile of the hot WebAssembly (V8 runs it first from
+  // its baseline compiler and tiers up the functions that run hot); the median of the last five
+  // is the page's steady speed.
+  // Beside it, per CPU second of the renderer's main thread (CDP ThreadTime), as alp85 bench
+  // thesis counts its CPU seconds: what the page does with the CPU it gets on a shared host.
+  const unpaced = [], unpacedCpu = [], unpacedFps = [];
+  for (let i = 0; i < 8; i++) {
+    await again(0);
+    const m0 = await metrics(), t0 = await machineT(page);
+    const [x, fps] = await page.evaluate((goal) => new Promise((ok) => {
+      const a = window.alp85, t0 = a.t, h0 = a.at, f0 = a.frames;
+      const poll = () => (a.t >= t0 + goal ? ok([(a.t - t0) / 3072000 / ((a.at - h0) / 1000), (a.frames - f0) / ((a.at - h0) / 1000)])
+        : requestAnimationFrame(poll));
+      poll();
+    }), 17.152 * CLOCK_HZ);
+    const t1 = await machineT(page), m1 = await metrics();
+    unpaced.push(Number(x.toFixed(1)));
+    unpacedFps.push(Number(fps.toFixed(1)));
+    unpacedCpu.push(Number(((t1 - t0) / CLOCK_HZ / (m1.ThreadTime - m0.ThreadTime)).toFixed(1)));
+  }
+  // Real time with the board standing at the feed's prompt (H=1000): nothing moves.
+  await again(1, false);
+  await new Promise((r) => setTimeout(r, 1000));
+  const standing = await realTime();
+  rmSync(dir, { recursive: true, force: true });
+  const median = (xs) => [...xs].sort((x, y) => x - y)[Math.floor(xs.length / 2)];
+  const native = execFileSync(alp85, ['bench', 'thesis'], { encoding: 'utf8' }).match(/^physical .*$/m)?.[0];
+  console.log(JSON.stringify({ wasm_bytes: readFileSync(join(site, 'alp85.wasm')).length, js_bytes: readFileSync(join(site, 'alp85.js')).length,
+    load_ms: loadMs, unpaced_x: unpaced, unpaced_median_last5_x: median(unpaced.slice(3)), unpaced_median_last5_x_per_cpu_s: median(unpacedCpu.slice(3)), unpaced_fps: unpacedFps, unpaced_x_per_cpu_s: unpacedCpu,
+    realtime_moving: moving, realtime_standing: standing, native, loadavg: readFileSync('/proc/loadavg', 'utf8').split(' ').slice(0, 3).join(' ') }, null, 1));
 }
 
-// CPU seconds (user + system) of the browser and all its descendants, from /proc.
-function chromiumCpu() {
+// CPU seconds (user + system) of the browser and all its descendants, from /proc, thread by
+// thread ("renderer CrRendererMain": the page's main thread, "renderer Compositor", "gpu-process
+// VizCompositorTh": software compositing, ...).
+function chromiumThreads() {
   const root = browser.process().pid;
   const tick = 100;  // USER_HZ on Linux
-  const all = new Map();
+  const procs = new Map();
+  const stat = (path) => {
+    const text = readFileSync(path, 'utf8');
+    const f = text.slice(text.lastIndexOf(')') + 2).split(' ');
+    return { comm: text.slice(text.indexOf('(') + 1, text.lastIndexOf(')')), ppid: Number(f[1]), cpu: (Number(f[11]) + Number(f[12])) / tick };
+  };
   for (const d of readdirSync('/proc')) {
     if (!/^\d+$/.test(d)) continue;
+    try { procs.set(Number(d), stat(`/proc/${d}/stat`)); } catch { /* gone */ }
+  }
+  const out = new Map();
+  for (const pid of procs.keys()) {
+    let ours = false;
+    for (let q = pid, hops = 0; q && hops < 10; q = procs.get(q)?.ppid, hops++) if (q === root) { ours = true; break; }
+    if (!ours) continue;
     try {
-      const stat = readFileSync(`/proc/${d}/stat`, 'utf8');
-      const f = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
-      all.set(Number(d), { ppid: Number(f[1]), cpu: (Number(f[11]) + Number(f[12])) / tick });
+      const type = readFileSync(`/proc/${pid}/cmdline`, 'utf8').match(/--type=([a-z-]+)/)?.[1] ?? 'browser';
+      for (const t of readdirSync(`/proc/${pid}/task`)) {
+        const s = stat(`/proc/${pid}/task/${t}/stat`);
+        out.set(`${pid}/${t}`, { name: `${type} ${s.comm === 'chromium' ? 'main' : s.comm}`, cpu: s.cpu });
+      }
     } catch { /* gone */ }
   }
-  let sum = 0;
-  for (const [pid, p] of all) {
-    for (let q = pid, hops = 0; q && hops < 10; q = all.get(q)?.ppid, hops++)
-      if (q === root) { sum += p.cpu; break; }
-  }
-  return sum;
+  return out;
+}
+// The share of a core each kind of thread took between two readings, the largest first.
+function threadShares(before, after, wall) {
+  const by = new Map();
+  for (const [k, v] of after) by.set(v.name, (by.get(v.name) ?? 0) + (v.cpu - (before.get(k)?.cpu ?? 0)) / wall);
+  return Object.fromEntries([...by].filter(([, v]) => v >= 0.005).sort((x, y) => y[1] - x[1]).map(([k, v]) => [k, Number(v.toFixed(3))]));
 }
