@@ -15,7 +15,12 @@ GRD, where a set-up at a join took the tick) to the next tick. In it:
     and placement arithmetic, and at a chord's end the join (the copy of the set-up made ahead, or
     the set-up itself when it could not be made ahead) and the next vertex when it was not ready.
 Columns: feed, then for the line and the arc the average sample work and sample work + jobs
-(T-states a sample), and their largest; the DDA's T-states an iteration.
+(T-states a sample), the DDA's T-states an iteration, the largest sample work and work + jobs, and
+the placement's arithmetic within the sample work (T-states a sample, averaged): the crossing's
+division (SSMP, from its LHLD KST after eq. 4 to the XRA A after SHLD PDN) and WOUT up to its wait
+or its output (the counter's read and rewind), the pulse's place the paper's software servo would
+take care of (docs/contours.md). A summary of each run (the waits, the 95th percentile) goes to
+standard error.
 
   python3 fig10_measure.py BUILD_DIR WORKDIR > docs/contours/fig10.csv
 """
@@ -29,11 +34,11 @@ A = os.path.join(BUILD, 'bin', 'alp85')
 LST = open(os.path.join(BUILD, 'firmware', 'master', 'master.lst')).read().splitlines()
 
 
-def addr(pattern, after=0):
-    """The address of the first listing line whose source matches pattern, plus after."""
+def addr(pattern, after=0, start='0000'):
+    """The address of the first listing line at or after start whose source matches pattern, plus after."""
     for ln in LST:
         m = re.match(r' +([0-9A-F]{4}) [0-9A-F]+ +[0-9]+ +(.*)$', ln)
-        if m and re.match(pattern, m.group(2)):
+        if m and int(m.group(1), 16) >= int(start, 16) and re.match(pattern, m.group(2)):
             return '%04X' % (int(m.group(1), 16) + after)
     raise SystemExit(f'fig10_measure.py: {pattern!r} not in master.lst')
 
@@ -53,6 +58,9 @@ GRD = addr(r'GRD:')
 W0 = addr(r'LXI\s+D,-20\b')            # WOUT's wait loop starts
 W1 = addr(r'WO1:', 4)                     # ... and ends (its JMP STOUT)
 RUNJ = addr(r'RUNJ:')
+WOUT, STOUT = addr(r'WOUT:'), addr(r'STOUT:')
+DIV0 = addr(r'LHLD\s+KST\s+; x\* crossed')      # the crossing's division ...
+DIV1 = addr(r'SHLD\s+PDN', 3, start=addr(r'PD4:'))  # ... to its XRA A after SHLD PDN
 RUNJ_RET = addrs(r'(\w+:\s+)?C(ALL|NZ)\s+RUNJ\b', 3)
 
 
@@ -64,9 +72,10 @@ def measure(nc_text, name, skip=150, n=400, at='SCHRD'):
     L = ['motor ideal', 'monitor', 'firmware thesis-fixed', 'firmware master', f'load {name}.hex', 'reset',
          'wait display "-ALP 85-" timeout 1s', 'type R 7 3 0 0 0 EXEC', 'wait display "P=-     " timeout 100ms', 'type 1',
          f'break {at}', 'type EXEC'] + (['run 60s'] if at != 'SCHRD' else []) + ['delete all']
-    L += [f'break 0{a}H' for a in [STICK, TICK, GRD, W0, W1, RUNJ] + RUNJ_RET]
-    # each sample: STICK, its tick, and when they come a pulse's wait (2) and a job (2)
-    for i in range(4 * (skip + n + 2)):
+    L += [f'break 0{a}H' for a in [STICK, TICK, GRD, W0, W1, RUNJ, WOUT, STOUT, DIV0, DIV1] + RUNJ_RET]
+    # each sample: STICK, its tick, and when they come the division (2), WOUT and its wait (3),
+    # the output, a job (2)
+    for i in range(10 * (skip + n + 2)):
         L += ['run 1s', 'print time']
     open(f'{name}.alp', 'w').write('\n'.join(L) + '\n')
     r = subprocess.run([A, 'script', '-v', f'{name}.alp', '--out-dir', os.path.join(WORK, 'out')], capture_output=True, text=True)
@@ -80,14 +89,22 @@ def measure(nc_text, name, skip=150, n=400, at='SCHRD'):
             ev.append((cur, int(t)))
             cur = None
     ticks = [i for i, (a, _) in enumerate(ev) if a in (TICK, GRD)]
-    work, total, period, pwait = [], [], [], []
+    work, total, period, pwait, place = [], [], [], [], []
     for i0, i1 in zip(ticks, ticks[1:]):
         t0, t1 = ev[i0][1], ev[i1][1]
-        end, wait, jobs, w_at, j_at = t1, 0, 0, None, None
+        end, wait, jobs, w_at, j_at, pl, p_at = t1, 0, 0, None, None, 0, None
         for a, t in ev[i0 + 1:i1]:
             if a == STICK:
                 end = t
+            elif a in (DIV0, WOUT):
+                p_at = t
+            elif a in (DIV1, STOUT) and p_at is not None:
+                pl += t - p_at
+                p_at = None
             elif a == W0:
+                if p_at is not None:
+                    pl += t - p_at
+                    p_at = None
                 w_at = t
             elif a == W1 and w_at is not None:
                 wait += t - w_at
@@ -102,14 +119,16 @@ def measure(nc_text, name, skip=150, n=400, at='SCHRD'):
         total.append(busy)
         period.append(t1 - t0)
         pwait.append(wait)
+        place.append(pl)
     w, tt = work[skip:skip + n], total[skip:skip + n]
     if len(w) < n:
         raise SystemExit(f'fig10_measure.py: {name}: {len(w)} samples measured, {n} wanted')
-    p, pw = period[skip:skip + n], pwait[skip:skip + n]
+    p, pw, pp = period[skip:skip + n], pwait[skip:skip + n], place[skip:skip + n]
     print(f'{name}: {n} samples, tick to tick {sum(p) / n:.0f} T-states on average; work {sum(w) / n:.0f}, '
           f'jobs {(sum(tt) - sum(w)) / n:.0f}, the pulse\'s wait {sum(pw) / n:.0f}, the tick\'s wait '
-          f'{(sum(p) - sum(tt) - sum(pw)) / n:.0f}; work 95 % below {sorted(w)[int(0.95 * n)]}', file=sys.stderr)
-    return sum(w) / n, max(w), sum(tt) / n, max(tt)
+          f'{(sum(p) - sum(tt) - sum(pw)) / n:.0f}; work 95 % below {sorted(w)[int(0.95 * n)]}; the placement\'s '
+          f'arithmetic {sum(pp) / n:.0f}', file=sys.stderr)
+    return sum(w) / n, max(w), sum(tt) / n, max(tt), sum(pp) / n
 
 
 def dda():
@@ -126,9 +145,10 @@ def dda():
 
 if __name__ == '__main__':
     d = dda()
-    print('feed,line_work,line_jobs,arc_work,arc_jobs,dda,line_work_max,line_jobs_max,arc_work_max,arc_jobs_max')
+    print('feed,line_work,line_jobs,arc_work,arc_jobs,dda,line_work_max,line_jobs_max,arc_work_max,arc_jobs_max,'
+          'line_place,arc_place')
     for F in (300, 750, 1200, 1500):
         ln = measure(f'(METHOD SAMPLING)\nG21 G90\nG01 X60 Y25 F{F}\n', f'ml{F}')
         ar = measure(f'(METHOD SAMPLING)\nG21 G90\nG00 X70 Y50\nG03 X70 Y50 I-20 J0 F{F}\n', f'ma{F}', skip=5, n=1200, at='SARC')
         print(f'{F},{round(ln[0])},{round(ln[2])},{round(ar[0])},{round(ar[2])},{round(d)},'
-              f'{ln[1]},{ln[3]},{ar[1]},{ar[3]}', flush=True)
+              f'{ln[1]},{ln[3]},{ar[1]},{ar[3]},{round(ln[4])},{round(ar[4])}', flush=True)

@@ -7,7 +7,8 @@
 //           ALP 85's 16.16 arithmetic (dX' = 2^-16 step) at its largest radius, 2047 steps;
 //   Fig. 10: the time occupation rate measured on the emulated 8085 (fig10.csv, written by
 //           tests/master/fig10_measure.py): T-states of a 2 ms sample's own work / 6144, and for the
-//           arc its work with the look-ahead jobs (the next chord's set-up) run in its spare time.
+//           arc its work with the look-ahead jobs (the next chord's set-up) run in its spare time, for
+//           the line its work without the pulse's placement (the paper's software servo's part).
 //
 //   sampling_figures OUT_DIR FIG10_CSV
 #include <cmath>
@@ -79,9 +80,10 @@ int main(int argc, char** argv) {
         both(f9, out, "fig9");
 
         Chart f10{.title = "Fig. 10: time occupation rate, 2 ms period, 8085 at 3.072 MHz", .x_label = "feedrate (mm/min)",
-                  .y_label = "occupation rate", .series = {}};
+                  .y_label = "occupation rate", .series = {}, .height = 600};
         Series l10{"sampling, line", {}, true, false}, r10{"sampling, arc R 20 mm C_R 3", {}, true, false},
-            j10{"sampling, arc + look-ahead jobs", {}, true, true}, d10{"DDA (tests/master/dda.asm), every 2 ms", {}, true, true};
+            j10{"sampling, arc + look-ahead jobs", {}, true, true},
+            p10{"sampling, line without the pulse's placement", {}, true, true}, d10{"DDA (tests/master/dda.asm), every 2 ms", {}, true, true};
         std::ifstream in(argv[2]);
         if (!in) throw std::runtime_error(std::string("cannot read ") + argv[2]);
         // columns by name (fig10_measure.py's header): the feed, each sample's own work and work + jobs
@@ -101,7 +103,7 @@ int main(int argc, char** argv) {
             throw std::runtime_error(std::string(argv[2]) + ": no column " + name);
         };
         const std::size_t cf = column("feed"), cl = column("line_work"), ca = column("arc_work"), cj = column("arc_jobs"),
-                          cd = column("dda");
+                          cd = column("dda"), cp = column("line_place");
         for (int row = 2; std::getline(in, line); ++row) {
             const auto cells = split(line);
             if (cells.size() != header.size())
@@ -111,9 +113,12 @@ int main(int argc, char** argv) {
             l10.points.push_back({f, std::stod(cells[cl]) / 6144});
             r10.points.push_back({f, std::stod(cells[ca]) / 6144});
             j10.points.push_back({f, std::stod(cells[cj]) / 6144});
+            p10.points.push_back({f, (std::stod(cells[cl]) - std::stod(cells[cp])) / 6144});
             d10.points.push_back({f, std::stod(cells[cd]) / 6144});
         }
-        f10.series = {l10, r10, j10, d10};
+        // an unnamed point at 0: the rate's axis from 0, the legend between the DDA and the sampling
+        const Series zero{"", {{d10.points.empty() ? 0.0 : d10.points.front().x, 0.0}}, false, false};
+        f10.series = {l10, r10, j10, p10, d10, zero};
         f10.legend = Chart::Legend::Right;  // beside the plot: the DDA runs along the bottom
         both(f10, out, "fig10");
     } catch (const std::exception& e) {
