@@ -14,12 +14,13 @@ GRD, where a set-up at a join took the tick) to the next tick. In it:
   - the rest is the sample's own work: the tick's rewind, the ramp, eqs. 4-6, the pulse's output
     and placement arithmetic, and at a chord's end the join (the copy of the set-up made ahead, or
     the set-up itself when it could not be made ahead) and the next vertex when it was not ready.
-Columns: feed, then for the line and the arc the average sample work and sample work + jobs
-(T-states a sample), the DDA's T-states an iteration, the largest sample work and work + jobs, and
-the placement's arithmetic within the sample work (T-states a sample, averaged): the crossing's
-division (SSMP, from its LHLD KST after eq. 4 to the XRA A after SHLD PDN) and WOUT up to its wait
-or its output (the counter's read and rewind), the pulse's place the paper's software servo would
-take care of (docs/contours.md). A summary of each run (the waits, the 95th percentile) goes to
+Columns (T-states a sample, averaged, unless _max): feed (mm/min); line_work, line_jobs (the sample
+work, and the sample work + jobs), arc_work, arc_jobs; dda (one iteration of dda.asm); the largest
+of each, line_work_max, line_jobs_max, arc_work_max, arc_jobs_max; line_place, arc_place: the
+placement's arithmetic within the sample work, the crossing's division (SSMP, from its LHLD KST
+after eq. 4 to the XRA A after SHLD PDN) and WOUT up to its wait or its output (the counter's read
+and rewind): the pulse's place, which on the paper's machine its software servo takes care of
+(docs/contours.md). A summary of each run (the waits, the 95th percentile) goes to
 standard error.
 
   python3 fig10_measure.py BUILD_DIR WORKDIR > docs/contours/fig10.csv
@@ -29,7 +30,12 @@ import re
 import subprocess
 import sys
 
+if len(sys.argv) != 3:
+    raise SystemExit('usage: python3 fig10_measure.py BUILD_DIR WORKDIR > docs/contours/fig10.csv')
 BUILD, WORK = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+for need in ('bin/alp85', 'firmware/master/master.lst'):
+    if not os.path.isfile(os.path.join(BUILD, need)):
+        raise SystemExit(f'fig10_measure.py: {os.path.join(BUILD, need)} missing: build alp85 first')
 A = os.path.join(BUILD, 'bin', 'alp85')
 LST = open(os.path.join(BUILD, 'firmware', 'master', 'master.lst')).read().splitlines()
 
