@@ -6,7 +6,9 @@
 //           against C_R, for the paper's M = 20 (R = 1.049 m at dX = 1 um) and M_R = 10, and for the
 //           ALP 85's 16.16 arithmetic (dX' = 2^-16 step) at its largest radius, 2047 steps;
 //   Fig. 10: the time occupation rate measured on the emulated 8085 (fig10.csv, written by
-//           tests/master/fig10_measure.py): T-states of a 2 ms sample's work / 6144.
+//           tests/master/fig10_measure.py): T-states of a 2 ms sample's own work / 6144, and for the
+//           arc its work with the look-ahead jobs (the next chord's set-up) run in its spare time, for
+//           the line its work without the pulse's placement (the paper's software servo's part).
 //
 //   sampling_figures OUT_DIR FIG10_CSV
 #include <cmath>
@@ -14,6 +16,7 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -77,24 +80,46 @@ int main(int argc, char** argv) {
         both(f9, out, "fig9");
 
         Chart f10{.title = "Fig. 10: time occupation rate, 2 ms period, 8085 at 3.072 MHz", .x_label = "feedrate (mm/min)",
-                  .y_label = "occupation rate", .series = {}};
+                  .y_label = "occupation rate", .series = {}, .height = 600};
         Series l10{"sampling, line", {}, true, false}, r10{"sampling, arc R 20 mm C_R 3", {}, true, false},
-            d10{"DDA (tests/master/dda.asm), every 2 ms", {}, true, true};
+            j10{"sampling, arc + look-ahead jobs", {}, true, true},
+            p10{"sampling, line without the pulse's placement", {}, true, true}, d10{"DDA (tests/master/dda.asm), every 2 ms", {}, true, true};
         std::ifstream in(argv[2]);
+        if (!in) throw std::runtime_error(std::string("cannot read ") + argv[2]);
+        // columns by name (fig10_measure.py's header): the feed, each sample's own work and work + jobs
+        // (T-states a sample), the DDA's iteration
+        const auto split = [](const std::string& text) {
+            std::vector<std::string> cells;
+            std::istringstream s(text);
+            for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+            return cells;
+        };
         std::string line;
-        std::getline(in, line);  // header: feed,line_t,arc_t,dda_t
-        while (std::getline(in, line)) {
-            std::istringstream s(line);
-            double f = 0, lt = 0, at = 0, dt = 0;
-            char c = 0;
-            if (s >> f >> c >> lt >> c >> at >> c >> dt) {
-                l10.points.push_back({f, lt / 6144});
-                r10.points.push_back({f, at / 6144});
-                d10.points.push_back({f, dt / 6144});
-            }
+        std::getline(in, line);
+        const auto header = split(line);
+        const auto column = [&](const char* name) {
+            for (std::size_t i = 0; i < header.size(); ++i)
+                if (header[i] == name) return i;
+            throw std::runtime_error(std::string(argv[2]) + ": no column " + name);
+        };
+        const std::size_t cf = column("feed"), cl = column("line_work"), ca = column("arc_work"), cj = column("arc_jobs"),
+                          cd = column("dda"), cp = column("line_place");
+        for (int row = 2; std::getline(in, line); ++row) {
+            const auto cells = split(line);
+            if (cells.size() != header.size())
+                throw std::runtime_error(std::string(argv[2]) + ":" + std::to_string(row) + ": " + std::to_string(cells.size()) +
+                                         " columns, the header has " + std::to_string(header.size()));
+            const double f = std::stod(cells[cf]);
+            l10.points.push_back({f, std::stod(cells[cl]) / 6144});
+            r10.points.push_back({f, std::stod(cells[ca]) / 6144});
+            j10.points.push_back({f, std::stod(cells[cj]) / 6144});
+            p10.points.push_back({f, (std::stod(cells[cl]) - std::stod(cells[cp])) / 6144});
+            d10.points.push_back({f, std::stod(cells[cd]) / 6144});
         }
-        f10.series = {l10, r10, d10};
-        f10.legend = Chart::Legend::BottomRight;
+        // an unnamed point at 0: the rate's axis from 0, the legend between the DDA and the sampling
+        const Series zero{"", {{d10.points.empty() ? 0.0 : d10.points.front().x, 0.0}}, false, false};
+        f10.series = {l10, r10, j10, p10, d10, zero};
+        f10.legend = Chart::Legend::Right;  // beside the plot: the DDA runs along the bottom
         both(f10, out, "fig10");
     } catch (const std::exception& e) {
         std::fprintf(stderr, "sampling_figures: %s\n", e.what());
