@@ -453,7 +453,11 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
             ExprError err;
             const auto e = Expr::parse(text, d_.program(), err, Expr::Names::SymbolsFirst, tcol - 1, &vars_);
             if (!e) return error(err.col, err.message);
-            out = e->eval(d_.machine());
+            try {
+                out = e->eval(d_.machine());
+            } catch (const ExprError& x) {  // 1/0, say: an error of this line, not of the session
+                return error(tcol + x.col - 1, x.message);
+            }
             if (out < 0 || out > 0xFFFF) return error(tcol, fmt::format("address {} is outside 0000H-FFFFH", out));
             return {};
         };

@@ -184,7 +184,11 @@ std::string Console::cmd_x(std::string_view a, int col) {
         ExprError err;
         const auto e = Expr::parse(a, d_.program(), err, Expr::Names::SymbolsFirst, col - 1, &vars_);
         if (!e) return error(err.col, err.message);
-        addr = static_cast<std::uint16_t>(e->eval(d_.machine()));
+        try {
+            addr = static_cast<std::uint16_t>(e->eval(d_.machine()));
+        } catch (const ExprError& x) {
+            return error(col + x.col - 1, x.message);
+        }
     }
     return examine(addr, count, x_format_, x_unit_, next_x_);
 }

@@ -174,6 +174,9 @@ TEST_F(Thesis, ErrorsSayWhatAndWhereAndTheSessionGoesOn) {
     EXPECT_NE(err("break NOSUCH").find("column 7: error: unknown symbol 'NOSUCH'"), std::string::npos);
     EXPECT_NE(err("p word[YAC").find("column 11: error: expected ']'"), std::string::npos);
     EXPECT_NE(err("p 1/0").find("column 4: error: division by zero"), std::string::npos);
+    // an address that cannot be evaluated (found by debug_fuzz: it ended the process)
+    EXPECT_NE(err("watch byte[10/0H]").find("column 14: error: division by zero"), std::string::npos);
+    EXPECT_NE(err("x/2x 1/0").find("column 7: error: division by zero"), std::string::npos);
     EXPECT_NE(err("p 0800").find("column 3: error: '0800' is ambiguous"), std::string::npos);
     EXPECT_NE(err("watch port 300").find("column 12: error: bad port '300'"), std::string::npos);
     EXPECT_NE(err("x/8q YAC").find("unknown format letter 'q'"), std::string::npos);
