@@ -96,6 +96,14 @@ document.addEventListener('keyup', (e) => {
   if (name) keyButtons.get(name)?.classList.remove('down');
 });
 
+// The slow parts (the status line, the axes' figures, the path's canvas, the log) are drawn
+// together, at most 4 times a second. Each frame that changes the picture costs every Chromium
+// process again (without a GPU the compositing is the CPU's), so their changes share a frame
+// rather than take one each (docs/web.md: the page at real time).
+const SLOW_MS = 250;
+let slowAt = -Infinity, slowDrawn = false;
+const slowDue = (now) => now - slowAt >= SLOW_MS;
+
 // ---- the machine tool: X-Y table (ideal line, toolpath, tool), Z gauge, the axes' figures -------
 // Layers, one over the other: below, a canvas with the grid and the toolpath, drawn once and
 // extended 4 times a second (redrawn whole only when the view moves: a changed canvas is sent to
@@ -111,8 +119,7 @@ const toolDot = $('tool-dot');
 let path = new Float64Array(1 << 16), pathLen = 0;  // x, y pairs in table mm
 // The tool is drawn at whole CSS pixels: a move smaller than a pixel changes nothing to draw.
 const chord = $('table-chord');
-const FLUSH_MS = 250;
-let bounds = null, view = null, drawnPoints = 0, canvasPoints = 0, flushedAt = 0, lineKey = '', toolPx = [NaN, NaN], cssScale = 1, tableAt = 0;
+let bounds = null, view = null, drawnPoints = 0, canvasPoints = 0, lineKey = '', toolPx = [NaN, NaN], cssScale = 1;
 new ResizeObserver(() => {
   const dpr = window.devicePixelRatio || 1;
   const w = Math.round(canvas.clientWidth * dpr), h = Math.round(w * 3 / 4);
@@ -128,8 +135,8 @@ function grow(x, y) {
   if (y < bounds.y0) bounds.y0 = y; else if (y > bounds.y1) bounds.y1 = y;
 }
 function resetPath() { pathLen = 0; bounds = null; view = null; drawnPoints = 0; lineKey = ''; toolPx = [NaN, NaN]; }
-// The path's points not yet on the canvas are drawn there 4 times a second.
-function flushRecent(now) {
+// The path's points not yet on the canvas are drawn there with the other slow parts.
+function flushRecent() {
   if (drawnPoints > canvasPoints + 1) {
     ctx.strokeStyle = '#c0392b'; ctx.lineWidth = 2; ctx.lineJoin = 'round'; ctx.beginPath();
     const from = Math.max(0, canvasPoints - 1);
@@ -138,7 +145,7 @@ function flushRecent(now) {
     ctx.stroke();
   }
   canvasPoints = drawnPoints;
-  flushedAt = now;
+  slowDrawn = true;
 }
 // The stroke from the canvas's last point to the tool (whole CSS pixels, as the tool).
 let chordShown = '';
@@ -157,11 +164,10 @@ function tableChanged(now) {
   if (!view || S[SNAP.pathSize] < pathLen / 2) return true;
   if (Math.round(X(S[SNAP.axes + 1]) * cssScale) !== toolPx[0] || Math.round(Y(S[SNAP.axes + 5]) * cssScale) !== toolPx[1]) return true;
   if ((S[SNAP.ideal] === 1) !== (lineKey !== '-') || (S[SNAP.ideal] === 1 && lineKey !== lineText())) return true;
-  return S[SNAP.pathSize] !== canvasPoints && now - tableAt >= FLUSH_MS;
+  return S[SNAP.pathSize] !== canvasPoints && slowDue(now);
 }
 function drawTable(now) {
   if (!tableChanged(now)) return;
-  tableAt = now;
   const n = S[SNAP.pathSize];
   if (n < pathLen / 2) resetPath();
   if (n > pathLen / 2) {
@@ -194,7 +200,7 @@ function drawTable(now) {
     drawGrid();
   }
   drawnPoints = pathLen / 2;
-  if (drawnPoints > canvasPoints && (canvasPoints === 0 || now - flushedAt >= FLUSH_MS)) flushRecent(now);
+  if (drawnPoints > canvasPoints && (canvasPoints === 0 || slowDue(now))) flushRecent();
   // the ideal line over the toolpath, so that both show where they coincide
   const key = hasLine ? lineText() : '-';
   if (key !== lineKey) {
@@ -225,19 +231,19 @@ function drawGrid() {  // the grid, 5, 10 or 50 mm, on a clean lower canvas
   ctx.fillStyle = '#777'; ctx.font = '11px system-ui';
   ctx.fillText(`${step} mm grid`, 6, canvas.height - 6);
 }
-// The axes' figures, 10 times a second while they change (readable, cheap): a cell is written
-// only when its figure changed; the Z gauge is scaled by the compositor.
+// The axes' figures, with the other slow parts while they change: a cell is written only when its
+// figure changed; the Z gauge is scaled by the compositor.
 const cells = ['x', 'y', 'z'].map((name) => ['.steps', '.mm', '.count', '.lost'].map((c) => $(`axis-${name}`).querySelector(c)));
 const shownAxes = new Float64Array(12).fill(NaN);
-let axesAt = 0, shownZ = NaN;
+let shownZ = NaN;
 function axesChanged(now) {
-  if (now - axesAt < 100) return false;
+  if (!slowDue(now)) return false;
   for (let i = 0; i < 12; i++) if (S[SNAP.axes + i] !== shownAxes[i]) return true;
   return false;
 }
 function drawAxes(now) {
   if (!axesChanged(now)) return;
-  axesAt = now;
+  slowDrawn = true;
   for (let i = 0; i < 12; i++) {
     const v = S[SNAP.axes + i];
     if (v === shownAxes[i]) continue;
@@ -254,17 +260,17 @@ function drawAxes(now) {
 
 // ---- running: the pacer is the board's; the page gives each frame a slice of host time --------
 let speed = 1;
-let lastStatus = 0, runSince = performance.now(), tSince = 0, shownRun = '';
+let runSince = performance.now(), tSince = 0, shownRun = '';
 let statusShown = '';
 function statusDue(now) {  // 4 times a second while running, and when the run starts or stops
-  return now - lastStatus >= 250 && (S[SNAP.running] === 1 || statusShown !== `${S[SNAP.running]} ${S[SNAP.stops]}`);
+  return slowDue(now) && (S[SNAP.running] === 1 || statusShown !== `${S[SNAP.running]} ${S[SNAP.stops]}`);
 }
 function status(now) {
   if (!statusDue(now)) return;
   statusShown = `${S[SNAP.running]} ${S[SNAP.stops]}`;
   const t = S[SNAP.t], running = S[SNAP.running] === 1;
   const ratio = (t - tSince) / CLOCK_HZ / ((now - runSince) / 1000);
-  runSince = now; tSince = t; lastStatus = now;
+  runSince = now; tSince = t; slowDrawn = true;
   const stop = running ? '' : board.stopText();
   $('status').textContent = `${running ? 'running' : 'stopped' + (stop ? ` (${stop})` : '')} · ${(t / CLOCK_HZ).toFixed(3)} s · ` +
     `${running ? ratio.toFixed(ratio < 10 ? 2 : 0) + '× real time' : ''} · PC ${S[SNAP.pc].toString(16).toUpperCase().padStart(4, '0')}H`;
@@ -274,7 +280,7 @@ function status(now) {
 // The log keeps its last 200 lines and is written to the page at most four times a second (a
 // table at its end stop says so at every step).
 const logLines = [];
-let logDirty = false, logAt = 0;
+let logDirty = false;
 function log(lines) {
   if (!lines.length) return;
   logLines.push(...lines);
@@ -283,12 +289,12 @@ function log(lines) {
   wantDraw();
 }
 function drawLog(now) {
-  if (!logDirty || now - logAt < 250) return;
+  if (!logDirty || !slowDue(now)) return;
   const l = $('log');
   l.textContent = logLines.join('\n') + '\n';
   l.scrollTop = l.scrollHeight;
   logDirty = false;
-  logAt = now;
+  slowDrawn = true;
 }
 
 // ---- the loop: the board runs in ticks, 60 a second against the host clock (as fast as possible:
@@ -298,7 +304,7 @@ function drawLog(now) {
 const TICK_MS = 1000 / 60;
 const next = new MessageChannel();
 next.port1.onmessage = tick;
-let tickDue = performance.now(), drawPending = false;
+let tickDue = performance.now(), drawPending = false, wantedAt = 0;
 function tick() {
   const now = performance.now();
   board.frame(speed === 0 ? UNPACED_BUDGET_S : FRAME_BUDGET_S);
@@ -308,7 +314,7 @@ function tick() {
   a.at = performance.now();
   a.ticks++;
   if (S[SNAP.log] > 0) log(board.takeLog());
-  if (S[SNAP.displayChanges] !== shownChanges || tableChanged(now) || axesChanged(now) || statusDue(now) || (logDirty && now - logAt >= 250))
+  if (S[SNAP.displayChanges] !== shownChanges || tableChanged(now) || axesChanged(now) || statusDue(now) || (logDirty && slowDue(now)))
     wantDraw();
   if (speed === 0) {
     next.port2.postMessage(0);
@@ -321,16 +327,20 @@ function tick() {
 function wantDraw() {
   if (drawPending) return;
   drawPending = true;
+  wantedAt = performance.now();
   requestAnimationFrame(draw);
 }
+// A frame is late when it is drawn more than two display frames after the change it shows.
 function draw(now) {
   drawPending = false;
   window.alp85.frames++;
+  if (now - wantedAt > 2 * TICK_MS) window.alp85.late++;
   drawDisplay();
   drawTable(now);
   drawAxes(now);
   status(now);
   drawLog(now);
+  if (slowDrawn) { slowAt = now; slowDrawn = false; }
 }
 
 $('run').addEventListener('click', () => { if (board.running()) board.pause(); else { board.start(); board.setSpeed(speed); } });
@@ -469,5 +479,5 @@ $('demo-next').addEventListener('click', async () => {
 showDemo();
 
 boot('thesis-fixed');
-window.alp85 = { board, ready: true, ticks: 0, frames: 0, t: 0, at: 0, pathPoints: () => pathLen / 2 };
+window.alp85 = { board, ready: true, ticks: 0, frames: 0, late: 0, t: 0, at: 0, pathPoints: () => pathLen / 2 };
 tick();

@@ -11,6 +11,7 @@ constexpr double kMinMove = 0.005; // mm between recorded points
 void Toolpath::clear() {
     points_.clear();
     have_cmd_ = false;
+    cleared_ = true;
     anchor_.reset();
 }
 
@@ -41,7 +42,7 @@ void Toolpath::observe(const debug::ToolSample& s, const Machine& m) {
         return;
     }
     if (cmd != last_cmd_) {
-        if (s.t - last_change_ >= kIdle) {  // a move starts from where the table stood
+        if (cleared_ || s.t - last_change_ >= kIdle) {  // a move starts from where the table stood
             if (const auto v = read_vars(m)) {
                 anchor_ = last_cmd_;
                 anchor_vars_ = *v;
@@ -49,6 +50,7 @@ void Toolpath::observe(const debug::ToolSample& s, const Machine& m) {
         }
         last_cmd_ = cmd;
         last_change_ = s.t;
+        cleared_ = false;
     }
 }
 

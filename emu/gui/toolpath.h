@@ -6,6 +6,10 @@
 // steps from where it stood. A move is taken to start when the commanded X or Y steps change after
 // at least kIdle of simulated time without a change; the line then runs from the commanded
 // position before that change. Before any move the line is drawn from where the table stands.
+// After clear() (a boot, a reset, a restored snapshot) the table's past is unknown: the first change
+// seen starts a move, as the table stood at a prompt when the path was cleared. (Without this, a
+// move begun less than kIdle after a restore had no start, and its line followed the table.)
+// A snapshot restored in the middle of a move draws that move's line from where the table was then.
 // Not done: a feed so slow that one step takes longer than kIdle re-anchors the line at each step.
 #pragma once
 
@@ -55,6 +59,7 @@ private:
     std::array<std::int64_t, 2> last_cmd_{};
     std::uint64_t last_change_ = 0;
     bool have_cmd_ = false;
+    bool cleared_ = true;  // no change seen since clear(): the first one starts a move
     std::optional<std::array<std::int64_t, 2>> anchor_;  // commanded steps at the move's start
     std::array<std::int32_t, 4> anchor_vars_{};
 };

@@ -105,6 +105,38 @@ TEST(Toolpath, TheIdealLineStartsWhereTheTableStoodWhenTheMoveBegan) {
     EXPECT_EQ(path.points().size(), 2u);
 }
 
+// A path cleared (a restored snapshot at the feed prompt, then EXEC at once): the first step comes
+// well within kIdle of the first sample, and still begins the move; the line stays where the move
+// began while the table goes on.
+TEST(Toolpath, AMoveBegunRightAfterAClearStartsWhereTheTableStood) {
+    Machine m;
+    Toolpath path;
+    path.set_variables(0x1B00);
+    for (auto [a, v] : {std::pair{0x1B00, 100}, {0x1B03, 50}, {0x1B06, 300}, {0x1B09, 200}}) {
+        m.poke(static_cast<std::uint16_t>(a), static_cast<std::uint8_t>(v & 0xFF));
+        m.poke(static_cast<std::uint16_t>(a + 1), static_cast<std::uint8_t>(v >> 8));
+    }
+    for (int round = 0; round < 2; ++round) {  // and again after a second clear
+        path.clear();
+        const std::int64_t at = 40 * round;  // where the table stands: 0, then 40 steps (2 mm)
+        debug::ToolSample s;
+        s.t = Toolpath::kIdle * 10 * static_cast<std::uint64_t>(round);
+        s.axes[0].commanded = at;
+        path.observe(s, m);
+        for (int step = 1; step <= 3; ++step) {  // steps 3 ms apart, far less than kIdle
+            s.t += board::tstates_from_ms(3);
+            s.axes[0].commanded = at + step;
+            path.observe(s, m);
+            const auto line = path.ideal(m);
+            ASSERT_TRUE(line);
+            EXPECT_TRUE(line->started);
+            EXPECT_DOUBLE_EQ(line->from.x, 0.05 * static_cast<double>(at));
+            EXPECT_DOUBLE_EQ(line->to.x, 0.05 * static_cast<double>(at) + 10);  // (300 - 100) steps
+            EXPECT_DOUBLE_EQ(line->to.y, 7.5);                                   // (200 - 50) steps
+        }
+    }
+}
+
 // The window on a 1366x768 laptop: the largest size that leaves room for a title bar and a panel,
 // with the 1280x800 layout's proportions: 708 = 768 - 60 rows, 708 / 800 = 0.885, 0.885 * 1280 = 1133.
 TEST(Window, TheFirstSizeFitsA1366x768Screen) {

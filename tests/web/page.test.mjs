@@ -314,13 +314,13 @@ async function figures(page, loadMs) {
   // second) and the frames drawn (only when a tick changed what the page shows).
   const realTime = async () => {
     const c0 = chromiumThreads(), m0 = await metrics(), w0 = Date.now(), t0 = await machineT(page);
-    const [k0, f0] = await page.evaluate(() => [window.alp85.ticks, window.alp85.frames]);
+    const [k0, f0, l0] = await page.evaluate(() => [window.alp85.ticks, window.alp85.frames, window.alp85.late]);
     await new Promise((r) => setTimeout(r, 10000));
     const c1 = chromiumThreads(), m1 = await metrics(), w1 = Date.now(), t1 = await machineT(page);
-    const [k1, f1] = await page.evaluate(() => [window.alp85.ticks, window.alp85.frames]);
+    const [k1, f1, l1] = await page.evaluate(() => [window.alp85.ticks, window.alp85.frames, window.alp85.late]);
     const wall = (w1 - w0) / 1000;
     const r2 = (x) => Number(x.toFixed(3));
-    return { realtime_x: r2((t1 - t0) / CLOCK_HZ / wall), ticks_per_s: Number(((k1 - k0) / wall).toFixed(1)), frames_drawn_per_s: Number(((f1 - f0) / wall).toFixed(1)),
+    return { realtime_x: r2((t1 - t0) / CLOCK_HZ / wall), ticks_per_s: Number(((k1 - k0) / wall).toFixed(1)), frames_drawn_per_s: Number(((f1 - f0) / wall).toFixed(1)), frames_late: l1 - l0,
       chromium_cpu_share: r2([...c1].reduce((sum, [k, v]) => sum + v.cpu - (c0.get(k)?.cpu ?? 0), 0) / wall), threads: threadShares(c0, c1, wall), renderer_busy_share: r2((m1.TaskDuration - m0.TaskDuration) / wall),
       script_share: r2((m1.ScriptDuration - m0.ScriptDuration) / wall) };
   };
