@@ -76,15 +76,20 @@ TEST(Presser, AShortClickIsHeldForTheDebounce) {
     EXPECT_FALSE(m.keypad().is_pressed(periph::Key::K7));
 }
 
-TEST(Toolpath, TheIdealLineStartsWhereTheTableStoodWhenTheMoveBegan) {
-    Machine m;
-    Toolpath path;
+// The thesis firmware's line: X1,Y1 = 100,50; X2,Y2 = 300,200 steps (16-bit little endian, 3 bytes
+// apart from 1B00H).
+void set_line_variables(Machine& m, Toolpath& path) {
     path.set_variables(0x1B00);
-    // X1,Y1 = 100,50; X2,Y2 = 300,200 (16-bit little endian, 3 bytes apart).
     for (auto [a, v] : {std::pair{0x1B00, 100}, {0x1B03, 50}, {0x1B06, 300}, {0x1B09, 200}}) {
         m.poke(static_cast<std::uint16_t>(a), static_cast<std::uint8_t>(v & 0xFF));
         m.poke(static_cast<std::uint16_t>(a + 1), static_cast<std::uint8_t>(v >> 8));
     }
+}
+
+TEST(Toolpath, TheIdealLineStartsWhereTheTableStoodWhenTheMoveBegan) {
+    Machine m;
+    Toolpath path;
+    set_line_variables(m, path);
     debug::ToolSample s;
     s.t = 0;
     path.observe(s, m);
@@ -111,11 +116,7 @@ TEST(Toolpath, TheIdealLineStartsWhereTheTableStoodWhenTheMoveBegan) {
 TEST(Toolpath, AMoveBegunRightAfterAClearStartsWhereTheTableStood) {
     Machine m;
     Toolpath path;
-    path.set_variables(0x1B00);
-    for (auto [a, v] : {std::pair{0x1B00, 100}, {0x1B03, 50}, {0x1B06, 300}, {0x1B09, 200}}) {
-        m.poke(static_cast<std::uint16_t>(a), static_cast<std::uint8_t>(v & 0xFF));
-        m.poke(static_cast<std::uint16_t>(a + 1), static_cast<std::uint8_t>(v >> 8));
-    }
+    set_line_variables(m, path);
     for (int round = 0; round < 2; ++round) {  // and again after a second clear
         path.clear();
         const std::int64_t at = 40 * round;  // where the table stands: 0, then 40 steps (2 mm)
