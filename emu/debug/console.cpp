@@ -447,27 +447,17 @@ std::string Console::watch(std::string_view a, int col, WatchKind kind) {
             m = trim_blanks(m.substr(first.size()), &mcol);
         }
         const auto dots = m.find("..");
-        auto address = [&](std::string_view text, int at, std::int64_t& out) -> std::string {
-            int tcol = at;
-            text = trim_blanks(text, &tcol);
-            ExprError err;
-            const auto e = Expr::parse(text, d_.program(), err, Expr::Names::SymbolsFirst, tcol - 1, &vars_);
-            if (!e) return error(err.col, err.message);
-            try {
-                out = e->eval(d_.machine());
-            } catch (const ExprError& x) {  // 1/0, say: an error of this line, not of the session
-                return error(tcol + x.col - 1, x.message);
-            }
-            if (out < 0 || out > 0xFFFF) return error(tcol, fmt::format("address {} is outside 0000H-FFFFH", out));
-            return {};
+        auto bound = [&](std::string_view text, int at, std::int64_t& out) {
+            text = trim_blanks(text, &at);
+            return address(text, at, out);
         };
         std::int64_t lo = 0, hi = 0;
         if (dots != std::string_view::npos) {
-            if (std::string e = address(m.substr(0, dots), mcol, lo); !e.empty()) return e;
-            if (std::string e = address(m.substr(dots + 2), mcol + static_cast<int>(dots) + 2, hi); !e.empty()) return e;
+            if (std::string e = bound(m.substr(0, dots), mcol, lo); !e.empty()) return e;
+            if (std::string e = bound(m.substr(dots + 2), mcol + static_cast<int>(dots) + 2, hi); !e.empty()) return e;
             if (hi < lo) return error(mcol, "a range is FIRST..LAST with FIRST <= LAST");
         } else {
-            if (std::string e = address(m, mcol, lo); !e.empty()) return e;
+            if (std::string e = bound(m, mcol, lo); !e.empty()) return e;
             hi = std::min<std::int64_t>(lo + static_cast<std::int64_t>(size) - 1, 0xFFFF);
         }
         spec.first = static_cast<std::uint16_t>(lo);

@@ -82,6 +82,11 @@ private:
     const CommandDef* find_command(std::string_view word, std::string& error) const;
 
     std::string error(int col, std::string message);
+    // TEXT (at column `col`) parsed and evaluated now, into `out`; or this line's error: a parse
+    // error, or one of evaluation (1/0) — never an exception out of the console.
+    std::string evaluate(std::string_view text, int col, Expr::Names names, std::int64_t& out);
+    // The same with symbols first, and the value an address: 0000H-FFFFH.
+    std::string address(std::string_view text, int col, std::int64_t& out);
     std::string report(const Stop& s);  // describe, then the breakpoint's commands
     std::string location_lines(std::uint16_t pc);
     std::string run_fallback(std::string_view line);

@@ -80,16 +80,8 @@ std::string Console::cmd_jump(std::string_view a, int col) {
 // info symbol ADDR: the name that holds ADDR, as gdb says it ("ANWEIN + 3").
 std::string Console::info_symbol(std::string_view a, int col) {
     if (a.empty()) return error(col, "expected an address: info symbol ADDR");
-    ExprError err;
-    const auto e = Expr::parse(a, d_.program(), err, Expr::Names::SymbolsFirst, col - 1, &vars_);
-    if (!e) return error(err.col, err.message);
     std::int64_t v = 0;
-    try {
-        v = e->eval(d_.machine());
-    } catch (const ExprError& x) {
-        return error(col + x.col - 1, x.message);
-    }
-    if (v < 0 || v > 0xFFFF) return error(col, fmt::format("address {} is outside 0000H-FFFFH", v));
+    if (std::string e = address(a, col, v); !e.empty()) return e;
     const auto addr = static_cast<std::uint16_t>(v);
     std::optional<std::string> name = d_.program().routine_at(addr);
     if (!name) name = d_.program().data_name_at(addr);

@@ -106,16 +106,29 @@ std::string Console::cmd_set(std::string_view a, int col) {
     return {};
 }
 
-std::string Console::cmd_expect(std::string_view a, int col) {
-    if (a.empty()) return error(col, "expected an expression: expect EXPR");
+std::string Console::evaluate(std::string_view text, int col, Expr::Names names, std::int64_t& out) {
     ExprError err;
-    const auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1, &vars_);
+    const auto e = Expr::parse(text, d_.program(), err, names, col - 1, &vars_);
     if (!e) return error(err.col, err.message);
     try {
-        if (e->eval(d_.machine()) != 0) return {};
+        out = e->eval(d_.machine());
     } catch (const ExprError& x) {
         return error(col + x.col - 1, x.message);
     }
+    return {};
+}
+
+std::string Console::address(std::string_view text, int col, std::int64_t& out) {
+    if (std::string e = evaluate(text, col, Expr::Names::SymbolsFirst, out); !e.empty()) return e;
+    if (out < 0 || out > 0xFFFF) return error(col, fmt::format("address {} is outside 0000H-FFFFH", out));
+    return {};
+}
+
+std::string Console::cmd_expect(std::string_view a, int col) {
+    if (a.empty()) return error(col, "expected an expression: expect EXPR");
+    std::int64_t v = 0;
+    if (std::string e = evaluate(a, col, Expr::Names::RegistersFirst, v); !e.empty()) return e;
+    if (v != 0) return {};
     return error(col, fmt::format("expectation failed: {} is 0 (false) at T = {}, PC = {:04X}H", a, d_.machine().now(),
                                   d_.machine().cpu().regs().pc));
 }
@@ -181,14 +194,9 @@ std::string Console::cmd_x(std::string_view a, int col) {
     if (count < 1 || count > 4096) return error(col, "a count from 1 to 4096");
     std::uint16_t addr = next_x_;
     if (!a.empty()) {
-        ExprError err;
-        const auto e = Expr::parse(a, d_.program(), err, Expr::Names::SymbolsFirst, col - 1, &vars_);
-        if (!e) return error(err.col, err.message);
-        try {
-            addr = static_cast<std::uint16_t>(e->eval(d_.machine()));
-        } catch (const ExprError& x) {
-            return error(col + x.col - 1, x.message);
-        }
+        std::int64_t v = 0;
+        if (std::string e = evaluate(a, col, Expr::Names::SymbolsFirst, v); !e.empty()) return e;
+        addr = static_cast<std::uint16_t>(v);
     }
     return examine(addr, count, x_format_, x_unit_, next_x_);
 }
