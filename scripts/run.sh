@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The main job: build ALP85 (which assembles the monitor, the thesis firmware in its two builds and
+# The main job: build ALP85's programs (which assembles the monitor, the thesis firmware in its two builds and
 # the other firmware sources), then walk through thesis Appendix C headless on the reconstructed
 # firmware (scripts/demo/thesis.alp): the display at each prompt, the line drawn by the simulated
 # machine tool, the time it took, where the tables ended and the toolpath plot; then the same
@@ -7,8 +7,11 @@
 # display ($DISPLAY set, CI not true) it then opens alp85 gui on the same walk-through.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j "$(nproc)"
+# Only what ships (the `shipped` target: alp85, asm85, pisa-asm and the firmware), not the tests'
+# programs; a unity build, as the test command's, so that the two share this folder.
+echo "== building alp85, asm85 and the firmware (build/)"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON >/dev/null
+cmake --build build -j "$(nproc)" --target shipped
 out=build/run
 echo
 echo "Executables:  build/bin/ ($(ls build/bin | tr '\n' ' '))"

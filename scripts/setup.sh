@@ -1,10 +1,22 @@
 #!/usr/bin/env bash
-# Installs everything ALP85's build and tests need, from Debian's packages, and the test clients
-# from the npm registry: the DAP tests' (@vscode/debugadapter-testsupport, tests/dap/node_modules)
-# and the web page's (puppeteer-core, tests/web/node_modules); then readies emscripten's cache.
+# Installs what ALP85 needs, from Debian's packages (and, for the tests, npm's registry).
+#   scripts/setup.sh           what the main job needs (scripts/run.sh): the compiler, CMake and the
+#                              libraries alp85 and asm85 link; a minute or two on a fresh machine
+#   scripts/setup.sh --tests   that, and what only the tests need (scripts/test.sh): clang's
+#                              runtime, Xvfb, the package tools, emscripten and chromium for the web
+#                              page, node with the DAP tests' client (@vscode/debugadapter-testsupport,
+#                              tests/dap/node_modules) and the page's (puppeteer-core,
+#                              tests/web/node_modules); then readies emscripten's cache
 # Non-interactive and idempotent: when all is present it only checks and returns.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+tests=0
+case "${1:-}" in
+  "") ;;
+  --tests) tests=1 ;;
+  *) echo "scripts/setup.sh: unknown option $1 (--tests installs what the tests need too)" >&2; exit 2 ;;
+esac
 
 # The DAP tests' client, pinned by tests/dap/package-lock.json; node and npm from Debian when
 # the machine has neither.
@@ -53,26 +65,35 @@ prepare_emscripten() {
   rm -rf "$dir"
 }
 
+# The main job: build alp85 (its window: SDL2, Dear ImGui, OpenGL; plots: cairo; the debugger's
+# prompt: libedit) and asm85. GoogleTest and Google Benchmark are small and the build's
+# configuration looks for them, so they come here too.
 packages=(
   g++ cmake ninja-build make pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev
   libfmt-dev libcli11-dev nlohmann-json3-dev
-  clang libclang-rt-14-dev
   zlib1g-dev python3
   libcairo2-dev
   libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri
-  xvfb xauth
   libedit-dev
-  # the Debian package and its test (scripts/package.sh, tests/install): dpkg-shlibdeps, man -l,
-  # the man pages from --help, the package check, the bash completion's helpers, fish (its completion)
+)
+# Only the tests: clang (the fuzz targets), the window under Xvfb, the Debian package and its test
+# (scripts/package.sh, tests/install: dpkg-shlibdeps, man -l, the man pages from --help, the
+# package check, the bash completion's helpers, fish for its completion), the web page
+# (scripts/web.sh, tests/web: emscripten, whose tools need node-acorn, and a browser).
+test_packages=(
+  clang libclang-rt-14-dev
+  xvfb xauth
   dpkg-dev man-db help2man lintian bash-completion fish
-  # the web page (scripts/web.sh, tests/web): emscripten (its tools need node-acorn), a browser
   emscripten node-acorn chromium
 )
-# node and npm: Debian's, unless the machine already has both (a nodejs package of another
-# origin brings its own npm, which Debian's npm would conflict with).
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-  packages+=(nodejs npm)
+if [ $tests -eq 1 ]; then
+  packages+=("${test_packages[@]}")
+  # node and npm: Debian's, unless the machine already has both (a nodejs package of another
+  # origin brings its own npm, which Debian's npm would conflict with).
+  if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+    packages+=(nodejs npm)
+  fi
 fi
 
 missing=()
@@ -92,6 +113,8 @@ else
   "${sudo_cmd[@]}" apt-get update -qq
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
-install_dap_client
-install_web_client
-prepare_emscripten
+if [ $tests -eq 1 ]; then
+  install_dap_client
+  install_web_client
+  prepare_emscripten
+fi

@@ -1,31 +1,44 @@
 #!/usr/bin/env bash
-# Builds ALP85 and runs every test through CTest.
-#   scripts/test.sh               release build (-Werror) + all tests, then the same under ASan+UBSan
-#   scripts/test.sh --fast        release build + all tests only
+# Builds ALP85 and runs every test through CTest. Each test program is built and run once, under
+# AddressSanitizer and UndefinedBehaviorSanitizer; the release build makes only what ships.
+#   scripts/test.sh          1. build/: the release build of what ships (`shipped`: alp85, asm85,
+#                               pisa-asm, the firmware, the man pages; -Werror) and the tests that
+#                               need those very programs (label `release`): the web page built and
+#                               run in chromium, the Debian package, the GUI's pictures in docs/img
+#                            2. build-asan/: every test program, and every other test
+#   scripts/test.sh --fast   step 1, then every test in build/ without the sanitizers
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-sanitize=1
-[ "${1:-}" = "--fast" ] && sanitize=0
+fast=0
+case "${1:-}" in
+  "") ;;
+  --fast) fast=1 ;;
+  *) echo "scripts/test.sh: unknown option $1 (--fast: no sanitizer pass)" >&2; exit 2 ;;
+esac
 jobs=$(nproc)
 
-run_suite() {  # build dir, extra cmake args...
+configure() {  # build dir, extra cmake args...
   local dir=$1; shift
   # Unity builds: each library and test program compiles in a few large units, so that the
   # headers every file includes (fmt, nlohmann-json, GoogleTest) are compiled once a unit, not
   # once a file (the build is most of this command's time on a fresh machine).
   cmake -S . -B "$dir" -G Ninja -DALP85_WERROR=ON -DCMAKE_UNITY_BUILD=ON "$@" >/dev/null
-  cmake --build "$dir" -j "$jobs"
-  (cd "$dir" && ctest --output-on-failure -j "$jobs")
 }
 
-echo "== release build and tests (build/)"
-# ... which also makes the GUI's pictures in docs/img (tests/gui)
-run_suite build -DCMAKE_BUILD_TYPE=Release -DALP85_DOC_IMAGES=ON
-
-if [ $sanitize -eq 1 ]; then
-  echo "== ASan + UBSan build and tests (build-asan/)"
-  # fontconfig's process-lifetime caches are not leaks of ours (tests/lsan.supp)
-  export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-  run_suite build-asan -DCMAKE_BUILD_TYPE=Release -DALP85_SANITIZE=ON -DALP85_BENCH=OFF
+echo "== release build of what ships, and its tests (build/)"
+configure build -DCMAKE_BUILD_TYPE=Release -DALP85_DOC_IMAGES=ON
+if [ $fast -eq 1 ]; then
+  cmake --build build -j "$jobs"
+  (cd build && ctest --output-on-failure -j "$jobs")
+  exit 0
 fi
+cmake --build build -j "$jobs" --target shipped gui_pixels
+(cd build && ctest --output-on-failure -j "$jobs" -L release)
+
+echo "== ASan + UBSan build and every other test (build-asan/)"
+# fontconfig's process-lifetime caches are not leaks of ours (tests/lsan.supp)
+export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+configure build-asan -DCMAKE_BUILD_TYPE=Release -DALP85_SANITIZE=ON -DALP85_BENCH=OFF
+cmake --build build-asan -j "$jobs"
+(cd build-asan && ctest --output-on-failure -j "$jobs")

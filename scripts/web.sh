@@ -30,19 +30,31 @@ fi
 # Debian's emscripten finds Debian's node-acorn only here.
 export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
 
-# The firmware the page carries, assembled by the native build (its generated sources; a build
-# folder that has built alp85 has them).
+# The firmware the page carries, assembled by the native build: only its generated texts (the
+# monitor ROM and map, the thesis and master images and maps), which wait for asm85 alone, not for
+# the native programs. A folder that has built alp85 has them already.
 if [ ! -f "$native/emu/program/embed_kMasterHex.cpp" ] || [ ! -f "$native/firmware/monitor/monitor_embed.cpp" ]; then
-  [ -f "$native/CMakeCache.txt" ] || cmake -S . -B "$native" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$native" --target alp85_program monitor_embed >/dev/null
+  echo "web: assembling the firmware the page carries with asm85 (native build in $native)"
+  [ -f "$native/CMakeCache.txt" ] || cmake -S . -B "$native" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON >/dev/null
+  cmake --build "$native" --target alp85_firmware_text monitor_embed
 fi
 
 launcher=()
 command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 wasm_build=$out-build
-config=(-S web -B "$wasm_build" -G Ninja -DALP85_NATIVE_BUILD="$native" -DALP85_WERROR="${ALP85_WERROR:-OFF}" "${launcher[@]}")
-emcmake cmake "${config[@]}" >/dev/null 2>&1 ||
-  { echo "scripts/web.sh: configuring $wasm_build failed" >&2; emcmake cmake "${config[@]}" >&2; exit 1; }
+werror=${ALP85_WERROR:-OFF}
+config=(-S web -B "$wasm_build" -G Ninja -DALP85_NATIVE_BUILD="$native" -DALP85_WERROR="$werror" "${launcher[@]}")
+# Configured once: a folder configured with the same native build and warnings goes straight to
+# the build step (which reconfigures by itself when a CMakeLists.txt changed).
+if grep -qx "ALP85_NATIVE_BUILD:[A-Z]*=$native" "$wasm_build/CMakeCache.txt" 2>/dev/null &&
+   grep -qx "ALP85_WERROR:[A-Z]*=$werror" "$wasm_build/CMakeCache.txt" 2>/dev/null; then
+  :
+else
+  echo "web: configuring the WebAssembly build with emscripten ($wasm_build)"
+  emcmake cmake "${config[@]}" >/dev/null 2>&1 ||
+    { echo "scripts/web.sh: configuring $wasm_build failed" >&2; emcmake cmake "${config[@]}" >&2; exit 1; }
+fi
+echo "web: compiling the module (a few minutes from nothing, seconds when it is built)"
 cmake --build "$wasm_build"
 
 # The site: the module and the page's own files, nothing from elsewhere.
