@@ -1,7 +1,7 @@
-// The ALP 85 as one object: CPU, bus, 8155, 8279, keypad and display wired as emu/board_map.h
+// The ALP 85 as one object: CPU, bus, 8155, 8279, keypad and display wired as emu/board/board_map.h
 // declares, with a scheduler that runs the CPU in long batches up to the next peripheral event or
-// outside input. Every front end (CLI, script runner, debugger, GUI) drives this class; none of
-// them re-implements the machine.
+// outside input. The debugger and the script Session drive it, and the front ends drive those
+// (docs/architecture.md); none of them re-implements the machine.
 //
 // Time is the CPU's T-state counter (3.072 MHz). Outside inputs (keys, RESET, VECT INTR) are
 // events stamped in that time, so the same inputs always give the same run.

@@ -1,7 +1,7 @@
 // alp85 disasm IMAGE|--monitor [--org A] [--from A] [--to A] [--map FILE]... [--cpu 8080|8085]
 //              [--source] [-o FILE]
 // Disassembles a program image as a listing, or as asm85 source that assembles back to the same
-// bytes (emu/disasm_listing.h).
+// bytes (emu/program/disasm_listing.h).
 #include <cstdio>
 #include <filesystem>
 #include <iostream>

@@ -107,7 +107,7 @@ public:
     std::uint8_t rim_value() const;
 
     // Snapshot of everything above (registers, interrupt state, pins, counters); load throws
-    // SnapshotError and leaves the CPU unchanged on a bad record (emu/i8085_snapshot.cpp).
+    // SnapshotError and leaves the CPU unchanged on a bad record (emu/core/i8085_snapshot.cpp).
     void save(std::vector<std::uint8_t>& out) const;
     void load(std::span<const std::uint8_t> in);
 
