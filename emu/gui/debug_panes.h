@@ -3,7 +3,7 @@
 // disassembly, memory, the parts (a tab each, from their descriptions), a watch list, step/next/finish and their reverse
 // buttons, and the debugger's command line. They drive the same script::DebugShell (and so the same
 // Machine and debug::Debugger) as `alp85 debug`: a button is a request (Continue, Step, ...) the
-// window starts as the Debugger's resumable run, the command line a line of the console.
+// window carries out through the Debugger; the command line is a line of the console.
 #pragma once
 
 #include <cstdint>
