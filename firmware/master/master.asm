@@ -258,43 +258,9 @@ SHOW:   PUSH    B
         RET
 ;
 ; ; ARC: C_R, centre, N from the entry; X*, Y* from the start with the first-point correction
-ARC:    SUI     03H                     ; 0: CW (G02), 1: CCW (G03)
-        XRI     01H
-        STA     DIR                     ; 0 CCW, 1 CW
-        INX     H
-        MOV     A,M
-        STA     CR
-        LXI     D,0009H                 ; +10: CX, CY, N
-        DAD     D
-        MOV     E,M
-        INX     H
-        MOV     D,M
-        INX     H
-        XCHG
-        SHLD    CXV
-        XCHG
-        MOV     E,M
-        INX     H
-        MOV     D,M
-        INX     H
-        XCHG
-        SHLD    CYV
-        XCHG
-        MOV     E,M
-        INX     H
-        MOV     D,M
-        XCHG
-        SHLD    NCNT
-        LHLD    CXV                     ; AX = (XAC - CX) . 0
-        XCHG
-        LHLD    XAC
-        LXI     B,AX
-        CALL    START
-        LHLD    CYV
-        XCHG
-        LHLD    YAC
-        LXI     B,AY
-        CALL    START
+ARC:    CALL    APAR                    ; DIR, C_R, centre, N (HL at the entry, A its type)
+        CALL    ASTX                    ; AX, AY = (XAC, YAC) - the centre, pushed out by eps_A
+        CALL    ASTY
 ALOOP:  LHLD    NCNT
         MOV     A,H
         ORA     L
@@ -584,7 +550,7 @@ CTG     EQU     1C99H                   ; minus the counter's value WOUT waits f
 MCNT    EQU     1C9BH                   ; MUL32's count
 QV      EQU     1C9CH                   ; F_LV C_x, 32 bits (mod 2^32), while QOK
 DAV     EQU     1CA0H                   ; A_F C_x, 32 bits
-OWED    EQU     1CA5H                   ; 1: a tick owed (GRD)
+OWED    EQU     1CA5H                   ; ticks owed (GRD): STICK takes them at once
 QOK     EQU     1CA4H                   ; 1: QV holds for this chord, 2: DAV too
 NOF     EQU     4FH                     ; the next chord's set-up (SDESC's results) at CMU + NOF
                                         ; ... PVV + NOF (1CB0H-1CC5H), copied at its join
@@ -602,6 +568,7 @@ TPX     EQU     1CF8H                   ; the target where the last chord ended 
 TPY     EQU     1CFAH
 JALT    EQU     1CE7H                   ; toggles: a stage a sample at most in the chord's end
 JFW     EQU     16                      ; steps to go from which stages run whatever the time
+GTC     EQU     17H                     ; SDESC's guard before SDC: 5888 T-states
 SPLH    EQU     (0C000H+3075-KOUT)/256  ; CTG's high byte for a pulse within 3075 T-states
 ;
 SMP:    LXI     H,0000H
@@ -740,7 +707,9 @@ SARC:   LDA     JST
         LHLD    EPTR
         MOV     A,M
         CALL    APAR
+        CALL    GCHK
         CALL    ASTX
+        CALL    GCHK
         CALL    ASTY
         LHLD    NCNT
         MOV     A,H
@@ -751,6 +720,7 @@ SARC:   LDA     JST
 SAL:    LDA     JST                     ; a job the last chord was too short for: finished here
         ANA     A
         JZ      SAL1
+        CALL    GCHK
         CALL    RUNJ
         JMP     SAL
 SAL1:   LHLD    NCNT
@@ -762,7 +732,9 @@ SAL1:   LHLD    NCNT
         LDA     VRDY
         ANA     A
         JNZ     SAL2
+        CALL    GCHK
         CALL    AVX
+        CALL    GCHK
         CALL    AVY
 SAL2:   XRA     A
         STA     VRDY
@@ -885,8 +857,8 @@ JAP:    LXI     H,CEV                   ; it starts at this chord's end, the too
         LXI     D,JAV                   ; chord's last target (eq. 5 at k = n)
         MVI     C,08H
         CALL    COPYN
-        LHLD    CNV
-        CALL    TGT
+        LHLD    CNV                     ; (n = 128 m: TGT moves into segment m, the
+        CALL    TGT                     ; next sample's TGT back to m - 1)
         SHLD    JPX
         XCHG
         SHLD    JPY
@@ -926,13 +898,18 @@ JS8:    CALL    SDC
         STA     JST
         RET
 ; ; JSEG: Z when this chord is in its last segment (its target at k = n computable: TGT)
+; ; (steps 0 .. n - 1 lie in the segments up to (n - 1) >> 7; k = n itself in n >> 7, one more
+; ; when n is a multiple of 128: Z when CSEG >= (n - 1) >> 7; n = 0: Z)
 JSEG:   LHLD    CNV
+        DCX     H
         MOV     A,L
         RAL
         MOV     A,H
         RAL
         LXI     H,CSEG
-        CMP     M
+        SUB     M
+        RZ
+        INR     A
         RET
 JV2:    CALL    AVY
         MVI     A,01H
@@ -992,11 +969,12 @@ TSTOP:  MVI     A,41H                   ; STOP
 ; ; once (PDN 0: the directions with the pulses low, then the pulses, both axes in the same OUT),
 ; ; or PDN T-states after the tick (WOUT), when x* crossed the major axis's step: a pulse at each
 ; ; crossing keeps a motor's pulses 1 / rate apart, not on the 2 ms grid (docs/results.md)
-STICK:  LDA     OWED                    ; a tick the set-up's guard took (SY3): now
-        ANA     A
-        JZ      STK0
-        XRA     A
+STICK:  LDA     OWED                    ; a tick a guard took (GCHK): now, the counter kept at
+        ANA     A                       ; 2800H or more for this sample's work (up to ~5300
+        JZ      STK0                    ; T-states) while the owed ticks are caught up, one
+        DCR     A                       ; period a tick, each sample shorter than its period
         STA     OWED
+        CALL    GCHK
         JMP     STK2
 STK0:   IN      0FDH
         ANI     3FH
@@ -1024,8 +1002,20 @@ STOUT:  LDA     PSND
         XRA     A
         STA     PEND
         RET
-GRD:    MVI     A,01H                   ; (STICK takes it without waiting or rewinding)
-        STA     OWED
+; ; GCHK: the guard before work at a join that may run past the next tick (up to ~7400 T-states:
+; ; SDESC's first two parts, a job's stage, a vertex, an owed tick's sample; then ~1500 to the
+; ; next guard or tick): while the counter stands below 2800H, the tick due, the timer is rewound
+; ; by one period and that tick owed (STICK's own grid), so the counter stands at 2800H or more
+; ; and the work cannot run it to its terminal count (TRAP: the monitor's single step)
+GCHK:   MVI     C,SKH
+GCK0:   IN      0FDH                    ; (GCK0: C the high byte to stay above)
+        ANI     3FH
+        CMP     C
+        RNC
+        CALL    GRD
+        JMP     GCK0
+GRD:    LXI     H,OWED                  ; one more tick owed (STICK takes it without waiting
+        INR     M                       ; or rewinding)
 TRWP:   LXI     D,SPER-SDT              ; v + one period less the SDT T-states it stood still
 ; ; TREW: stops the counter at v, restarts it from HL = v + DE (the 8155 takes a new count at START)
 TREW:   MVI     A,41H                   ; STOP: the counter holds its value v
@@ -1083,7 +1073,8 @@ SST1:   PUSH    B
 ;
 ; ; SCHRD: one chord from CAV to CEV: its set-up (SDESC, or the one made ahead), then samples
 ; ; until it ends
-SCHRD:  LDA     SRDY                    ; its set-up: made ahead in the chord before (RUNJ
+SCHRD:  CALL    GCHK
+        LDA     SRDY                    ; its set-up: made ahead in the chord before (RUNJ
         DCR     A                       ; 5-9: SRDY 1), else here, from A, E, P as the flows
         JZ      SCH0                    ; left them
         LXI     H,CAV
@@ -1424,6 +1415,7 @@ TGT:    PUSH    H                       ; k
         MOV     M,A
         LXI     H,CYD
         LXI     D,CYI
+        JC      TGB                     ; back one: JAP's TGT at k = n went ahead into n >> 7
         CALL    ADD4
 SS6:    POP     H
         PUSH    H
@@ -1497,6 +1489,8 @@ SS8:    LHLD    PUV
         RZ
         XCHG
         RET
+TGB:    CALL    SUB4
+        JMP     SS6
 ; ; CHASE: POUT = one pulse per axis toward SXV, SYV where the output is not there (eq. 6)
 CHASE:  MVI     B,00H
         LHLD    OUTX
@@ -1553,6 +1547,8 @@ CH4:    MOV     A,B
 ; ; JAV, JEV, JPX, JPY into CMU + NOF ... PVV + NOF; in three parts, SDA, SDB, SDC (RUNJ 6-8)
 SDESC:  CALL    SDA                     ; (at the join; ahead of it, stages 6-8 of RUNJ)
         CALL    SDB
+        MVI     C,GTC                   ; SDC, C_x, the copy and STICK: up to ~5500
+        CALL    GCK0
 SDC:    LXI     H,0000H                 ; off = su (P_u . 0 - A_u)
         SHLD    OF2
         LHLD    PUV+NOF

@@ -1,8 +1,11 @@
-"""docs/contours/fig10.csv: Fig. 10's time occupation of the 8085 by the interpolation, in T-states
-a 2 ms sample (6144), measured on the emulated master (firmware/master/master.asm) with breakpoints
+"""docs/contours/fig10.csv: the ALP 85's counterpart of Fig. 10, the 8085's T-states in a 2 ms sample
+(6144) taken by the sampling method's whole sample (the timer, the ramp, eqs. 4-6, the pulse's
+placement and OUT: more than the paper's "interpolation"), measured on the emulated master (firmware/master/master.asm) with breakpoints
 (alp85 script), over 400 samples of a line (X60 Y25 mm, after its first 150) and 1200 of a circle
 (R 20 mm, C_R 3, from its 5th), at 300, 750, 1200 and 1500 mm/min; beside them one iteration of
-the DDA of dda.asm (which runs every 2 ms whatever the feed: dX / S_r,max at 1500 mm/min).
+the bare DDA line loop of dda.asm (two 16-bit additions and one OUT: no timer, ramp or arcs; it
+runs every 2 ms whatever the feed: dX / S_r,max at 1500 mm/min). Not the paper's comparison: its
+Koren DDA and Middleditch method are not implemented.
 
 A sample runs from its tick (STICK's poll of the timer ending: the CALL TRWP after STK0's loop; or
 GRD, where a set-up at a join took the tick) to the next tick. In it:
@@ -14,9 +17,10 @@ GRD, where a set-up at a join took the tick) to the next tick. In it:
   - the rest is the sample's own work: the tick's rewind, the ramp, eqs. 4-6, the pulse's output
     and placement arithmetic, and at a chord's end the join (the copy of the set-up made ahead, or
     the set-up itself when it could not be made ahead) and the next vertex when it was not ready.
-Columns (T-states a sample, averaged, unless _max): feed (mm/min); line_work, line_jobs (the sample
-work, and the sample work + jobs), arc_work, arc_jobs; dda (one iteration of dda.asm); the largest
-of each, line_work_max, line_jobs_max, arc_work_max, arc_jobs_max; line_place, arc_place: the
+Columns (T-states a sample, averaged, unless _max): feed (mm/min); line_sample, line_sample_jobs
+(the sample's whole work, and it + jobs), arc_sample, arc_sample_jobs; bare_dda_line (one iteration
+of dda.asm); the largest of each, line_sample_max, line_sample_jobs_max, arc_sample_max,
+arc_sample_jobs_max; line_place, arc_place: the
 placement's arithmetic within the sample work, the crossing's division (SSMP, from its LHLD KST
 after eq. 4 to the XRA A after SHLD PDN) and WOUT up to its wait or its output (the counter's read
 and rewind): the pulse's place, which on the paper's machine its software servo takes care of
@@ -151,8 +155,8 @@ def dda():
 
 if __name__ == '__main__':
     d = dda()
-    print('feed,line_work,line_jobs,arc_work,arc_jobs,dda,line_work_max,line_jobs_max,arc_work_max,arc_jobs_max,'
-          'line_place,arc_place')
+    print('feed,line_sample,line_sample_jobs,arc_sample,arc_sample_jobs,bare_dda_line,line_sample_max,'
+          'line_sample_jobs_max,arc_sample_max,arc_sample_jobs_max,line_place,arc_place')
     for F in (300, 750, 1200, 1500):
         ln = measure(f'(METHOD SAMPLING)\nG21 G90\nG01 X60 Y25 F{F}\n', f'ml{F}')
         ar = measure(f'(METHOD SAMPLING)\nG21 G90\nG00 X70 Y50\nG03 X70 Y50 I-20 J0 F{F}\n', f'ma{F}', skip=5, n=1200, at='SARC')

@@ -79,15 +79,18 @@ int main(int argc, char** argv) {
         f9.series = {m20, c20, c10, alp};
         both(f9, out, "fig9");
 
-        Chart f10{.title = "Fig. 10: time occupation rate, 2 ms period, 8085 at 3.072 MHz", .x_label = "feedrate (mm/min)",
-                  .y_label = "occupation rate", .series = {}, .height = 600};
-        Series l10{"sampling, line", {}, true, false}, r10{"sampling, arc R 20 mm C_R 3", {}, true, false},
-            j10{"sampling, arc + look-ahead jobs", {}, true, true},
-            p10{"sampling, line without the pulse's placement", {}, true, true}, d10{"DDA (tests/master/dda.asm), every 2 ms", {}, true, true};
+        // Not the paper's comparison (its Koren DDA and Middleditch method are not implemented here):
+        // the sampling curves are a 2 ms sample's whole work, and the DDA a bare two-add line loop.
+        Chart f10{.title = "Fig. 10 on the ALP 85: a 2 ms sample's whole work / 6144 T-states",
+                  .x_label = "feedrate (mm/min)", .y_label = "share of the 8085's 2 ms period", .series = {}, .height = 600};
+        Series l10{"sampling, line: whole sample (timer, ramp, eqs. 4-6, placement, OUT)", {}, true, false}, r10{"sampling, arc R 20 mm C_R 3: whole sample", {}, true, false},
+            j10{"sampling, arc: whole sample + look-ahead jobs", {}, true, true},
+            p10{"sampling, line: whole sample less the pulse placement", {}, true, true},
+            d10{"bare DDA line loop (dda.asm: 2 adds + OUT; no timer, ramp, arcs), every 2 ms", {}, true, true};
         std::ifstream in(argv[2]);
         if (!in) throw std::runtime_error(std::string("cannot read ") + argv[2]);
-        // columns by name (fig10_measure.py's header): the feed, each sample's own work and work + jobs
-        // (T-states a sample), the DDA's iteration
+        // columns by name (fig10_measure.py's header): the feed, each sample's whole work and whole
+        // work + jobs (T-states a sample), the bare DDA loop's iteration
         const auto split = [](const std::string& text) {
             std::vector<std::string> cells;
             std::istringstream s(text);
@@ -102,8 +105,8 @@ int main(int argc, char** argv) {
                 if (header[i] == name) return i;
             throw std::runtime_error(std::string(argv[2]) + ": no column " + name);
         };
-        const std::size_t cf = column("feed"), cl = column("line_work"), ca = column("arc_work"), cj = column("arc_jobs"),
-                          cd = column("dda"), cp = column("line_place");
+        const std::size_t cf = column("feed"), cl = column("line_sample"), ca = column("arc_sample"),
+                          cj = column("arc_sample_jobs"), cd = column("bare_dda_line"), cp = column("line_place");
         for (int row = 2; std::getline(in, line); ++row) {
             const auto cells = split(line);
             if (cells.size() != header.size())
