@@ -135,7 +135,7 @@ void add_pisa_command(CLI::App& app, int& status) {
                 r.stop.reason == pisa::StopReason::Fault
                     ? r.stop.message
                     : args->max_time_s > 0
-                          ? fmt::format("{:g} s of machine time passed (--max-time)", limit_s)
+                          ? fmt::format("{} s of machine time passed (--max-time)", limit_s)
                           : fmt::format("{:.1f} s of machine time passed, twice the tape's own time ({:.1f} s) and a "
                                         "minute (--max-time sets the limit)",
                                         limit_s, static_cast<double>(pisa::tape_steps(parsed.tape, params)) * pisa::kDigitStepSeconds));
