@@ -34,14 +34,27 @@ Result Assembler::run(int main_file) {
         if (limit_reported_) return finish();  // runaway expansion: another pass won't help
         if (n >= 2 && !changed_) return finish();
     }
-    diags_.push_back({Severity::Error, files_[static_cast<std::size_t>(main_file)].name, 0, 0,
-                      "phase error: symbol values still change after " + std::to_string(kMaxPasses) + " passes", ""});
+    // Name the symbol that still moves, where it is defined (an IF or a DS that depends on a
+    // later label, as a rule).
+    Diagnostic d{Severity::Error, files_[static_cast<std::size_t>(main_file)].name, 0, 0,
+                 "phase error: symbol values still change after " + std::to_string(kMaxPasses) + " passes", ""};
+    if (auto it = syms_.find(changed_name_); it != syms_.end() && it->second.file >= 0) {
+        const SourceFile& f = files_[static_cast<std::size_t>(it->second.file)];
+        d.file = f.name;
+        d.line = it->second.line;
+        d.col = it->second.col;
+        if (d.line >= 1 && static_cast<std::size_t>(d.line) <= f.lines.size()) d.source_line = f.lines[static_cast<std::size_t>(d.line - 1)];
+        d.message = "phase error: the value of '" + changed_name_ + "' still changes after " + std::to_string(kMaxPasses) +
+                    " passes (does an IF, DS or ORG before it depend on a later symbol?)";
+    }
+    diags_.push_back(std::move(d));
     return finish();
 }
 
 void Assembler::pass(int number, int main_file) {
     pass_ = number;
     changed_ = false;
+    changed_name_.clear();
     cpu_ = opt_.cpu;
     radix_ = 10;
     pc_ = 0;
@@ -79,7 +92,7 @@ void Assembler::pass(int number, int main_file) {
             std::size_t p = 0;
             if (!expr(toks, p, v)) continue;
         }
-        if (n.empty() || !is_name_start(n[0])) {
+        if (n.empty() || !is_name_start(n[0]) || !std::all_of(n.begin(), n.end(), is_name_char)) {
             error(0, "-D: '" + name + "' is not a valid name");
             continue;
         }
@@ -96,12 +109,14 @@ void Assembler::pass(int number, int main_file) {
         process_line(line);
     }
     cur_line_ = nullptr;
+    if (pass_ > 1 && !limit_reported_) report_circles();
     if (collect_.kind != Collect::None) {
-        diags_.push_back({Severity::Error, files_[static_cast<std::size_t>(collect_.file)].name, collect_.line, 0,
-                          "missing ENDM for this block", ""});
+        const SourceFile& f = files_[static_cast<std::size_t>(collect_.file)];
+        diags_.push_back({Severity::Error, f.name, collect_.line, collect_.col, "missing ENDM for this block",
+                          f.lines[static_cast<std::size_t>(collect_.line - 1)]});
     }
     for (auto& c : cond_)
-        diags_.push_back({Severity::Error, files_[static_cast<std::size_t>(c.file)].name, c.line, 0,
+        diags_.push_back({Severity::Error, files_[static_cast<std::size_t>(c.file)].name, c.line, c.col,
                           "IF without ENDIF", files_[static_cast<std::size_t>(c.file)].lines[static_cast<std::size_t>(c.line - 1)]});
     if (opt_.warn_unused_macros) {
         std::vector<const MacroDef*> unused;

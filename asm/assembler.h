@@ -72,6 +72,11 @@ struct SymEntry {
     int pass = 0;  // last pass that defined it
     int file = -1;
     int line = 0;
+    int col = 0;   // 1-based, of the name
+    // EQU/SET: false while the value rests on a symbol not known yet (a forward reference still
+    // settling, an undefined symbol or a circle); deps are the symbols its expression read.
+    bool known = true;
+    std::vector<std::string> deps;
 };
 
 struct Cond {
@@ -81,6 +86,7 @@ struct Cond {
     bool in_else = false;
     int file = 0;
     int line = 0;
+    int col = 0;  // 1-based, of the IF word
 };
 
 // A block being collected: MACRO, REPT, IRP or IRPC up to its ENDM.
@@ -90,7 +96,7 @@ struct Collect {
     int depth = 0;
     std::size_t count = 0;
     std::vector<std::vector<std::string>> args;
-    int file = 0, line = 0;
+    int file = 0, line = 0, col = 0;  // col: 1-based, of the MACRO/REPT/IRP/IRPC word
 };
 
 class Assembler {
@@ -122,7 +128,9 @@ private:
     Value lookup(const Token& t, bool registers);
     bool expr(const std::vector<Token>& toks, std::size_t& pos, Value& out, bool registers = false);
     bool expr_all(const std::vector<Token>& toks, std::size_t pos, Value& out);  // whole operand field
-    void define(const std::string& name, int col, std::uint16_t value, SymbolKind kind);
+    void define(const std::string& name, int col, std::uint16_t value, SymbolKind kind, bool known = true,
+                std::vector<std::string> deps = {});
+    void report_circles();  // EQU/SET symbols whose definitions lead back to themselves
     std::uint8_t byte_of(const Value& v, int col);
     void emit(std::uint8_t b);
     void emit_word(std::uint16_t w);
@@ -168,6 +176,8 @@ private:
     // pass state
     int pass_ = 0;
     bool changed_ = false;
+    std::string changed_name_;  // the first symbol whose value changed this pass (for a phase error)
+    std::vector<std::string>* refs_ = nullptr;  // collects the symbols an EQU/SET expression reads
     Cpu cpu_ = Cpu::i8085;
     int radix_ = 10;
     std::uint32_t pc_ = 0;     // where the next byte is stored

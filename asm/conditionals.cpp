@@ -41,6 +41,7 @@ void Assembler::conditional(const std::string& op, const std::vector<Token>& tok
     c.parent_active = !skipping();
     c.file = line.file;
     c.line = line.line;
+    c.col = opcol + 1;
     if (cond_.size() >= 1000) {
         error(opcol, "IF nested more than 1000 deep");
         return;

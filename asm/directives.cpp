@@ -107,8 +107,12 @@ bool Assembler::try_directive(const std::string& op, const std::vector<Token>& t
 
     if (op == "EQU" || op == "SET" || op == "DEFL" || op == "=") {
         Value v;
-        if (!expr_all(toks, p, v)) return true;
-        define(name, name_col, v.v, op == "EQU" ? SymbolKind::Equ : SymbolKind::Set);
+        std::vector<std::string> refs;
+        refs_ = &refs;
+        const bool ok = expr_all(toks, p, v);
+        refs_ = nullptr;
+        if (!ok) return true;
+        define(name, name_col, v.v, op == "EQU" ? SymbolKind::Equ : SymbolKind::Set, v.known, std::move(refs));
         listing_.back().value = v.v;
         return true;
     }

@@ -79,6 +79,7 @@ void Assembler::begin_collect(Collect::Kind kind, const std::vector<Token>& toks
     c.depth = 1;
     c.file = line.file;
     c.line = line.line;
+    c.col = toks[p - 1].col + 1;
     c.def.body = std::make_shared<std::vector<BodyLine>>();
     c.def.file = line.file;
     c.def.line = line.line;

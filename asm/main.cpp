@@ -23,8 +23,8 @@ constexpr const char* kExamples = R"(Examples:
 Diagnostics are written as file:line:col: error: message.
 Exit status: 0 success; 1 an error in the source (or a source that cannot be read) or an output
 that cannot be written, and then no output file is written; 2 a usage error (an unknown option,
-a bad --cpu, --bin-start, --bin-end, --fill or -D, an output that is the source or an INCLUDEd
-file, two outputs on one file), and nothing is written either.)";
+a bad --cpu, --bin-start, --bin-end, --fill or -D, an empty output name, an output that is the
+source or an INCLUDEd file, two outputs on one file), and nothing is written either.)";
 
 constexpr int kUsageError = 2;
 
@@ -48,14 +48,14 @@ int main(int argc, char** argv) {
     bool quiet = false, no_unused = false, no_hex = false;
     int name_length = 0;
     app.add_option("SOURCE", source, "Assembly source file")->required();
-    app.add_option("-o,--hex", hex_out, "Intel HEX output (default: SOURCE with .hex)");
+    CLI::Option* hex_opt = app.add_option("-o,--hex", hex_out, "Intel HEX output (default: SOURCE with .hex)");
     app.add_flag("--no-hex", no_hex, "Write no Intel HEX file (only the other outputs asked for)");
-    app.add_option("--bin", bin_out, "Raw binary output");
+    CLI::Option* bin_opt = app.add_option("--bin", bin_out, "Raw binary output");
     app.add_option("--bin-start", bin_start, "First address of the binary (default: lowest emitted)");
     app.add_option("--bin-end", bin_end, "Last address of the binary (default: highest emitted)");
     app.add_option("--fill", fill, "Byte for gaps in the binary (default 0)");
-    app.add_option("--lst", lst_out, "Listing output");
-    app.add_option("--map", map_out, "JSON map output (symbols, byte -> source line)");
+    CLI::Option* lst_opt = app.add_option("--lst", lst_out, "Listing output");
+    CLI::Option* map_opt = app.add_option("--map", map_out, "JSON map output (symbols, byte -> source line)");
     app.add_option("-D,--define", defines, "Define NAME or NAME=VALUE before assembly");
     app.add_option("-I,--include", includes, "Directory searched by INCLUDE and MACLIB");
     app.add_option("--cpu", cpu, "8080, 8085 (default) or 8085u (8085 with its undocumented instructions)")
@@ -72,6 +72,16 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : kUsageError;  // --help is no error; not CLI11's codes (105, 106)
     }
+
+    // An output option given an empty name names no file: refused, not taken for "the default"
+    // (-o '' would write SOURCE.hex) or "no output" (--lst '').
+    const std::pair<const CLI::Option*, const std::string*> given[] = {
+        {hex_opt, &hex_out}, {bin_opt, &bin_out}, {lst_opt, &lst_out}, {map_opt, &map_out}};
+    for (const auto& [o, path] : given)
+        if (o->count() > 0 && path->empty()) {
+            std::cerr << "asm85: error: " << o->get_name(false, true) << " '': an empty file name; nothing written\n";
+            return kUsageError;
+        }
 
     Options opt;
     opt.cpu = *parse_cpu(cpu);

@@ -298,6 +298,8 @@ void Assembler::pass(int n, bool final) {
 Result Assembler::run() {
     r_.out.files = {name_};
     // Command-line defines first, as asm85 does.
+    // A NAME that is not a name, or a VALUE that is not one whole expression, is an error (the
+    // command line reports it as a usage error).
     for (auto& [k, v] : opt_.defines) {
         asm85::LexError le;
         auto toks = asm85::tokenize(v.empty() ? "1" : v, le, 10);
@@ -305,8 +307,24 @@ Result Assembler::run() {
         int n = 0;
         text_ = nullptr;
         final_ = true;
-        if (le.message.empty() && value(toks, p, -32768, 65535, "value", n))
-            syms_[asm85::to_upper(k)] = {static_cast<std::uint16_t>(n), asm85::SymbolKind::Define, 0, -1};
+        if (k.empty() || !asm85::is_name_start(k[0]) || !std::all_of(k.begin(), k.end(), asm85::is_name_char)) {
+            error(-1, fmt::format("-D: '{}' is not a valid name", k));
+            continue;
+        }
+        if (!le.message.empty()) {
+            error(-1, fmt::format("-D {}: {}", k, le.message));
+            continue;
+        }
+        const std::size_t reported = r_.out.diagnostics.size();
+        if (!value(toks, p, -32768, 65535, "value", n)) {
+            if (r_.out.diagnostics.size() == reported) error(-1, fmt::format("-D {}: '{}' is not a value", k, v));
+            continue;
+        }
+        if (toks[p].kind != Tok::End) {
+            error(-1, fmt::format("-D {}: unexpected text after the value", k));
+            continue;
+        }
+        syms_[asm85::to_upper(k)] = {static_cast<std::uint16_t>(n), asm85::SymbolKind::Define, 0, -1};
     }
     int n = 1;
     for (; n <= 8; ++n) {

@@ -15,22 +15,31 @@ int main(int argc, char** argv) {
     std::vector<std::string> defines;
     bool no_rom = false;
     app.add_option("SOURCE", source, "Assembly source (.pasm)")->required();
-    app.add_option("-o,--rom", rom_out, "ROM image, one word a line: address and octal word (default SOURCE.rom)");
+    CLI::Option* rom_opt =
+        app.add_option("-o,--rom", rom_out, "ROM image, one word a line: address and octal word (default SOURCE.rom)");
     app.add_flag("--no-rom", no_rom, "Write no ROM image (only the other outputs asked for)");
-    app.add_option("--lst", lst_out, "Listing output");
-    app.add_option("--map", map_out, "JSON map output (symbols, word -> source line)");
-    app.add_option("-D,--define", defines, "Define NAME or NAME=VALUE before assembly");
+    CLI::Option* lst_opt = app.add_option("--lst", lst_out, "Listing output");
+    CLI::Option* map_opt = app.add_option("--map", map_out, "JSON map output (symbols, word -> source line)");
+    app.add_option("-D,--define", defines, "Define NAME or NAME=VALUE before assembly (NAME a symbol's name, VALUE an expression)");
     app.set_version_flag("--version", "pisa-asm " + std::string(alp85::version()),
                          "Print the version (and the git commit of the build) and exit");
     app.footer("Diagnostics are written as file:line:col: error: message.\n"
                "Exit status: 0 success; 1 an error in the source or an output that cannot be written (then no\n"
-               "output file is written); 2 a usage error (an output that is the source, two outputs on one file,\n"
-               "a bad -D: nothing is written).");
+               "output file is written); 2 a usage error (an empty output name, an output that is the source,\n"
+               "two outputs on one file, a bad -D: a NAME that is not a name or a VALUE that is not an\n"
+               "expression; nothing is written).");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : 2;
     }
+    // An empty output name names no file: refused, not taken for the default or for "no output".
+    const std::pair<const CLI::Option*, const std::string*> given[] = {{rom_opt, &rom_out}, {lst_opt, &lst_out}, {map_opt, &map_out}};
+    for (const auto& [o, path] : given)
+        if (o->count() > 0 && path->empty()) {
+            std::cerr << "pisa-asm: error: " << o->get_name(false, true) << " '': an empty file name; nothing written\n";
+            return 2;
+        }
     pisa_asm::Options opt;
     for (auto& d : defines) {
         auto eq = d.find('=');

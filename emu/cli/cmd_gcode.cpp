@@ -39,6 +39,9 @@ void add_gcode_command(CLI::App& app, int& status) {
         "Example:\n"
         "  alp85 gcode scripts/master/circle.nc -o circle.hex\n"
         "  alp85 gcode --method sampling scripts/master/circle.nc -o circle.hex\n"
+        "Points are kept exactly and rounded to the 0.05 mm step once: under G91 the increments add up\n"
+        "before rounding, so an incremental program gives the table of the absolute one through the same\n"
+        "points. F is rounded to whole mm/min, which must be 6 to 1500 (docs/contours.md).\n"
         "Exit status: 0 the table was written, 1 a file was refused (its errors are shown as\n"
         "file:line:col: error: ...; nothing is written), 2 a usage error (-o naming a G-code file: nothing\n"
         "is written).");

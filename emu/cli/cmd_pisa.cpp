@@ -3,6 +3,7 @@
 // tool's X and Y tables through its servos (docs/pisa.md).
 // Exit status: 0 the tape ran to its end; 1 a bad tape or program (file:line:col: error:, nothing
 // written), a run that did not end, or an output that cannot be written; 2 a usage error.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -64,6 +65,7 @@ std::string plot_bytes(const std::string& target, const std::string& title, cons
 void add_pisa_command(CLI::App& app, int& status) {
     struct Args {
         std::string tape, rom, record, plot;
+        double max_time_s = 0;  // 0: from the tape
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("pisa", "The Pisa multi-purpose interpolator (1969) runs a tape (docs/pisa.md)");
@@ -71,12 +73,22 @@ void add_pisa_command(CLI::App& app, int& status) {
     cmd->add_option("--rom", args->rom, "The ROM program, Pisa assembly (default: the built-in firmware/pisa/interp.pasm)");
     cmd->add_option("--record", args->record, "Write the 6 ms outputs and the tables' positions as CSV");
     cmd->add_option("--plot", args->plot, "Draw the toolpath (exact path, outputs, tables) to .svg or .png");
+    cmd->add_option("--max-time", args->max_time_s,
+                    "Stop with an error after this many seconds of machine time (default: twice the tape's own time, "
+                    "its moves at their feedrates and its reading, and a minute)")
+        ->type_name("SECONDS")
+        ->check(CLI::Range(0.001, 1e7));
     cmd->footer(
         "Example:\n"
         "  alp85 pisa scripts/pisa/contour.tape --record contour.csv --plot contour.svg\n"
+        "  alp85 pisa long.tape --max-time 7200\n"
+        "A run that has not ended after --max-time seconds of machine time stops (a program that never\n"
+        "ends); by default the limit is twice the tape's own time and a minute, so a valid tape, however\n"
+        "long, runs to its end.\n"
         "Exit status: 0 the tape ran to its end; 1 a bad tape or program (file:line:col: error: ...,\n"
         "nothing written), a run that did not end, or an output that cannot be written; 2 a usage error\n"
-        "(an output that is the tape or the program, --record and --plot on one file: nothing written).");
+        "(an output that is the tape or the program, --record and --plot on one file, a --max-time that\n"
+        "is not 0.001 to 10000000 s: nothing written).");
     cmd->callback([args, &status] {
         auto ext = std::filesystem::path(args->plot).extension().string();
         if (!args->plot.empty() && ext != ".svg" && ext != ".png") {
@@ -112,11 +124,21 @@ void add_pisa_command(CLI::App& app, int& status) {
             status = 1;
             return;
         }
-        auto r = pisa::run_tape(program.rom, parsed.tape);
+        pisa::RunParams params;
+        if (args->max_time_s > 0)
+            params.max_steps = static_cast<std::uint64_t>(std::llround(args->max_time_s / pisa::kDigitStepSeconds));
+        auto r = pisa::run_tape(program.rom, parsed.tape, params);
         if (r.stop.reason != pisa::StopReason::End) {
-            std::cerr << fmt::format("alp85 pisa: the run did not end: {}; nothing written\n",
-                                     r.stop.reason == pisa::StopReason::Fault ? r.stop.message
-                                                                              : std::string("10 minutes of machine time passed"));
+            const double limit_s = static_cast<double>(r.max_steps) * pisa::kDigitStepSeconds;
+            std::cerr << fmt::format(
+                "alp85 pisa: the run did not end: {}; nothing written\n",
+                r.stop.reason == pisa::StopReason::Fault
+                    ? r.stop.message
+                    : args->max_time_s > 0
+                          ? fmt::format("{} s of machine time passed (--max-time)", limit_s)
+                          : fmt::format("{:.1f} s of machine time passed, twice the tape's own time ({:.1f} s) and a "
+                                        "minute (--max-time sets the limit)",
+                                        limit_s, static_cast<double>(pisa::tape_steps(parsed.tape, params)) * pisa::kDigitStepSeconds));
             status = 1;
             return;
         }

@@ -25,10 +25,51 @@ struct Word {
     char letter = 0;
     double value = 0;
     int column = 0;
+    std::int64_t e10 = 0;  // the value times 10^10, exactly (decimals past the tenth rounded)
 };
 
 constexpr const char* kAxisNames = "XYZ";
 constexpr double kMaxWord = 100000;
+
+// Lengths are kept exactly, in units of 10^-11 mm: a word with up to ten decimals, in mm (x 10)
+// or in inches (x 254, 25.4 mm), is a whole number of them, so that G91's increments add up with
+// no error and a position is rounded to a step once, as a G90 word is.
+constexpr std::int64_t kUnitsPerStep = 5'000'000'000;  // 0.05 mm
+
+// A number's digits (an optional sign, digits, at most one point) times 10^10.
+std::int64_t times_e10(std::string_view num) {
+    std::size_t i = 0;
+    const bool negative = !num.empty() && num[0] == '-';
+    if (!num.empty() && (num[0] == '+' || num[0] == '-')) ++i;
+    std::int64_t v = 0;
+    int decimals = -1;  // -1: before the point
+    bool round_up = false;
+    for (; i < num.size(); ++i) {
+        if (num[i] == '.') {
+            decimals = 0;
+            continue;
+        }
+        const int d = num[i] - '0';
+        if (decimals < 0) {
+            v = v * 10 + d;  // below 100000: checked before
+        } else if (decimals < 10) {
+            v = v * 10 + d;
+            ++decimals;
+        } else if (decimals == 10) {
+            round_up = d >= 5;
+            ++decimals;
+        }
+    }
+    for (decimals = std::max(decimals, 0); decimals < 10; ++decimals) v *= 10;
+    if (round_up) ++v;
+    return negative ? -v : v;
+}
+
+// To the nearest step, a half step away from zero.
+long to_steps(std::int64_t units) {
+    const std::int64_t half = kUnitsPerStep / 2;
+    return static_cast<long>(units >= 0 ? (units + half) / kUnitsPerStep : -((half - units) / kUnitsPerStep));
+}
 
 class Parser {
 public:
@@ -93,6 +134,7 @@ private:
                 if (!(std::fabs(w.value) < kMaxWord))
                     return fail(col, fmt::format("{}{} is out of range (a word is below 100000)", w.letter,
                                                  num.size() > 24 ? num.substr(0, 20) + "..." : num));
+                w.e10 = times_e10(num);
                 ws.push_back(w);
                 i = j;
             } else {
@@ -121,8 +163,8 @@ private:
         return true;
     }
 
-    // A length word in the block's units to steps of 0.05 mm, rounded to the nearest step.
-    long steps(double v) const { return std::lround(v * (inch_ ? 25.4 : 1.0) / kMmPerStep); }
+    // A length word in the block's units, exactly (units of 10^-11 mm).
+    std::int64_t length(const Word& w) const { return w.e10 * (inch_ ? 254 : 10); }
 
     bool in_travel(int axis, long v, int column) {
         if (v >= 0 && v <= kTravel[axis]) return true;
@@ -177,12 +219,19 @@ private:
             seen[w.letter - 'A'] = &w;
         }
         if (const Word* f = seen['F' - 'A']) {
+            // The table holds whole mm/min, and the firmware takes 6 to 1500 of them (SPEED, DLYK =
+            // 1500 / F in a byte): the word is rounded first, then checked, so that the number in
+            // a refusal is the one that is out of range.
             const double mm_min = f->value * (inch_ ? 25.4 : 1.0);
-            if (mm_min < 6 || mm_min > 1500) {
-                fail(f->column, fmt::format("feedrate {:.0f} mm/min is outside the firmware's 6 to 1500 mm/min", mm_min));
+            const long whole = std::lround(mm_min);
+            if (whole < 6 || whole > 1500) {
+                fail(f->column, mm_min == static_cast<double>(whole)
+                                    ? fmt::format("feedrate {} mm/min is outside the firmware's 6 to 1500 mm/min", whole)
+                                    : fmt::format("feedrate {:g} mm/min, {} to the whole mm/min, is outside the firmware's "
+                                                  "6 to 1500 mm/min", mm_min, whole));
                 return;
             }
-            feed_ = static_cast<std::uint16_t>(std::lround(mm_min));
+            feed_ = static_cast<std::uint16_t>(whole);
         }
         if (motion) mode_ = motion;
         const Word* ax[3] = {seen['X' - 'A'], seen['Y' - 'A'], seen['Z' - 'A']};
@@ -200,10 +249,13 @@ private:
             fail((wi ? wi : wj ? wj : wr)->column, "I, J and R belong to arcs (G02, G03)");
             return;
         }
+        // The programmed point exactly (G91: the last one plus the words), then rounded once.
+        std::int64_t target[3] = {at_[0], at_[1], at_[2]};
         long end[3] = {pos_[0], pos_[1], pos_[2]};
         for (int a = 0; a < 3; ++a) {
             if (!ax[a]) continue;
-            end[a] = (incremental_ ? pos_[a] : 0) + steps(ax[a]->value);
+            target[a] = (incremental_ ? at_[a] : 0) + length(*ax[a]);
+            end[a] = to_steps(target[a]);
             if (!in_travel(a, end[a], ax[a]->column)) return;
         }
         const bool xy = end[0] != pos_[0] || end[1] != pos_[1];
@@ -221,13 +273,16 @@ private:
         e.y = static_cast<std::uint16_t>(end[1]);
         e.z = static_cast<std::uint16_t>(end[2]);
         if (!arc) {
-            if (!xy && end[2] == pos_[2]) return;  // no motion
+            if (!xy && end[2] == pos_[2]) {  // no step: nothing to draw, but the point counts
+                for (int a = 0; a < 3; ++a) at_[a] = target[a];
+                return;
+            }
             e.kind = *mode_ == 0 ? Kind::Rapid : Kind::Line;
         } else if (!plan_arc(e, end, wi, wj, wr, first)) {
             return;
         }
         out_.entries.push_back(e);
-        for (int a = 0; a < 3; ++a) pos_[a] = end[a];
+        for (int a = 0; a < 3; ++a) pos_[a] = end[a], at_[a] = target[a];
     }
 
     bool plan_arc(Entry& e, const long end[3], const Word* wi, const Word* wj, const Word* wr, const Word* first) {
@@ -238,7 +293,7 @@ private:
         double cx = 0, cy = 0;
         if (wr && (wi || wj)) return fail(wr->column, "an arc takes I and J or R, not both");
         if (wr) {
-            const double r = steps(wr->value);
+            const auto r = static_cast<double>(to_steps(length(*wr)));
             const double dx = ex - sx, dy = ey - sy, d = std::hypot(dx, dy);
             if (d == 0) return fail(wr->column, "R cannot give a full circle: use I and J");
             if (r == 0 || d > 2 * std::abs(r) + 1e-9)
@@ -249,8 +304,9 @@ private:
             cx = std::round((sx + ex) / 2 - side * h * dy / d);
             cy = std::round((sy + ey) / 2 + side * h * dx / d);
         } else if (wi || wj) {
-            cx = sx + (wi ? steps(wi->value) : 0);
-            cy = sy + (wj ? steps(wj->value) : 0);
+            // I and J from the programmed start, rounded once as the end points are.
+            cx = static_cast<double>(to_steps(at_[0] + (wi ? length(*wi) : 0)));
+            cy = static_cast<double>(to_steps(at_[1] + (wj ? length(*wj) : 0)));
         } else {
             return fail(first->column, "an arc needs its centre (I, J) or its radius (R)");
         }
@@ -295,7 +351,8 @@ private:
     bool incremental_ = false;
     std::optional<int> mode_;
     std::uint16_t feed_ = 0;
-    long pos_[3] = {0, 0, 0};
+    long pos_[3] = {0, 0, 0};            // where the tool stands, steps
+    std::int64_t at_[3] = {0, 0, 0};     // the programmed point it stands for, exactly (10^-11 mm)
 };
 
 }  // namespace

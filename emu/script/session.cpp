@@ -84,7 +84,14 @@ std::optional<std::int64_t> Session::resolve(const Value& v, std::string& error)
         error = fmt::format("unknown symbol '{}'", v.symbol);
         return std::nullopt;
     }
-    return *value + v.number;
+    // A symbol moved by its offset stays a 16-bit value: AUS-70000 is no address (it would wrap to F438H).
+    const std::int64_t sum = *value + v.number;
+    if (sum < 0 || sum > 0xFFFF) {
+        error = fmt::format("{} is {:04X}H {} {} = {}, outside 0000H-0FFFFH", v.text, *value, v.number < 0 ? '-' : '+',
+                            v.number < 0 ? -v.number : v.number, sum);
+        return std::nullopt;
+    }
+    return sum;
 }
 
 Session::Outcome Session::fail(const Command& c, std::string what) const {

@@ -183,6 +183,17 @@ TEST_F(Cli, UsageErrorsExit2AndHelpListsTheExitStatuses) {
     EXPECT_EQ(run("p.asm --bin p.bin --bin-start XYZ"), 2);
     EXPECT_FALSE(fs::exists(dir / "p.hex"));
     EXPECT_FALSE(fs::exists(dir / "p.bin"));
+    // An empty output name is no file: not the default (-o '' wrote p.hex) nor "no output".
+    for (const char* opt : {"-o", "--hex", "--bin", "--lst", "--map"}) {
+        EXPECT_EQ(run(std::string("p.asm ") + opt + " ''"), 2) << opt;
+        EXPECT_NE(read("err.txt").find("an empty file name"), std::string::npos) << opt << ": " << read("err.txt");
+        EXPECT_TRUE(fs::is_empty(dir / "out.txt")) << opt;
+        EXPECT_FALSE(fs::exists(dir / "p.hex")) << opt;
+    }
+    EXPECT_EQ(run("p.asm -D ''"), 2);
+    EXPECT_EQ(run("p.asm -D 1X"), 2);
+    EXPECT_EQ(run("p.asm -D A-B"), 2);
+    EXPECT_FALSE(fs::exists(dir / "p.hex"));
     EXPECT_EQ(run("--help"), 0);
     const std::string help = read("out.txt");
     EXPECT_NE(help.find("Exit status: 0 success; 1 an error in the source"), std::string::npos) << help;

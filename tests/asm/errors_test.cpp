@@ -54,13 +54,69 @@ TEST(Errors, MessagesAndLocations) {
 }
 
 TEST(Errors, UnclosedBlocks) {
+    // Each at the line and column of the word that opened the block.
     auto r = assemble("\tNOP\n\tIF 1\n\tNOP\n");
     ASSERT_EQ(r.error_count(), 1);
     EXPECT_EQ(first_error(r).message, "IF without ENDIF");
     EXPECT_EQ(first_error(r).line, 2);
+    EXPECT_EQ(first_error(r).col, 2);
+    EXPECT_EQ(format_diagnostic(first_error(r)), "t.asm:2:2: error: IF without ENDIF\n\tIF 1\n\t^\n");
     r = assemble("M\tMACRO\n\tNOP\n");
     EXPECT_EQ(first_error(r).message, "missing ENDM for this block");
     EXPECT_EQ(first_error(r).line, 1);
+    EXPECT_EQ(first_error(r).col, 3);
+    r = assemble("\tNOP\n  REPT 3\n\tNOP\n");
+    EXPECT_EQ(first_error(r).message, "missing ENDM for this block");
+    EXPECT_EQ(first_error(r).line, 2);
+    EXPECT_EQ(first_error(r).col, 3);
+    EXPECT_EQ(format_diagnostic(first_error(r)), "t.asm:2:3: error: missing ENDM for this block\n  REPT 3\n  ^\n");
+}
+
+// A symbol defined through itself has no value: each symbol of the circle is an error at its own
+// definition, naming the circle with its lines.
+TEST(Errors, CircularEquNamesTheSymbolsAndLines) {
+    auto r = assemble("A1\tEQU\tB1\nB1\tEQU\tA1\n\tJMP\tA1\n");
+    ASSERT_EQ(r.error_count(), 2) << diags(r);
+    const std::string circle = "circular definition: A1 (t.asm:1) -> B1 (t.asm:2) -> A1";
+    EXPECT_EQ(r.diagnostics[0].message, circle);
+    EXPECT_EQ(r.diagnostics[0].line, 1);
+    EXPECT_EQ(r.diagnostics[0].col, 1);
+    EXPECT_EQ(r.diagnostics[1].message, circle);
+    EXPECT_EQ(r.diagnostics[1].line, 2);
+    EXPECT_EQ(r.diagnostics[1].col, 1);
+
+    r = assemble("\tNOP\nA1\tEQU\tA1+1\n");  // was a phase error with no place
+    ASSERT_EQ(r.error_count(), 1) << diags(r);
+    EXPECT_EQ(first_error(r).message, "circular definition: A1 (t.asm:2) -> A1");
+    EXPECT_EQ(first_error(r).line, 2);
+
+    // Three long, and a symbol that only reads the circle is not part of it.
+    r = assemble("X\tEQU\tZ1\nZ1\tEQU\tZ2*2\nZ2\tEQU\tZ3-1\nZ3\tEQU\tZ1+Z2\n");
+    ASSERT_EQ(r.error_count(), 3) << diags(r);
+    for (const auto& d : r.diagnostics) {
+        EXPECT_NE(d.line, 1);
+        EXPECT_EQ(d.message.rfind("circular definition: Z1 (t.asm:2) -> Z2 (t.asm:3) -> ", 0), 0u) << d.message;
+    }
+    // SET through itself before any value: the same.
+    r = assemble("CNT\tSET\tCNT+1\n");
+    EXPECT_EQ(first_error(r).message, "circular definition: CNT (t.asm:1) -> CNT");
+}
+
+TEST(Errors, ForwardChainsStillSettle) {
+    // A1 = B1 + 1 = C1 * 2 + 1 = 201H, each defined after its use: JMP 0201H (C3 01 02).
+    EXPECT_EQ(ok_bytes("\tJMP\tA1\nA1\tEQU\tB1+1\nB1\tEQU\tC1*2\nC1\tEQU\t100H\n"), (std::vector<int>{0xC3, 0x01, 0x02}));
+    // SET counting up, and a SET read before its first definition takes the last value.
+    EXPECT_EQ(ok_bytes("\tDB\tN\nN\tSET\t1\nN\tSET\tN+1\n\tDB\tN\n"), (std::vector<int>{2, 2}));
+}
+
+TEST(Errors, PhaseErrorNamesTheSymbolThatStillMoves) {
+    // HERE's place depends on an IF that depends on HERE: 0 -> 1 -> 0 ... never settles.
+    auto r = assemble("\tIF\tHERE EQ 0\n\tDB\t0\n\tENDIF\nHERE:\tNOP\n");
+    ASSERT_FALSE(r.ok());
+    const Diagnostic e = first_error(r);
+    EXPECT_EQ(e.message.rfind("phase error: the value of 'HERE' still changes after 10 passes", 0), 0u) << e.message;
+    EXPECT_EQ(e.line, 4);
+    EXPECT_EQ(e.col, 1);
 }
 
 TEST(Errors, EveryErrorIsReported) {

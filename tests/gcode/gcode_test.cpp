@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "emu/gcode/gcode.h"
 #include "emu/gcode/path_table.h"
@@ -44,6 +45,98 @@ TEST(GcodeWords, InchesAndIncrementalModes) {
     EXPECT_EQ(e[1].x, 1016);  // incremental, modal G01
     EXPECT_EQ(e[2].x, 20);    // back to mm, absolute
     EXPECT_EQ(e[2].feed, 254);
+}
+
+// G91: the increments add up exactly and the point is rounded to a step once, as under G90; so an
+// incremental program gives the table of the absolute program through the same points.
+std::string repeat(const std::string& block, int n) {
+    std::string s;
+    for (int i = 0; i < n; ++i) s += block;
+    return s;
+}
+
+void expect_same_table(const std::vector<Entry>& a, const std::vector<Entry>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].kind, b[i].kind) << i;
+        EXPECT_EQ(a[i].feed, b[i].feed) << i;
+        EXPECT_EQ(a[i].x, b[i].x) << i;
+        EXPECT_EQ(a[i].y, b[i].y) << i;
+        EXPECT_EQ(a[i].z, b[i].z) << i;
+        EXPECT_EQ(a[i].cx, b[i].cx) << i;
+        EXPECT_EQ(a[i].cy, b[i].cy) << i;
+        EXPECT_EQ(a[i].n, b[i].n) << i;
+    }
+}
+
+TEST(GcodeIncremental, TenSmallStepsEndWhereTheAbsoluteProgramEnds) {
+    // From X10, ten X0.03: X10.30 = 206 steps (not 10 x round(0.6) = 10 more, 210). The points
+    // 10.03 ... 10.30 mm are 200.6, 201.2, 201.8, 202.4, 203.0, 203.6, 204.2, 204.8, 205.4, 206.0
+    // steps: rounded, 201 202 203 204 205 206 are new (the others stand still), so 1 + 6 entries.
+    const auto inc = ok("G21 G90 G01 X10 F100\nG91\n" + repeat("X0.03\n", 10));
+    std::string abs = "G21 G90 G01 X10 F100\n";
+    for (int k = 1; k <= 10; ++k) abs += "X" + std::to_string(10 + 0.03 * k).substr(0, 5) + "\n";
+    const auto absolute = ok(abs);
+    ASSERT_EQ(inc.size(), 7u);
+    EXPECT_EQ(inc.back().x, 206);
+    expect_same_table(inc, absolute);
+}
+
+TEST(GcodeIncremental, StepsBelowHalfAStepStillAddUp) {
+    // Thirty X0.024 (0.48 step each, nothing alone): 0.72 mm = 14.4 steps, 14. The rounded
+    // points 0.48k go 0, 1, 1, 2, ... 14: fourteen entries of one step.
+    const auto inc = ok("G01 F200 G91\n" + repeat("X0.024\n", 30));
+    std::string abs = "G01 F200 G90\n";
+    for (int k = 1; k <= 30; ++k) abs += "X" + std::to_string(0.024 * k).substr(0, 5) + "\n";
+    ASSERT_EQ(inc.size(), 14u);
+    EXPECT_EQ(inc.back().x, 14);
+    expect_same_table(inc, ok(abs));
+    // In inches: ten X0.001 = 0.254 mm = 5.08 steps, 5 (one step each alone, 0.508, would be 10).
+    const auto inch = ok("G20 G91 G01 F10\n" + repeat("X0.001\n", 10));
+    ASSERT_FALSE(inch.empty());
+    EXPECT_EQ(inch.back().x, 5);
+}
+
+TEST(GcodeIncremental, MixedWithAbsoluteArcsAndZAsTheAbsoluteProgram) {
+    // The same contour twice: G91 blocks among G90 ones (arcs by I J, which are relative to the
+    // start either way; Z on its own), and every point written out absolutely.
+    const auto inc = ok("G21 G90 G00 X20.01 Y30.02\n"
+                        "G91 G02 X-10 Y-10 I-10 J0 F300\n"  // to (10.01, 20.02)
+                        "G90 G01 X40.004\n"
+                        "G91 Y0.013\nY0.013\nY0.013\n"      // 20.033, 20.046, 20.059
+                        "Z2.02\nZ-0.01\n"                   // 2.02, 2.01
+                        "G03 X-10 Y10 I0 J10\n"             // to (30.004, 30.059), centre (40.004, 30.059)
+                        "G90 X30.004 Y10.059 R-10\n");
+    const auto abs = ok("G21 G90 G00 X20.01 Y30.02\n"
+                        "G02 X10.01 Y20.02 I-10 J0 F300\n"
+                        "G01 X40.004\n"
+                        "Y20.033\nY20.046\nY20.059\n"
+                        "Z2.02\nZ2.01\n"
+                        "G03 X30.004 Y30.059 I0 J10\n"
+                        "X30.004 Y10.059 R-10\n");
+    expect_same_table(inc, abs);
+    // (40.004, 20.059) mm is (800.08, 401.18) steps: (800, 401); the arc's centre (40.004,
+    // 30.059) mm is (800, 601).
+    ASSERT_GE(inc.size(), 6u);
+    EXPECT_EQ(inc[5].kind, Kind::ArcCcw);
+    EXPECT_EQ(inc[5].cx, 800);
+    EXPECT_EQ(inc[5].cy, 601);
+}
+
+TEST(GcodeWords, FeedIsRoundedToWholeMmPerMinuteThenChecked) {
+    // The table holds whole mm/min and the firmware takes 6 to 1500: F5.9 is 6 (inside), F0.236
+    // in/min is 5.9944 mm/min, 6; F1500.4 is 1500. F5.4 (5) and F1500.6 (1501) are outside, and the
+    // refusal says which whole number is.
+    EXPECT_EQ(ok("G01 X1 F5.9\n").at(0).feed, 6);
+    EXPECT_EQ(ok("G20 G01 X0.1 F0.236\n").at(0).feed, 6);
+    EXPECT_EQ(ok("G01 X1 F1500.4\n").at(0).feed, 1500);
+    EXPECT_EQ(ok("G01 X1 F6\n").at(0).feed, 6);
+    const Error low = refused("G01 X1 F5.4\n");
+    EXPECT_EQ(low.message, "feedrate 5.4 mm/min, 5 to the whole mm/min, is outside the firmware's 6 to 1500 mm/min");
+    EXPECT_EQ(low.column, 8);
+    EXPECT_EQ(refused("G01 X1 F1500.6\n").message,
+              "feedrate 1500.6 mm/min, 1501 to the whole mm/min, is outside the firmware's 6 to 1500 mm/min");
+    EXPECT_EQ(refused("G01 X1 F5\n").message, "feedrate 5 mm/min is outside the firmware's 6 to 1500 mm/min");
 }
 
 TEST(GcodeWords, CommentsLineNumbersPercentAndZOnItsOwn) {

@@ -187,5 +187,40 @@ TEST(PisaProgram, AnElementShorterThanTheNextBlocksReadingStallsAndSaysSo) {
     EXPECT_TRUE(r.indicators[static_cast<std::size_t>(indicator("STALL"))]);
 }
 
+// The guard against a program that never ends is sized from the tape, by hand here.
+TEST(PisaRun, TheGuardIsTwiceTheTapesOwnTimeAndAMinute) {
+    // 60 mm at 600 mm/min: 6 s, 60 000 000 digit steps of 100 ns. On tape N G X Y F and the end of
+    // block are 4 + 3 + 8 + 8 + 5 + 1 = 29 characters, 29 x 33 333 steps (300 characters/s) = 966 657.
+    // Guard: 2 x 60 966 657 + 600 000 000 (a minute) = 721 933 314.
+    auto line = parse_tape("N010 G01 X60.0 Y0 F600\n");
+    ASSERT_FALSE(line.error);
+    EXPECT_EQ(tape_steps(line.tape), 60'966'657u);
+    EXPECT_EQ(guard_steps(line.tape), 721'933'314u);
+    // A full circle of R 20 mm at 750 mm/min: 2 pi 20 mm x 60 / 750 = 10.0530965 s, 100 530 965
+    // steps; N G X Y I J F and the end: 45 characters, 1 499 985 steps.
+    auto circle = parse_tape("N010 G03 X0 Y0 I-20.0 J0 F750\n");
+    ASSERT_FALSE(circle.error);
+    EXPECT_NEAR(static_cast<double>(tape_steps(circle.tape)), 102'030'950.0, 1.0);
+    // A run with a guard of its own stops there.
+    RunParams p;
+    p.max_steps = 1'000'000;  // 0.1 s
+    const RunResult r = run_tape(program().rom, line.tape, p);
+    EXPECT_EQ(r.stop.reason, StopReason::StepLimit);
+    EXPECT_EQ(r.max_steps, 1'000'000u);
+}
+
+TEST(PisaRun, ALongValidTapeRunsToItsEnd) {
+    // 101 mm at F10 (the slowest feed: 1 um a 6 ms period) is 101 000 periods, 606 s: beyond the
+    // fixed 10 minutes the run used to stop at, within every limit of the tape.
+    auto parsed = parse_tape("N010 G01 X101.0 Y0 F10\n");
+    ASSERT_FALSE(parsed.error);
+    const RunResult r = run_tape(program().rom, parsed.tape);
+    EXPECT_EQ(r.stop.reason, StopReason::End) << r.stop.message;
+    EXPECT_GE(r.steps, 6'060'000'000u);
+    EXPECT_LT(r.steps, r.max_steps);
+    ASSERT_GT(r.output_samples, 0u);
+    EXPECT_EQ(r.samples[r.output_samples - 1].cmd_x_um, 101'000);
+}
+
 }  // namespace
 }  // namespace alp85::pisa
