@@ -51,10 +51,10 @@ bool allowed(std::string_view line) {
 script::DebugShell& shell() {
     static script::DebugShell* s = [] {
         auto* sh = new script::DebugShell(script::SessionOptions{});
-        // A little program at 0 to step through: MVI A,5; DCR A; JNZ 2; HLT.
-        for (const char* line : {"set mem 0 = 3EH", "set mem 1 = 5", "set mem 2 = 3DH", "set mem 3 = 0C2H",
-                                 "set mem 4 = 2", "set mem 5 = 0", "set mem 6 = 76H"})
-            sh->execute(line);
+        // A little program at 0 to step through: MVI A,5; DCR A; JNZ 2; HLT. (The script's set mem
+        // takes the bytes after the address; "set mem 0 = 3EH" was refused, and memory stayed empty.)
+        sh->execute("set mem 0 3EH 05H 3DH 0C2H 02H 00H 76H");
+        sh->execute("set PC = 0");
         return sh;
     }();
     return *s;
