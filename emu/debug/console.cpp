@@ -74,7 +74,7 @@ const std::vector<Console::CommandDef>& Console::commands() {
         {"disable", {"dis", "disa"}, &Console::cmd_disable, "disable [N...]: disable breakpoints and watchpoints"},
         {"condition", {"cond"}, &Console::cmd_condition, "condition N [EXPR]: stop at N only when EXPR is not 0 (no EXPR: always)"},
         {"ignore", {}, &Console::cmd_ignore, "ignore N COUNT: pass N the next COUNT times"},
-        {"commands", {"comm"}, &Console::cmd_commands, "commands [N]: lines up to 'end' run when N stops (a log point: print ... then continue)"},
+        {"commands", {"comm"}, &Console::cmd_commands, "commands [N]: lines up to 'end' run at each stop of N (silent first: no stop report; one that resumes the run ends them; a log point: print ... then continue)"},
         {"continue", {"c", "cont", "fg"}, &Console::cmd_continue, "continue [N]: run until a breakpoint or watchpoint (N: ignore this breakpoint N-1 more times)"},
         {"step", {"s"}, &Console::cmd_step, "step [N]: one source line, into CALL and RST"},
         {"stepi", {"si"}, &Console::cmd_stepi, "stepi [N]: one instruction, into CALL and RST"},
