@@ -342,6 +342,10 @@ std::string Console::run_commands(Stop s) {
         }
         resumed_.reset();
         in_commands_ = true;
+        struct Leave {  // whatever happens in them, the console is out of the commands after the list
+            bool& flag;
+            ~Leave() { flag = false; }
+        } leave{in_commands_};
         for (std::size_t i = 0; i < list.size() && !quit_; ++i) {
             if (i == 0 && to_upper(trim_blanks(list[i])) == "SILENT") continue;
             const std::uint64_t before = d_.machine().now();
