@@ -48,7 +48,15 @@ Console::Console(Debugger& d) : d_(d), vars_(d.variables()) {
         if (!in_fallback_) return;
         switch (e.kind) {
             case Event::Kind::Output: fallback_out_ += e.text + '\n'; break;
-            case Event::Kind::Stopped: fallback_out_ += describe(e.stop); break;
+            case Event::Kind::Stopped:
+                // Its point's commands run once the script command has ended (run_fallback); inside
+                // a breakpoint's commands the list that runs them reports the stop.
+                fallback_stop_ = e.stop;
+                if (!in_commands_) {
+                    const std::string stop = describe(e.stop);
+                    if (!silent(e.stop)) fallback_out_ += stop;
+                }
+                break;
             case Event::Kind::ExpectFailed: break;  // the fallback reports the failure
         }
     });
@@ -66,7 +74,7 @@ const std::vector<Console::CommandDef>& Console::commands() {
         {"disable", {"dis", "disa"}, &Console::cmd_disable, "disable [N...]: disable breakpoints and watchpoints"},
         {"condition", {"cond"}, &Console::cmd_condition, "condition N [EXPR]: stop at N only when EXPR is not 0 (no EXPR: always)"},
         {"ignore", {}, &Console::cmd_ignore, "ignore N COUNT: pass N the next COUNT times"},
-        {"commands", {"comm"}, &Console::cmd_commands, "commands [N]: lines up to 'end' run when N stops (a log point: print ... then continue)"},
+        {"commands", {"comm"}, &Console::cmd_commands, "commands [N]: lines up to 'end' run at each stop of N (silent first: no stop report; one that resumes the run ends them; a log point: print ... then continue)"},
         {"continue", {"c", "cont", "fg"}, &Console::cmd_continue, "continue [N]: run until a breakpoint or watchpoint (N: ignore this breakpoint N-1 more times)"},
         {"step", {"s"}, &Console::cmd_step, "step [N]: one source line, into CALL and RST"},
         {"stepi", {"si"}, &Console::cmd_stepi, "stepi [N]: one instruction, into CALL and RST"},
@@ -96,6 +104,8 @@ const std::vector<Console::CommandDef>& Console::commands() {
         {"jump", {"j"}, &Console::cmd_jump, "jump LOCATION: continue at LOCATION (the PC set there, then continue)"},
         {"info", {"i"}, &Console::cmd_info, "info registers|breakpoints|watchpoints|displays|display|PART (8155, 8279, ...)|axis [X|Y|Z]|line|frame|symbol ADDR"},
         {"history", {}, &Console::cmd_history, "history [N]: the last N instructions (default 10) with the registers each changed"},
+        {"echo", {}, &Console::cmd_echo, "echo TEXT: show TEXT (\\n a new line, \\t a tab, \\\\ a backslash); no new line of its own, as gdb's"},
+        {"output", {}, &Console::cmd_output, "output[/x|d|t|c] EXPR: EXPR's value alone, without $N = and without a new line (for breakpoint commands)"},
         {"expect", {}, &Console::cmd_expect, "expect EXPR: an error unless EXPR is not 0 (for batch sessions); the script language's expect forms work too"},
         {"help", {"h"}, &Console::cmd_help, "help [COMMAND]"},
         {"quit", {"q", "exit"}, &Console::cmd_quit, "quit"},
@@ -137,7 +147,7 @@ std::string Console::error(int col, std::string message) {
 
 std::string Console::execute(std::string_view line) {
     line_ = std::string(line);
-    d_.interrupt_clear();
+    if (!in_commands_) d_.interrupt_clear();  // a Ctrl-C during a breakpoint's commands ends them
     if (collecting_) {
         const std::string_view t = trim_blanks(line);
         if (to_upper(t) == "END") {
@@ -169,7 +179,18 @@ std::string Console::execute(std::string_view line) {
                                    next == "RUNNING" || next == "AXIS" || next == "COUNT" || next == "LOST"));
         if (script_form) c = nullptr;
     }
-    if (!c) return run_fallback(t);
+    if (!c) {
+        // The script's run until passes breakpoints (Debugger::run_to): say so, and where it ended.
+        const std::string up = to_upper(t);
+        if (up.starts_with("RUN ") && to_upper(first_word(trim_blanks(t.substr(3)))) == "UNTIL" &&
+            to_upper(first_word(trim_blanks(trim_blanks(t.substr(3)).substr(5)))) != "AXIS") {
+            const bool armed = std::any_of(d_.breakpoints().begin(), d_.breakpoints().end(), [](const Breakpoint& b) { return b.enabled; });
+            std::string out = armed ? "run until does not stop at breakpoints (advance LOCATION does)\n" : "";
+            out += run_fallback(t);
+            return out + describe(d_.here(StopReason::Target));
+        }
+        return run_fallback(t);
+    }
     int acol = col + static_cast<int>(word.size());
     const std::string_view args = trim_blanks(t.substr(word.size()), &acol);
     try {
@@ -183,11 +204,19 @@ std::string Console::run_fallback(std::string_view line) {
     if (!fallback_) return error(1, fmt::format("unknown command '{}' (help lists the commands)", first_word(line)));
     in_fallback_ = true;
     fallback_out_.clear();
+    fallback_stop_.reset();
     std::string out;
     const bool ok = fallback_(line, out);
     in_fallback_ = false;
     if (!ok) ++errors_;
-    return fallback_out_ + out;
+    out = fallback_out_ + out;
+    if (fallback_stop_) {  // press, type, wait ... stopped at a point: its commands run as at any stop
+        const Stop s = *fallback_stop_;
+        fallback_stop_.reset();
+        if (in_commands_) resumed_ = s;
+        else out += run_commands(s);
+    }
+    return out;
 }
 
 // ---- reporting stops ----------------------------------------------------------------------------
@@ -212,6 +241,7 @@ std::optional<std::string> Console::source_line(const SourceLine& l) {
 }
 
 std::string Console::location_lines(std::uint16_t pc) {
+    if (pc == d_.machine().cpu().regs().pc) pc = d_.where();  // a halted CPU: at its HLT
     const auto frames = d_.backtrace();
     const std::string routine = frames.front().routine ? *frames.front().routine : "??";
     const auto line = d_.program().line_of(pc);
@@ -276,30 +306,60 @@ std::string Console::describe(const Stop& s) {
     return out;
 }
 
-std::string Console::report(const Stop& first) {
-    // A breakpoint's commands run after its report. One that runs the machine ends the list, as in
-    // gdb, and reports its own stop; continue goes on in this loop (a log point, hit after hit).
+bool Console::silent(const Stop& s) const {
+    const std::vector<std::string> c = d_.commands_for(s);
+    return !c.empty() && to_upper(trim_blanks(c.front())) == "SILENT";
+}
+
+std::string Console::report(const Stop& s) {
+    if (in_commands_) {  // a breakpoint's command resumed the run: the list running it goes on from s
+        resumed_ = s;
+        return {};
+    }
+    std::string out = describe(s);
+    if (silent(s)) out.clear();
+    return out + run_commands(s);
+}
+
+std::string Console::run_commands(Stop s) {
+    // As gdb: a command that runs the machine (continue, step, jump, run, a script's press ...) ends
+    // its list, and the stop it reaches is reported here and runs its own point's commands, one list
+    // after another instead of one inside the other (a log point, hit after hit). Commands that keep
+    // resuming get 10000 stops or the machine time of one continue, then the prompt comes back (in a
+    // batch session too: a breakpoint whose commands jump back to it would otherwise never end).
+    constexpr int kMaxStops = 10000;
     std::string out;
-    Stop s = first;
-    for (;;) {
-        out += describe(s);
-        bool again = false;
-        for (const std::string& c : d_.commands_for(s)) {
-            std::string err;
-            const CommandDef* def = find_command(first_word(trim_blanks(c)), err);
-            if (def && def->handler == &Console::cmd_continue) {
-                s = d_.cont();
-                again = true;
-                break;
-            }
-            out += execute(c);
-            if (def && (def->handler == &Console::cmd_step || def->handler == &Console::cmd_next ||
-                        def->handler == &Console::cmd_stepi || def->handler == &Console::cmd_nexti ||
-                        def->handler == &Console::cmd_finish || def->handler == &Console::cmd_until ||
-                        def->handler == &Console::cmd_advance))
-                break;
+    std::uint64_t ran = 0;  // machine time the commands have run, forwards or back
+    for (int stops = 0;; ++stops) {
+        const std::vector<std::string> list = d_.commands_for(s);
+        if (list.empty() || quit_) return out;
+        if (stops == kMaxStops || ran >= Debugger::kContinueLimit) {
+            out += fmt::format("Stopped: the commands of {} {} resumed the run {} times ({:.1f} s of simulated time); "
+                               "the session goes on here, continue goes on\n",
+                               s.reason == StopReason::Watchpoint ? "watchpoint" : "breakpoint", s.number, stops,
+                               board::ms_from_tstates(ran) / 1000.0);
+            return out;
         }
-        if (!again) return out;
+        resumed_.reset();
+        in_commands_ = true;
+        struct Leave {  // whatever happens in them, the console is out of the commands after the list
+            bool& flag;
+            ~Leave() { flag = false; }
+        } leave{in_commands_};
+        for (std::size_t i = 0; i < list.size() && !quit_; ++i) {
+            if (i == 0 && to_upper(trim_blanks(list[i])) == "SILENT") continue;
+            const std::uint64_t before = d_.machine().now();
+            out += execute(list[i]);
+            const std::uint64_t after = d_.machine().now();
+            ran += after > before ? after - before : before - after;
+            if (after != before || resumed_) break;  // it ran the machine: the list ends with it
+        }
+        in_commands_ = false;
+        if (!resumed_) return out;
+        s = *resumed_;
+        resumed_.reset();
+        const std::string stop = describe(s);
+        if (!silent(s)) out += stop;
     }
 }
 
@@ -570,6 +630,7 @@ std::string Console::cmd_commands(std::string_view a, int col) {
         n = *v;
     }
     if (!d_.breakpoint(n) && !d_.watchpoint(n)) return error(col, fmt::format("no breakpoint or watchpoint number {}", n));
+    if (in_commands_) return error(col, "commands cannot be given inside a breakpoint's commands");
     collecting_ = true;
     collect_for_ = n;
     collected_.clear();

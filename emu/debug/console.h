@@ -7,7 +7,7 @@
 //   reverse-step/rs reverse-stepi/rsi reverse-next/rn reverse-nexti/rni reverse-finish/rfin
 //   reverse-continue/rc  print/p x display/disp undisplay set list/l disassemble/disas
 //   backtrace/bt frame/f up down jump/j info/i (registers breakpoints watchpoints display displays
-//   PART axis line frame symbol) history help quit/q
+//   PART axis line frame symbol) history echo output help quit/q
 //
 // A line it does not know goes to the fallback: `alp85 debug` passes it to the script language
 // (docs/scripting.md: load, firmware, press, type, run until, wait display, expect, save,
@@ -88,6 +88,10 @@ private:
     // The same with symbols first, and the value an address: 0000H-FFFFH.
     std::string address(std::string_view text, int col, std::int64_t& out);
     std::string report(const Stop& s);  // describe, then the breakpoint's commands
+    // The commands of the point that made stop `s`, and of each stop a resuming command among them
+    // reaches (gdb: such a command is the list's last; the lists run one after another, not nested).
+    std::string run_commands(Stop s);
+    bool silent(const Stop& s) const;  // its commands begin with `silent`: no stop report
     std::string location_lines(std::uint16_t pc);
     std::string run_fallback(std::string_view line);
     std::string format_value(std::int64_t v, int width, char fmt) const;
@@ -137,6 +141,8 @@ private:
     std::string cmd_jump(std::string_view a, int col);
     std::string cmd_info(std::string_view a, int col);
     std::string cmd_history(std::string_view a, int col);
+    std::string cmd_echo(std::string_view a, int col);
+    std::string cmd_output(std::string_view a, int col);
     std::string cmd_expect(std::string_view a, int col);
     std::string cmd_help(std::string_view a, int col);
     std::string cmd_quit(std::string_view a, int col);
@@ -184,6 +190,9 @@ private:
     std::vector<int> temporary_;       // tbreak numbers: their stops say "Temporary breakpoint N"
     bool in_fallback_ = false;
     std::string fallback_out_;
+    std::optional<Stop> fallback_stop_;  // where a script command the fallback ran stopped
+    bool in_commands_ = false;           // a breakpoint's commands are running
+    std::optional<Stop> resumed_;        // the stop a resuming command among them reached
 };
 
 }  // namespace alp85::debug

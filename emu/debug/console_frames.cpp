@@ -84,7 +84,7 @@ std::string Console::info_symbol(std::string_view a, int col) {
     if (std::string e = address(a, col, v); !e.empty()) return e;
     const auto addr = static_cast<std::uint16_t>(v);
     std::optional<std::string> name = d_.program().routine_at(addr);
-    if (!name) name = d_.program().data_name_at(addr);
+    if (!name) name = d_.program().data_name_near(addr);  // YAC + 1: the high byte of the word YAC
     if (!name) return fmt::format("No symbol matches {}.\n", a);
     if (const auto plus = name->find('+'); plus != std::string::npos) name->replace(plus, 1, " + ");
     const auto line = d_.program().line_of(addr);

@@ -59,6 +59,36 @@ std::string Console::cmd_print(std::string_view a, int col) {
     }
 }
 
+std::string Console::cmd_output(std::string_view a, int col) {
+    const char f = take_format(a, col);
+    if (a.empty()) return error(col, "expected an expression: output EXPR");
+    ExprError err;
+    const auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1, &vars_);
+    if (!e) return error(err.col, err.message);
+    try {
+        return format_value(e->eval(d_.machine()), e->width(), f);
+    } catch (const ExprError& x) {
+        return error(col + x.col - 1, x.message);
+    }
+}
+
+std::string Console::cmd_echo(std::string_view a, int) {
+    std::string out;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i] != '\\') {
+            out += a[i];
+            continue;
+        }
+        if (++i == a.size()) break;  // a backslash at the end: gdb's way to end without a blank
+        switch (a[i]) {
+            case 'n': out += '\n'; break;
+            case 't': out += '\t'; break;
+            default: out += a[i]; break;  // \\ \" and \  (a kept blank)
+        }
+    }
+    return out;
+}
+
 std::string Console::cmd_set(std::string_view a, int col) {
     const std::string first = to_upper(a.substr(0, a.find(' ')));
     if (first == "HISTORY") {
@@ -79,6 +109,8 @@ std::string Console::cmd_set(std::string_view a, int col) {
     const std::string_view lhs = trim_blanks(a.substr(0, eq), &lcol);
     int rcol = col + static_cast<int>(eq) + 1;
     const std::string_view rhs = trim_blanks(a.substr(eq + 1), &rcol);
+    if (lhs.size() > 1 && lhs.front() == '$' && read_only_named(to_upper(lhs.substr(1))))
+        return error(lcol, fmt::format("{} is read-only: the T-state counter, the machine's time since it started", lhs));
     // set $NAME = EXPR: a convenience variable (not a register's or flag's name).
     if (lhs.size() > 1 && lhs.front() == '$' && !register_named(to_upper(lhs.substr(1))) && !flag_named(to_upper(lhs.substr(1))) &&
         std::all_of(lhs.begin() + 1, lhs.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; })) {
@@ -181,7 +213,11 @@ std::string Console::cmd_x(std::string_view a, int col) {
         std::size_t i = 1;
         std::size_t n0 = i;
         while (i < a.size() && std::isdigit(static_cast<unsigned char>(a[i]))) ++i;
-        if (i > n0) count = std::stoi(std::string(a.substr(n0, i - n0)));
+        if (i > n0) {  // digits beyond any int are a count out of range too, not a std::stoi error
+            const std::string_view digits = a.substr(n0, i - n0);
+            if (digits.size() > 4 || (count = std::stoi(std::string(digits))) < 1 || count > 4096)
+                return error(col + static_cast<int>(n0), fmt::format("bad count '{}' in x/NFU: a count from 1 to 4096", digits));
+        }
         for (; i < a.size() && !std::isspace(static_cast<unsigned char>(a[i])); ++i) {
             const char c = static_cast<char>(std::tolower(static_cast<unsigned char>(a[i])));
             if (std::string_view("xduotcasi").find(c) != std::string_view::npos) x_format_ = c;

@@ -194,9 +194,14 @@ Stop Debugger::end_run(Stop s) {
     halted_ = false;
     arm();
     if (run.target_as && s.reason == StopReason::Target) s.reason = *run.target_as;
-    if (run.limit && s.reason == StopReason::Deadline)
-        s.message = fmt::format("no breakpoint or watchpoint stopped the run within {:.0f} s of simulated time",
-                                board::ms_from_tstates(run.limit) / 1000.0);
+    if (run.limit && s.reason == StopReason::Deadline) {
+        // The guard of machine time gave up: say what did not happen in it.
+        const std::string_view what = !run.target_as                           ? "no breakpoint or watchpoint stopped the run"
+                                      : *run.target_as == StopReason::Finished ? "the routine did not return"
+                                      : *run.target_as == StopReason::Target   ? "the PC did not reach the location"
+                                                                               : "the line did not end";
+        s.message = fmt::format("{} within {:.0f} s of simulated time", what, board::ms_from_tstates(run.limit) / 1000.0);
+    }
     s = finish_stop(std::move(s));
     if (run.emit_stops && (s.reason == StopReason::Breakpoint || s.reason == StopReason::Watchpoint ||
                            s.reason == StopReason::Error || s.reason == StopReason::Runaway))
@@ -231,6 +236,9 @@ Stop Debugger::run_until(std::uint64_t until, const std::function<bool()>& condi
 
 Stop Debugger::run_to(std::uint16_t pc, std::uint64_t until) {
     check_inputs();
+    // Breakpoints and watchpoints do not stop it: their observer is off for the run (one left on
+    // stopped the machine at a breakpoint on the way again and again, until the deadline).
+    m_.set_observer(nullptr);
     for (;;) {
         std::uint64_t chunk = until;
         if (history_on_) {
@@ -238,8 +246,10 @@ Stop Debugger::run_to(std::uint16_t pc, std::uint64_t until) {
             chunk = std::min(until, std::max(history_->next_due(), m_.now() + 1));
         }
         const Machine::RunEnd s = m_.run_to(pc, chunk);
-        if (s == Machine::RunEnd::Target) return here(StopReason::Target);
-        if (m_.now() >= until) return here(StopReason::Deadline);
+        if (s == Machine::RunEnd::Target || m_.now() >= until) {
+            arm();
+            return here(s == Machine::RunEnd::Target ? StopReason::Target : StopReason::Deadline);
+        }
     }
 }
 
@@ -284,6 +294,7 @@ Stop Debugger::stepi() {
 std::optional<Stop> Debugger::begin_with_target(std::function<bool(const I8085&)> target, StopReason reason) {
     Active a;
     a.until = m_.now() + kContinueLimit;
+    a.limit = kContinueLimit;  // for the message when it gives up
     a.stop_at_halt = true;
     a.target_as = reason;
     return begin(std::move(a), std::move(target));

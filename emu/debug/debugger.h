@@ -351,7 +351,10 @@ public:
     // `watch` names in it (nullopt: no such part or field).
     periph::Description describe(const periph::Part& part) const;
     std::optional<std::int64_t> part_value(std::string_view part, std::string_view watch) const;
-    std::vector<Frame> backtrace() const;
+    std::vector<Frame> backtrace() const;  // a caller's line: its CALL's (or RST's), as gdb shows it
+    // Where the program is, to show: the PC, or the HLT's address while the CPU is halted (its PC
+    // is past the HLT; gdb shows an exited program where it ended).
+    std::uint16_t where() const;
 
     // Every outside input applied so far, with its T-state (Machine::input_log).
     const std::vector<InputEvent>& input_log() const { return m_.input_log(); }

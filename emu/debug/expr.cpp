@@ -48,6 +48,8 @@ std::optional<std::uint8_t> flag_named(std::string_view n) {
     return std::nullopt;
 }
 
+bool read_only_named(std::string_view n) { return n == "T" || n == "TIME"; }
+
 std::uint16_t read_register(const Machine& m, RegId r) {
     const Registers& x = m.cpu().regs();
     switch (r) {
@@ -263,7 +265,7 @@ private:
         auto machine_name = [&]() -> int {
             if (const auto r = register_named(name)) return add({K::Reg, static_cast<std::int64_t>(*r), -1, -1, col});
             if (const auto f = flag_named(name)) return add({K::Flag, *f, -1, -1, col});
-            if (dollar && (name == "T" || name == "TIME")) return add({K::Time, 0, -1, -1, col});
+            if (dollar && read_only_named(name)) return add({K::Time, 0, -1, -1, col});
             return -1;
         };
         auto symbol = [&]() -> int {

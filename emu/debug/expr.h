@@ -84,5 +84,7 @@ std::optional<RegId> register_named(std::string_view upper_name);
 std::uint16_t read_register(const Machine& m, RegId r);
 // The flag bit of S Z AC P CY V K (isa::Flag), or nullopt.
 std::optional<std::uint8_t> flag_named(std::string_view upper_name);
+// A $NAME the machine gives and nothing can set: $T and $TIME, the T-state counter.
+bool read_only_named(std::string_view upper_name);
 
 }  // namespace alp85::debug

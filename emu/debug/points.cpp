@@ -39,6 +39,11 @@ Debugger::Location Debugger::locate(std::string_view text) const {
     if (colon != std::string_view::npos && colon > 0) {
         const std::string_view num = t.substr(colon + 1);
         if (!num.empty() && std::all_of(num.begin(), num.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+            if (num.size() > 9) {  // beyond an int: no source file is that long
+                loc.error = fmt::format("line number {} is out of range", num);
+                loc.col = static_cast<int>(lead + colon) + 2;
+                return loc;
+            }
             loc = locate_line(t.substr(0, colon), std::stoi(std::string(num)));
             if (!loc.error.empty()) loc.col = static_cast<int>(lead) + 1;
             return loc;
@@ -336,6 +341,12 @@ std::optional<std::uint16_t> called_from(const Machine& m, const SymbolTable& pr
         default: return std::nullopt;
     }
 }
+// The CALL (or RST) that pushed the return address `w` (called_from found one there).
+std::uint16_t call_site(const Machine& m, std::uint16_t w) {
+    const auto call = static_cast<std::uint16_t>(w - 3);
+    const isa::Flow f = isa::flow_of(m.peek(call), m.cpu().variant() == Variant::I8080);
+    return f == isa::Flow::Call || f == isa::Flow::CallIf ? call : static_cast<std::uint16_t>(w - 1);
+}
 }  // namespace
 
 std::optional<std::uint16_t> Debugger::return_slot() const {
@@ -344,10 +355,17 @@ std::optional<std::uint16_t> Debugger::return_slot() const {
     return f[1].slot;
 }
 
+std::uint16_t Debugger::where() const {
+    const std::uint16_t pc = m_.cpu().regs().pc;
+    const auto hlt = static_cast<std::uint16_t>(pc - 1);
+    return m_.cpu().halted() && m_.peek(hlt) == 0x76 ? hlt : pc;
+}
+
 std::vector<Frame> Debugger::backtrace() const {
     std::vector<Frame> frames;
     const Registers& r = m_.cpu().regs();
-    frames.push_back({r.pc, 0, program_.routine_at(r.pc), program_.line_of(r.pc)});
+    const std::uint16_t at = where();
+    frames.push_back({at, 0, program_.routine_at(at), program_.line_of(at)});
     // A frame is accepted when its call's target is at or a little before the frame inside it
     // (a routine's code follows its entry); the first call-like word that does not chain ends the
     // stack: above it lie words of an older stack (the monitor's, before LXI SP). So does a gap of
@@ -367,7 +385,8 @@ std::vector<Frame> Debugger::backtrace() const {
         const auto target = called_from(m_, program_, w);
         if (!target) continue;  // pushed data
         if (*target > inner || inner - *target >= kRoutineReach) break;
-        frames.push_back({w, s, program_.routine_at(w), program_.line_of(w)});  // named as finish names it
+        // named as finish names it, at the line of its call (gdb's and DAP's "called from here")
+        frames.push_back({w, s, program_.routine_at(w), program_.line_of(call_site(m_, w))});
         inner = w;
         last_slot = slot + 2;
     }

@@ -99,7 +99,7 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     debug::Debugger& d = shell.debugger();
     Machine& m = d.machine();
     const std::uint16_t pc = m.cpu().regs().pc;
-    const auto pc_line = d.program().line_of(pc);
+    const auto pc_line = d.program().line_of(d.where());  // a halted CPU: its HLT's line
     if (pc != p.last_pc) {
         if (pc_line) p.show(*pc_line);
         p.last_pc = pc;

@@ -158,6 +158,16 @@ std::optional<std::string> SymbolTable::data_name_at(std::uint16_t value) const 
     return std::nullopt;
 }
 
+std::optional<std::string> SymbolTable::data_name_near(std::uint16_t value) const {
+    if (auto n = data_name_at(value)) return n;
+    std::optional<std::pair<std::uint16_t, std::string>> below;
+    if (auto it = labels_.upper_bound(value); it != labels_.begin()) below = *std::prev(it);
+    if (auto it = equates_.upper_bound(value); it != equates_.begin())
+        if (const auto& e = *std::prev(it); e.first > 0xFF && (!below || e.first > below->first)) below = e;
+    if (!below || value - below->first >= 256) return std::nullopt;
+    return below->second + "+" + std::to_string(value - below->first);
+}
+
 std::optional<std::string> SymbolTable::label_at(std::uint16_t addr) const {
     if (auto it = labels_.find(addr); it != labels_.end()) return it->second;
     return std::nullopt;

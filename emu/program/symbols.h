@@ -46,6 +46,9 @@ public:
     // The name for a 16-bit immediate (LXI): a label, or an EQU/SET name only for values above
     // 00FFH, since small EQUs are usually 8-bit constants (KMODE EQU 0 would name LXI H,0).
     std::optional<std::string> data_name_at(std::uint16_t value) const;
+    // The datum `value` is in, as gdb's info symbol names it: data_name_at's name, or "NAME+N"
+    // from the nearest such name below (N < 256; sizes are not known, the next name ends it).
+    std::optional<std::string> data_name_near(std::uint16_t value) const;
     // A label defined exactly here (for "LOOP:" lines in a listing).
     std::optional<std::string> label_at(std::uint16_t addr) const;
     // The name of code at `addr`: a label, or an entry point named by EQU/SET (a value above 00FFH

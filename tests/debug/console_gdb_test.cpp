@@ -10,6 +10,8 @@
 #include <fstream>
 #include <regex>
 
+#include <fmt/format.h>
+
 #include "emu/program/firmware.h"
 #include "emu/script/debug_shell.h"
 
@@ -140,8 +142,10 @@ TEST_F(Gdb, UpDownFrameSelectTheCallers) {
     run("break DELAY");
     run("press EXEC");
     const std::string up = run("up");
-    EXPECT_EQ(up.rfind("#1  0CC7H in O42+12", 0), 0u) << up;
-    EXPECT_NE(up.find("CALL    INPUT"), std::string::npos) << up;  // the source line at the return address
+    // gdb and DAP show a caller at the line of its call: O42's CALL DELAY (thesis.asm:758, L669),
+    // not the CALL INPUT after it, where it returns to.
+    EXPECT_EQ(up.rfind("#1  0CC7H in O42+12 at thesis.asm:758\n", 0), 0u) << up;
+    EXPECT_NE(up.find("CALL    DELAY"), std::string::npos) << up;
     EXPECT_EQ(run("up").rfind("#2 ", 0), 0u);
     EXPECT_NE(shell.execute("up").find("Initial frame selected; you cannot go up."), std::string::npos);
     EXPECT_EQ(run("down").rfind("#1 ", 0), 0u);
@@ -149,8 +153,106 @@ TEST_F(Gdb, UpDownFrameSelectTheCallers) {
     EXPECT_NE(shell.execute("down").find("Bottom (innermost) frame selected; you cannot go down."), std::string::npos);
     EXPECT_EQ(run("frame 2").rfind("#2 ", 0), 0u);
     EXPECT_EQ(run("f").rfind("#2 ", 0), 0u);
-    // list shows the selected frame's source: LOOP's CALL INPUT (L32) among the lines
-    EXPECT_NE(run("list").find("; L32"), std::string::npos);
+    // list shows the selected frame's source: LOOP's CALL OUT (L31) among the lines
+    EXPECT_NE(run("list").find("; L31"), std::string::npos);
+}
+
+// Item 4: the backtrace's callers are at their CALLs' lines; LOOP calls OUT at thesis.asm:83 (L31).
+TEST_F(Gdb, BacktraceShowsCallersAtTheirCalls) {
+    enter_line();
+    run("break OUT");
+    run("press EXEC");
+    ASSERT_EQ(m().cpu().regs().pc, symbol("OUT"));
+    const std::string bt = run("bt");
+    EXPECT_TRUE(std::regex_search(bt, std::regex(R"(\n#1 .* at thesis\.asm:83\n)"))) << bt;
+    const std::string f = run("frame 1");
+    EXPECT_NE(f.find(" at thesis.asm:83\n83\t"), std::string::npos) << f;
+    EXPECT_NE(f.find("CALL    OUT"), std::string::npos) << f;
+}
+
+// Item 5: after the main program's HLT (thesis.asm:87, after SOBE's CALL BITTI; three bytes) the PC
+// is past it, at ADDSUB; the stop is shown at the HLT.
+TEST_F(Gdb, AHaltedCpuIsShownAtItsHlt) {
+    run("set PC = SOBE + 3");
+    const std::string s = run("continue");
+    EXPECT_NE(s.find("the CPU halted"), std::string::npos) << s;
+    EXPECT_NE(s.find(" at thesis.asm:87\n87\t"), std::string::npos) << s;
+    EXPECT_EQ(s.find("ADDSUB"), std::string::npos) << s;
+    EXPECT_EQ(run("bt").rfind(fmt::format("#0  {:04X}H in SOBE+3 at thesis.asm:87", symbol("SOBE") + 3), 0), 0u);
+}
+
+// Items 1 and 2: breakpoint commands run at every stop, a script command's too; `silent` keeps
+// the stop quiet; echo and output print without a new line of their own.
+TEST_F(Gdb, CommandsRunAtAStopInsideAScriptCommand) {
+    enter_line();
+    run("set $N = 0");
+    run("break OUT");
+    for (const char* line : {"commands", "silent", "set $N = $N + 1", "echo N=", "output $N", "echo \\n", "end"}) run(line);
+    const std::string hit = run("press EXEC");
+    ASSERT_EQ(m().cpu().regs().pc, symbol("OUT"));
+    EXPECT_EQ(hit.find("Breakpoint 1"), std::string::npos) << hit;
+    EXPECT_TRUE(std::regex_search(hit, std::regex(R"((^|\n)N=[^\n]*\(1\)\n)"))) << hit;
+    EXPECT_NE(run("print $N").find("(1)"), std::string::npos);
+}
+
+// Item 1: commands that resume the run end their list, and the stop they reach runs its commands
+// in turn, not one list inside another (that overflowed the stack); the prompt comes back.
+TEST_F(Gdb, ResumingCommandsDoNotNest) {
+    for (const char* resume : {"jump ANWEIN", "advance ANWEIN", "run 1ms"}) {
+        run("delete");
+        run("break ANWEIN");
+        run("commands");
+        run(resume);
+        run("end");
+        // ANWEIN, the key poll, is called again some 60 T-states after it returns: the commands
+        // would resume forever; after 10000 stops the prompt comes back and says why.
+        const std::string c = run("continue");
+        EXPECT_NE(c.find("Stopped: the commands of breakpoint"), std::string::npos) << resume << c.substr(c.size() - std::min<std::size_t>(c.size(), 400));
+        EXPECT_EQ(m().cpu().regs().pc, symbol("ANWEIN")) << resume;
+        EXPECT_NE(run("print 6*7").find("= 2AH (42)"), std::string::npos) << resume;  // 6*7 = 42 = 2AH
+    }
+}
+
+// Item 3: finish inside DGIR, which waits for four digits, gives up after the guard of machine
+// time and says why.
+TEST_F(Gdb, FinishThatGivesUpSaysWhy) {
+    run("type R 7 0 8 0 0 EXEC");
+    run("wait display \"?.=----\" timeout 200ms");
+    run("break DGIR1");
+    run("continue");
+    ASSERT_EQ(m().cpu().regs().pc, symbol("DGIR1"));
+    run("delete");
+    const std::string f = run("finish");
+    EXPECT_NE(f.find("the routine did not return within 600 s of simulated time"), std::string::npos) << f;
+}
+
+// Item 6: smaller gdb habits.
+TEST_F(Gdb, InfoSymbolNamesAByteOfAWord) {
+    // YAC EQU 1B32H, a word: 1B33H is its high byte.
+    EXPECT_EQ(run("info symbol 1B33H"), "YAC + 1\n");
+}
+
+TEST_F(Gdb, RunUntilSaysItPassesBreakpointsAndWhereItStopped) {
+    run("set SP = 20AEH");
+    run("set PC = SOBE");
+    run("break SOBE");
+    const std::string r = run("run until BITTI");
+    EXPECT_NE(r.find("run until does not stop at breakpoints"), std::string::npos) << r;
+    EXPECT_NE(r.find(fmt::format("BITTI ({:04X}H) at thesis.asm:659\n", symbol("BITTI"))), std::string::npos) << r;
+}
+
+TEST_F(Gdb, AnXCountBeyondAnyIntIsNamed) {
+    const std::string x = shell.execute("x/" + std::string(40, '1') + "xb 0");
+    EXPECT_NE(x.find("error: bad count '" + std::string(40, '1') + "'"), std::string::npos) << x;
+    EXPECT_EQ(x.find("stoi"), std::string::npos) << x;
+}
+
+TEST_F(Gdb, TheTStateCounterIsReadOnly) {
+    run("stepi");
+    const std::string t = shell.execute("set $T = 0");
+    EXPECT_NE(t.find("error: $T is read-only"), std::string::npos) << t;
+    EXPECT_NE(run("print $T").find("= "), std::string::npos);
+    EXPECT_EQ(run("print $T == 0").find("(1)"), std::string::npos);  // the machine's time, not 0
 }
 
 TEST_F(Gdb, JumpContinuesAtTheLocation) {

@@ -1,7 +1,8 @@
 // libFuzzer target: the debugger's expressions and its console must answer any text with a value
 // or an error - never a crash, a hang or undefined behaviour. The first byte picks: an expression
 // (parsed both ways a bare name can be read, evaluated, assigned), or console lines (commands
-// that only look, set, or step once; no unbounded run, no files written).
+// that only look, set, step once or run a few T-states; breakpoint commands ... end that resume
+// the run; no unbounded run, no files written).
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -14,9 +15,10 @@ namespace {
 
 using namespace alp85;
 
-// The console commands fed to it: looking, breakpoints, setting, single steps. Runs that go on
-// until something happens (continue, finish, run, wait ...) and commands that write files are
-// left out: they are bounded by machine time, not by the fuzzer's patience.
+// The console commands fed to it: looking, breakpoints and their commands, setting, single steps,
+// runs of a few T-states. Runs that go on until something happens (continue, finish, a long run,
+// wait ...) and commands that write files are left out: they are bounded by machine time, not by
+// the fuzzer's patience.
 bool allowed(std::string_view line) {
     const auto a = line.find_first_not_of(" \t");
     if (a == std::string_view::npos) return true;
@@ -26,7 +28,7 @@ bool allowed(std::string_view line) {
     for (std::string_view w : {"break", "b", "tbreak", "watch", "rwatch", "awatch", "delete", "d", "enable", "disable",
                                "condition", "ignore", "print", "p", "set", "display", "undisplay", "x", "list", "l",
                                "disassemble", "backtrace", "bt", "info", "i", "history", "expect", "help", "show", "end",
-                               "commands"})
+                               "commands", "silent", "echo", "output"})
         if (word == w) return true;
     // One instruction: a count could ask for billions. step and next (to the next source line)
     // are left out: without source lines, or on a halted CPU, they run up to the debugger's
@@ -35,16 +37,24 @@ bool allowed(std::string_view line) {
     // too - 10 minutes of machine time, bounded but long (a 1-hour run's one "timeout").
     for (std::string_view w : {"stepi", "si", "reverse-stepi", "rsi"})
         if (word == w) return bare;
+    // A run of at most 9999 T-states (run 24t): bounded however the program was changed. Given at
+    // a breakpoint's stop by its commands, it resumes the run, and the stop it reaches runs its
+    // own commands in turn (the little program's loop hits a breakpoint at 2 again and again).
+    if (word == "run" && !bare) {
+        const std::string_view t = line.substr(line.find_first_not_of(" \t", b));
+        const auto digits = t.find_first_not_of("0123456789");
+        return digits > 0 && digits <= 4 && digits != std::string_view::npos && (t.substr(digits) == "t" || t.substr(digits) == "T");
+    }
     return false;
 }
 
 script::DebugShell& shell() {
     static script::DebugShell* s = [] {
         auto* sh = new script::DebugShell(script::SessionOptions{});
-        // A little program at 0 to step through: MVI A,5; DCR A; JNZ 2; HLT.
-        for (const char* line : {"set mem 0 = 3EH", "set mem 1 = 5", "set mem 2 = 3DH", "set mem 3 = 0C2H",
-                                 "set mem 4 = 2", "set mem 5 = 0", "set mem 6 = 76H"})
-            sh->execute(line);
+        // A little program at 0 to step through: MVI A,5; DCR A; JNZ 2; HLT. (The script's set mem
+        // takes the bytes after the address; "set mem 0 = 3EH" was refused, and memory stayed empty.)
+        sh->execute("set mem 0 3EH 05H 3DH 0C2H 02H 00H 76H");
+        sh->execute("set PC = 0");
         return sh;
     }();
     return *s;

@@ -4,7 +4,7 @@ Every expectation is the documented behaviour (README's exit statuses, each --he
 tools' own earlier output.
 
   python3 cli_robust.py BIN_DIR WORK_DIR CASE      (CASE: same_path, signals, bad_input, messages,
-                                                    disasm, debug_interrupt)
+                                                    disasm, debug_interrupt, debug_commands, ...)
 """
 import os
 import shutil
@@ -323,6 +323,26 @@ def disasm():
     check(a == b, f"the --source output assembles to other bytes:\n{a}\n{b}")
 
 
+def debug_commands():
+    """Breakpoint commands that resume the run (jump, advance, run) end their list, as gdb's do,
+    instead of running the next stop's commands inside them until the stack overflows (a SIGSEGV,
+    exit 139); the session goes on to the next command."""
+    d = fresh("debug_commands")
+    # The issue's reproduction, exactly: printf '...' | alp85 debug thesis-fixed --batch
+    for resume in ("jump ANWEIN", "advance ANWEIN", "run 1ms"):
+        for extra in ([], ["--no-history"]):
+            stdin = f"break ANWEIN\ncommands\n{resume}\nend\ncontinue\nprint 6*7\n"
+            what = f"debug --batch {' '.join(extra)} with '{resume}' in commands"
+            try:
+                rc, out, err = run([ALP85, "debug", "thesis-fixed", "--batch"] + extra, d, stdin=stdin, timeout=250)
+            except subprocess.TimeoutExpired:
+                check(False, f"{what}: no prompt again within 250 s")
+                continue
+            check(rc == 0, f"{what}: exit {rc}, expected 0: {err[-500:]}")
+            tail = out[out.rfind("(alp85) print 6*7"):] if "(alp85) print 6*7" in out else ""
+            check("42" in tail, f"{what}: print 6*7 did not answer 42 after the run:\n{out[-800:]}")
+
+
 def determinism():
     """The same inputs give the same bytes: a trace and a recording made twice are identical."""
     d = fresh("determinism")
@@ -336,7 +356,7 @@ def determinism():
     check(outs[0] == outs[1] and len(outs[0]) > 100000, f"two traces differ ({len(outs[0])} and {len(outs[1])} bytes)")
 
 
-{"determinism": determinism, "debug_expressions": debug_expressions, "same_path": same_path, "signals": signals, "bad_input": bad_input, "messages": messages, "disasm": disasm,
+{"determinism": determinism, "debug_commands": debug_commands, "debug_expressions": debug_expressions, "same_path": same_path, "signals": signals, "bad_input": bad_input, "messages": messages, "disasm": disasm,
  "debug_interrupt": debug_interrupt}[CASE]()
 if failures:
     print(f"{len(failures)} failure(s)")
