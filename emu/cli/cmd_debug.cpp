@@ -170,7 +170,7 @@ void add_debug_command(CLI::App& app, int& status) {
                 boot.firmware.push_back(f);
                 continue;
             }
-            if (const std::string why = input_problem(f); !why.empty()) {
+            if (const std::string why = program_file_problem(f); !why.empty()) {
                 std::cerr << argument_error(
                     "alp85 debug", f,
                     why.rfind("no such file", 0) == 0

@@ -92,7 +92,7 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
         std::filesystem::path path = config.program;
         if (path.is_relative()) path = config.cwd / path;
         map.program_path = path.string();
-        if (const std::string why = input_problem(path); !why.empty()) throw RequestError(why);
+        if (const std::string why = program_file_problem(path); !why.empty()) throw RequestError(why);
         session.add_input(path, "the launched program");  // the REPL's save, record, plot must not replace it
         LoadOptions lo;
         lo.assembler.defines = config.defines;

@@ -162,7 +162,7 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
             case Op::Load: {
                 const auto path = resolve(c.text);
                 const int col = col_of(c, c.text);
-                if (const std::string why = input_problem(path); !why.empty()) {
+                if (const std::string why = program_file_problem(path); !why.empty()) {
                     err(c, col, why);
                     break;
                 }

@@ -79,6 +79,14 @@ std::string input_problem(const std::filesystem::path& path) {
     return {};
 }
 
+std::string program_file_problem(const std::filesystem::path& path) {
+    if (std::string why = input_problem(path); !why.empty()) return why;
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISFIFO(st.st_mode))
+        return quoted(path) + " is a FIFO, not a file (a program is read more than once)";
+    return {};
+}
+
 std::string read_input(const std::filesystem::path& path, FileKind kind) {
     if (std::string why = input_problem(path); !why.empty()) throw InputError(why);
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);

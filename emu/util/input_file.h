@@ -40,6 +40,10 @@ public:
 // Too many levels of symbolic links"). Does not read the file.
 std::string input_problem(const std::filesystem::path& path);
 
+// input_problem(), and a FIFO refused too: for a program, which is read when a script is checked
+// and again when it runs (a FIFO would give its bytes once, then wait for a writer).
+std::string program_file_problem(const std::filesystem::path& path);
+
 // The whole file. Throws InputError with input_problem()'s sentence, or "'x' is larger than N
 // bytes, the most a KIND may be", or the read's error.
 std::string read_input(const std::filesystem::path& path, FileKind kind);

@@ -325,6 +325,7 @@ def arguments():
                        (["disasm", "x.asm", "--map", "d.hex"], "directory"), (["run", "/dev/null"], "device"),
                        (["debug", "/dev/null", "--batch"], "device"), (["script", "d.alp"], "directory"),
                        (["run", "dangling.asm"], "gone.asm"), (["debug", "dangling.asm", "--batch"], "gone.asm"),
+                       (["run", "p.asm"], "FIFO"), (["debug", "p.asm", "--batch"], "FIFO"),
                        (["cpm", "d.asm"], "directory"), (["gcode", "d.asm", "-o", "out.hex"], "directory")]:
         rc, _, err = run([ALP85] + args, d, stdin="")
         check(rc in (1, 2) and what in err and "no such file" not in err, f"{' '.join(args)}: exit {rc}: {err.strip()[:200]}")
