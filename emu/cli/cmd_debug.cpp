@@ -128,7 +128,9 @@ void add_debug_command(CLI::App& app, int& status) {
         "Examples:\n"
         "  alp85 debug thesis-fixed\n"
         "  alp85 debug thesis-fixed --script session.gdb --batch\n"
-        "Exit status: 0, 1 a command failed in a batch session, 2 a usage error.");
+        "Exit status: 0, 1 a command failed in a batch session (a save, record or plot onto a file the\n"
+        "session reads is such a failure), 2 a usage error (a --script that is missing, unreadable,\n"
+        "empty or no file).");
     cmd->callback([args, &status] {
         // The script is read whole before anything runs: one that cannot be read, or is empty, is
         // a usage error, not a session that silently does nothing.
