@@ -4,7 +4,7 @@ file system refuses, a recording that would not fit in memory, and arguments tha
 or misnamed. Every expectation is the documented behaviour (docs/testing.md "Bad input",
 docs/scripting.md, each --help), never the tools' own earlier output.
 
-  python3 files_robust.py BIN_DIR WORK_DIR CASE   (CASE: script_outputs, dap_outputs, unbounded,
+  python3 files_robust.py BIN_DIR WORK_DIR CASE   (CASE: script_outputs, dap_outputs, gui_outputs, unbounded,
                                                    debug_script, fs_errors, record_cap, arguments)
 """
 import json
@@ -202,6 +202,24 @@ def dap_outputs():
     check(snapshot(d) == before, "dap REPL save x.asm: the program changed")
 
 
+def gui_outputs():
+    """gui --screenshot on a file the script includes: refused (2) after the script is read, the
+    file intact. The window needs a display: xvfb-run (SKIP when it is missing)."""
+    xvfb = shutil.which("xvfb-run")
+    if not xvfb:
+        print("SKIP: xvfb-run is missing")
+        return
+    d = fresh("gui_outputs")
+    write(d, "inc.alp", "reset\n")
+    write(d, "g.alp", "include inc.alp\nmonitor\nreset\nrun 10ms\n")
+    e = dict(os.environ)
+    before = snapshot(d)
+    p = subprocess.run([xvfb, "-a", ALP85, "gui", "--script", "g.alp", "--screenshot", "inc.alp"], cwd=d,
+                       capture_output=True, text=True, env=e, timeout=120)
+    check(p.returncode == 2 and "destroy" in p.stderr, f"gui --screenshot an included script: exit {p.returncode}: {p.stderr}")
+    check(snapshot(d) == before, "gui --screenshot an included script: files changed")
+
+
 def unbounded():
     """A device or an endless FIFO as an input: refused at once (seconds, not gigabytes)."""
     d = fresh("unbounded")
@@ -359,7 +377,7 @@ def arguments():
             check(rc == 2 and "deeper than 16" in err, f"17 levels of include: exit {rc}: {err.strip()[:300]}")
 
 
-{"script_outputs": script_outputs, "dap_outputs": dap_outputs, "unbounded": unbounded, "debug_script": debug_script,
+{"script_outputs": script_outputs, "dap_outputs": dap_outputs, "gui_outputs": gui_outputs, "unbounded": unbounded, "debug_script": debug_script,
  "fs_errors": fs_errors, "record_cap": record_cap, "arguments": arguments}[CASE]()
 if failures:
     print(f"{len(failures)} failure(s)")
