@@ -1,6 +1,7 @@
 #include "emu/board/snapshot_file.h"
 
 #include "emu/util/atomic_file.h"
+#include "emu/util/input_file.h"
 
 #include <zlib.h>
 
@@ -92,9 +93,12 @@ void write_atomic(const std::filesystem::path& path, const std::vector<std::uint
 }
 
 std::vector<std::uint8_t> read_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw SnapshotError("cannot open snapshot '" + path.string() + "'");
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    try {
+        const std::string bytes = read_input(path, FileKind::Snapshot);
+        return {bytes.begin(), bytes.end()};
+    } catch (const InputError& e) {
+        throw SnapshotError(std::string("snapshot: ") + e.what());
+    }
 }
 
 const Section& find(const std::vector<Section>& sections, std::string_view tag) {

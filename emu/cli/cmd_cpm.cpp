@@ -14,6 +14,7 @@
 
 #include "emu/util/atomic_file.h"
 #include "emu/cli/commands.h"
+#include "emu/util/input_file.h"
 #include "emu/cpm/cpm.h"
 #include "emu/debug/trace_csv.h"
 
@@ -69,18 +70,12 @@ int run_cpm(const CpmArgs& args) {
         return kUsageError;
     }
     if (refuse_output_clash("cpm", {{args.program, "the program"}}, {{args.trace, "--trace"}})) return kUsageError;
-    if (std::filesystem::is_directory(args.program)) {
-        std::fprintf(stderr, "alp85 cpm: %s\n", input_file_problem(args.program).c_str());
-        return 1;
-    }
-    std::ifstream in(args.program, std::ios::binary);
-    if (!in) {
-        std::fprintf(stderr, "alp85 cpm: cannot open %s\n", args.program.c_str());
-        return 1;
-    }
-    std::vector<std::uint8_t> image((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) {
-        std::fprintf(stderr, "alp85 cpm: cannot read %s\n", args.program.c_str());
+    std::vector<std::uint8_t> image;
+    try {
+        const std::string bytes = read_input(args.program, FileKind::Binary);
+        image.assign(bytes.begin(), bytes.end());
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "alp85 cpm: %s\n", e.what());
         return 1;
     }
     CpmMachine machine(variant_of(args.cpu));
@@ -152,7 +147,9 @@ void add_cpm_command(CLI::App& app, int& status) {
         "file cannot be read or written, 2 a usage error (a bad number, a --trace that is the program)\n"
         "or a HLT outside the BDOS, 3 an undefined BDOS\n"
         "function, 4 the T-state limit was reached, 5 stopped by a debug hook.");
-    cmd->callback([args, &status] { status = run_cpm(*args); });
+    cmd->callback([args, cmd, &status] {
+        status = refuse_empty_outputs("cpm", *cmd, {"--trace"}) ? kUsageError : run_cpm(*args);
+    });
 }
 
 }  // namespace alp85::cli

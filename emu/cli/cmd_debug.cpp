@@ -12,12 +12,14 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string_view>
 
 #include <editline/readline.h>
 #include <fmt/format.h>
 
 #include "emu/cli/commands.h"
+#include "emu/util/input_file.h"
 #include "emu/program/firmware.h"
 #include "emu/script/debug_shell.h"
 
@@ -126,12 +128,30 @@ void add_debug_command(CLI::App& app, int& status) {
         "Examples:\n"
         "  alp85 debug thesis-fixed\n"
         "  alp85 debug thesis-fixed --script session.gdb --batch\n"
-        "Exit status: 0, 1 a command failed in a batch session, 2 a usage error.");
+        "Exit status: 0, 1 a command failed in a batch session (a save, record or plot onto a file the\n"
+        "session reads is such a failure), 2 a usage error (a --script that is missing, unreadable,\n"
+        "empty or no file).");
     cmd->callback([args, &status] {
-        if (!args->script.empty() && !std::filesystem::is_regular_file(args->script)) {
-            std::cerr << argument_error("alp85 debug", args->script, fmt::format("no such script '{}'", args->script));
-            status = kUsageError;
-            return;
+        // The script is read whole before anything runs: one that cannot be read, or is empty, is
+        // a usage error, not a session that silently does nothing.
+        std::string script_text;
+        if (!args->script.empty()) {
+            try {
+                script_text = read_input(args->script, FileKind::Script);
+            } catch (const InputError& e) {
+                const std::string why = e.what();
+                std::cerr << argument_error("alp85 debug", args->script,
+                                            why.rfind("no such file", 0) == 0 ? fmt::format("no such script '{}'", args->script)
+                                                                               : why);
+                status = kUsageError;
+                return;
+            }
+            if (script_text.empty()) {
+                std::cerr << argument_error("alp85 debug", args->script,
+                                            fmt::format("the script '{}' is empty: no commands to run", args->script));
+                status = kUsageError;
+                return;
+            }
         }
         script::SessionOptions o;
         o.base_dir = args->script.empty() ? std::filesystem::current_path()
@@ -152,14 +172,18 @@ void add_debug_command(CLI::App& app, int& status) {
                 boot.firmware.push_back(f);
                 continue;
             }
-            if (!std::filesystem::is_regular_file(f)) {
+            if (const std::string why = program_file_problem(f); !why.empty()) {
                 std::cerr << argument_error(
-                    "alp85 debug", f, fmt::format("'{}' is neither built-in firmware (thesis-fixed, thesis) nor a file", f));
+                    "alp85 debug", f,
+                    why.rfind("no such file", 0) == 0
+                        ? fmt::format("'{}' is neither built-in firmware (thesis-fixed, thesis) nor a file", f)
+                        : fmt::format("{} (nor built-in firmware: thesis-fixed, thesis)", why));
                 status = kUsageError;
                 return;
             }
             boot.images.push_back({std::filesystem::absolute(f), std::nullopt});
         }
+        if (!args->script.empty()) shell.session().add_input(std::filesystem::absolute(args->script), "the script");
         if (const auto booted = shell.session().boot(boot); booted.status != script::Session::Status::Ok) {
             std::cerr << "alp85 debug: " << booted.message << '\n';
             status = kUsageError;
@@ -181,7 +205,7 @@ void add_debug_command(CLI::App& app, int& status) {
 
         bool ok = true;
         if (!args->script.empty()) {
-            std::ifstream in(args->script);
+            std::istringstream in(script_text);
             ok = run_lines(shell, in, args->script, true);
         }
         if (args->batch) {

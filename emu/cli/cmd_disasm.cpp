@@ -61,7 +61,8 @@ int run_disasm(const DisasmArgs& args) {
         for (const std::string& m : args.maps) inputs.push_back({m, "the map"});
         if (refuse_output_clash("disasm", inputs, {{args.output, "-o"}})) return 2;
     }
-    if (!args.image.empty() && std::filesystem::is_directory(args.image)) return fail(input_file_problem(args.image), 1);
+    if (!args.image.empty())
+        if (const std::string why = input_file_problem(args.image); !why.empty()) return fail(why, 1);
 
     SymbolTable symbols;
     std::vector<ImageSegment> segments;
@@ -143,7 +144,9 @@ void add_disasm_command(CLI::App& app, int& status) {
         "Exit status: 0 success, 1 an image or map that cannot be read, no bytes in the range, or an\n"
         "output that cannot be written, 2 a usage error (a bad address, range or option, an output that\n"
         "is the image or a map).");
-    cmd->callback([args, &status] { status = run_disasm(*args); });
+    cmd->callback([args, cmd, &status] {
+        status = refuse_empty_outputs("disasm", *cmd, {"--output"}) ? kUsageError : run_disasm(*args);
+    });
 }
 
 }  // namespace alp85::cli

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "emu/cli/commands.h"
+#include "emu/util/input_file.h"
 #include "emu/gcode/gcode.h"
 #include "emu/gcode/path_table.h"
 #include "emu/util/atomic_file.h"
@@ -27,7 +28,7 @@ void add_gcode_command(CLI::App& app, int& status) {
     CLI::App* cmd = app.add_subcommand("gcode", "G-code to the master program's path table (docs/contours.md)");
     cmd->add_option("files", args->files, "G-code files (.nc); each one is a path the keypad chooses (1, 2, ...)")
         ->required()
-        ->check(CLI::ExistingFile);
+        ->check([](const std::string& f) { return input_problem(f); });  // a sentence for a link loop too
     cmd->add_option("-o,--output", args->out, "The path table as Intel HEX (load it with the master program)")->required();
     cmd->add_option("--method", args->method,
                     "How the master draws segments: thesis (its line routine, the default) or sampling (Watanabe and "
@@ -43,9 +44,13 @@ void add_gcode_command(CLI::App& app, int& status) {
         "before rounding, so an incremental program gives the table of the absolute one through the same\n"
         "points. F is rounded to whole mm/min, which must be 6 to 1500 (docs/contours.md).\n"
         "Exit status: 0 the table was written, 1 a file was refused (its errors are shown as\n"
-        "file:line:col: error: ...; nothing is written), 2 a usage error (-o naming a G-code file: nothing\n"
-        "is written).");
-    cmd->callback([args, &status] {
+        "file:line:col: error: ...; nothing is written), 2 a usage error (a G-code file that is missing or\n"
+        "no file, an empty -o, -o naming a G-code file: nothing is written).");
+    cmd->callback([args, cmd, &status] {
+        if (refuse_empty_outputs("gcode", *cmd, {"--output"})) {
+            status = kUsageError;
+            return;
+        }
         std::vector<NamedPath> inputs;
         for (const std::string& f : args->files) inputs.push_back({f, "the G-code file"});
         if (refuse_output_clash("gcode", inputs, {{args->out, "-o"}})) {
@@ -55,15 +60,15 @@ void add_gcode_command(CLI::App& app, int& status) {
         std::vector<std::vector<gcode::Entry>> paths;
         bool failed = false;
         for (const std::string& f : args->files) {
-            std::ifstream in(f, std::ios::binary);
-            std::stringstream text;
-            text << in.rdbuf();
-            if (!in) {
-                std::cerr << fmt::format("alp85 gcode: cannot read {}\n", f);
+            std::string text;
+            try {
+                text = read_input(f, FileKind::GCode);
+            } catch (const InputError& e) {
+                std::cerr << fmt::format("alp85 gcode: {}\n", e.what());
                 failed = true;
                 continue;
             }
-            gcode::Parsed p = gcode::parse(text.str());
+            gcode::Parsed p = gcode::parse(text);
             if (p.error) {
                 std::cerr << fmt::format("{}:{}:{}: error: {}\n", f, p.error->line, p.error->column, p.error->message);
                 failed = true;

@@ -1,17 +1,37 @@
 // alp85 gui [FIRMWARE...]: the ALP 85 and its machine tool in a window (emu/gui). Exit status: 0,
 // 1 the script (--script) or --expect-display failed or the screenshot cannot be written, 2 a
 // usage error or no display.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include <unistd.h>
 
+#include <fmt/format.h>
+
 #include "emu/cli/commands.h"
 #include "emu/gui/app.h"
 #include "emu/gui/controls.h"
 
 namespace alp85::cli {
+namespace {
+
+// "" when `spec` is FILE:LINE with LINE a line number (1 to 10^7, far past any source), given with --debug.
+std::string click_line_problem(const std::string& spec, bool debug) {
+    if (!debug) return "needs --debug (the source rows it clicks are in the debugger's panes)";
+    const auto colon = spec.rfind(':');
+    if (colon == std::string::npos || colon == 0) return "expected FILE:LINE";
+    const std::string line = spec.substr(colon + 1);
+    if (line.empty() || line.size() > 8 || !std::all_of(line.begin(), line.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return "LINE must be a line number from 1 to 10000000";
+    const long n = std::stol(line);
+    if (n < 1 || n > 10'000'000) return "LINE must be a line number from 1 to 10000000";
+    return {};
+}
+
+}  // namespace
 
 void add_gui_command(CLI::App& app, int& status) {
     struct Args {
@@ -60,10 +80,29 @@ void add_gui_command(CLI::App& app, int& status) {
         "Without a display it exits with status 2; use `alp85 run` or `alp85 script` there.\n"
         "Exit status: 0, 1 the script or --expect-display failed or the screenshot cannot be written,\n"
         "2 a usage error (a bad number, a --screenshot that is an input) or no display.");
-    cmd->callback([args, &status] {
+    cmd->callback([args, cmd, &status] {
+        if (refuse_empty_outputs("gui", *cmd, {"--screenshot"})) {
+            status = kUsageError;
+            return;
+        }
+        // CLI11's range checks let NaN through (every comparison with it is false): a --seconds
+        // of NaN never ends the window.
+        if (!std::isfinite(args->seconds) || !std::isfinite(args->o.scale)) {
+            const bool seconds = !std::isfinite(args->seconds);
+            std::cerr << argument_error("alp85 gui", seconds ? fmt::format("{}", args->seconds) : fmt::format("{}", args->o.scale),
+                                        fmt::format("{} needs a finite number", seconds ? "--seconds" : "--scale"));
+            status = kUsageError;
+            return;
+        }
+        for (const std::string& spec : args->o.click_lines)
+            if (const std::string why = click_line_problem(spec, args->o.debug); !why.empty()) {
+                std::cerr << argument_error("alp85 gui", spec, "--click-line " + spec + ": " + why);
+                status = kUsageError;
+                return;
+            }
         std::vector<NamedPath> inputs = {{args->o.script, "the script"}};
         for (const std::string& f : args->o.firmware)  // a file, not a built-in name
-            if (std::filesystem::exists(f)) inputs.push_back({f, "the firmware source"});
+            if (std::error_code ec; std::filesystem::exists(f, ec)) inputs.push_back({f, "the firmware source"});
         if (refuse_output_clash("gui", inputs, {{args->o.screenshot, "--screenshot"}})) {
             status = kUsageError;
             return;

@@ -14,6 +14,7 @@
 
 #include "asm/pisa_asm.h"
 #include "emu/cli/commands.h"
+#include "emu/util/input_file.h"
 #include "emu/pisa/run.h"
 #include "emu/pisa/run_plot.h"
 #include "emu/plot/plot.h"
@@ -26,14 +27,6 @@ extern const char pisa_interp_source[];  // firmware/pisa/interp.pasm, embedded 
 namespace alp85::cli {
 namespace {
 
-std::optional<std::string> read_text(const std::string& path) {
-    if (std::filesystem::is_directory(path)) return std::nullopt;  // opens, but reads as an error
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 // The plot drawn to a file of the same extension beside the target, then read back for the
 // all-or-nothing write.
@@ -53,11 +46,16 @@ std::string plot_bytes(const std::string& target, const std::string& title, cons
             msg.replace(at, tmp.string().size(), target);
         throw std::runtime_error(msg);
     }
-    auto bytes = read_text(tmp.string());
+    // Our own temporary, just drawn: read back whole (a plot has no input cap).
+    std::ifstream in(tmp, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    const bool read = in.good() || in.eof();
+    in.close();
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
-    if (!bytes) throw std::runtime_error("cannot read back the plot " + target);
-    return *bytes;
+    if (!read) throw std::runtime_error("cannot read back the plot " + target);
+    return bytes.str();
 }
 
 }  // namespace
@@ -89,7 +87,11 @@ void add_pisa_command(CLI::App& app, int& status) {
         "nothing written), a run that did not end, or an output that cannot be written; 2 a usage error\n"
         "(an output that is the tape or the program, --record and --plot on one file, a --max-time that\n"
         "is not 0.001 to 10000000 s: nothing written).");
-    cmd->callback([args, &status] {
+    cmd->callback([args, cmd, &status] {
+        if (refuse_empty_outputs("pisa", *cmd, {"--record", "--plot"})) {
+            status = kUsageError;
+            return;
+        }
         auto ext = std::filesystem::path(args->plot).extension().string();
         if (!args->plot.empty() && ext != ".svg" && ext != ".png") {
             std::cerr << fmt::format("alp85 pisa: --plot {}: the extension must be .svg or .png\n", args->plot);
@@ -101,14 +103,15 @@ void add_pisa_command(CLI::App& app, int& status) {
             status = kUsageError;
             return;
         }
-        auto text = read_text(args->tape);
-        if (!text) {
-            const std::string why = input_file_problem(args->tape);
-            std::cerr << fmt::format("alp85 pisa: cannot read {}{}\n", args->tape, why.empty() ? "" : ": " + why);
+        std::string text;
+        try {
+            text = read_input(args->tape, FileKind::Tape);
+        } catch (const InputError& e) {
+            std::cerr << fmt::format("alp85 pisa: {}\n", e.what());
             status = 1;
             return;
         }
-        auto parsed = pisa::parse_tape(*text);
+        auto parsed = pisa::parse_tape(text);
         if (parsed.error) {
             std::cerr << fmt::format("{}:{}:{}: error: {}\n", args->tape, parsed.error->line, parsed.error->col,
                                      parsed.error->message);

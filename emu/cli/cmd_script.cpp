@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "emu/util/atomic_file.h"
+#include "emu/util/input_file.h"
 #include "emu/cli/commands.h"
 #include "emu/program/firmware.h"
 #include "emu/script/runner.h"
@@ -57,8 +58,13 @@ void add_script_command(CLI::App& app, int& status) {
         "  alp85 script test.alp --junit report.xml -v\n"
         "Exit status: 0 every script passed, 1 an expectation failed or an output (--trace, --junit)\n"
         "could not be written, 2 a usage or script error (a script that is missing or a directory, an\n"
-        "output that is a script or a file it loads, --trace and --junit on one file): then nothing runs.");
-    cmd->callback([args, &status] {
+        "output that is a script, an included script, a file it loads or restores, or an empty name;\n"
+        "--trace and --junit on one file; a save, record or plot onto any of those): then nothing runs.");
+    cmd->callback([args, cmd, &status] {
+        if (refuse_empty_outputs("script", *cmd, {"--junit", "--trace"})) {
+            status = kUsageError;
+            return;
+        }
         script::RunnerOptions o;
         if (firmware::have_monitor()) o.monitor_rom = firmware::monitor;
         o.out = &std::cout;
@@ -76,25 +82,23 @@ void add_script_command(CLI::App& app, int& status) {
             o.out_dir = args->out_dir;
         }
         for (const std::string& f : args->files)  // a missing one: prepare() says so, with the others
-            if (std::filesystem::is_directory(f)) {
-                std::cerr << fmt::format("alp85 script: {}; nothing was run\n", input_file_problem(f));
+            if (const std::string why = input_problem(f); !why.empty() && why.rfind("no such file", 0) != 0) {
+                std::cerr << fmt::format("alp85 script: {}; nothing was run\n", why);
                 status = 2;
                 return;
             }
+        o.outputs = {{args->trace, "--trace"}, {args->junit, "--junit"}};
         // Every script is checked before any runs: a script error stops everything (status 2).
         std::vector<std::vector<script::Command>> programs(args->files.size());
         std::vector<script::ParseError> errors;
-        for (std::size_t i = 0; i < args->files.size(); ++i) script::prepare(args->files[i], programs[i], errors, o);
-        std::vector<NamedPath> inputs;
+        std::vector<NamedPath> inputs;  // every file any script reads: no output may be one
         for (std::size_t i = 0; i < args->files.size(); ++i) {
+            std::vector<NamedPath> read;
+            script::prepare(args->files[i], programs[i], errors, o, &read);
             inputs.push_back({args->files[i], "the script"});
-            const std::filesystem::path dir = std::filesystem::path(args->files[i]).parent_path();
-            for (const script::Command& c : programs[i])
-                if (c.op == script::Op::Load && !c.text.empty())
-                    inputs.push_back({(std::filesystem::path(c.text).is_absolute() ? std::filesystem::path(c.text) : dir / c.text).string(),
-                                      "a program the script loads"});
+            inputs.insert(inputs.end(), read.begin(), read.end());
         }
-        if (refuse_output_clash("script", inputs, {{args->trace, "--trace"}, {args->junit, "--junit"}})) {
+        if (refuse_output_clash("script", inputs, o.outputs)) {
             status = 2;
             return;
         }

@@ -33,6 +33,9 @@ int column_of(std::string_view argument);
 // it writes anything).
 bool refuse_output_clash(std::string_view command, const std::vector<NamedPath>& inputs,
                          const std::vector<NamedPath>& outputs);
+// An output option given an empty name (`--junit ''`: an unset shell variable, not a request for
+// no file or the default name): reported as a usage error naming the option, and true.
+bool refuse_empty_outputs(std::string_view command, const CLI::App& cmd, std::initializer_list<const char*> options);
 // "" when `path` can be opened as an input file; else why not, naming it ("'x.com' is a
 // directory", "no such file 'x.com'").
 std::string input_file_problem(const std::string& path);

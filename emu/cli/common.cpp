@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "emu/cli/commands.h"
+#include "emu/util/input_file.h"
 
 namespace alp85::cli {
 namespace {
@@ -46,13 +47,21 @@ bool refuse_output_clash(std::string_view command, const std::vector<NamedPath>&
     return true;
 }
 
-std::string input_file_problem(const std::string& path) {
-    std::error_code ec;
-    const auto st = std::filesystem::status(path, ec);
-    if (!std::filesystem::exists(st)) return "no such file '" + path + "'";
-    if (std::filesystem::is_directory(st)) return "'" + path + "' is a directory, not a file";
-    return {};
+bool refuse_empty_outputs(std::string_view command, const CLI::App& cmd, std::initializer_list<const char*> options) {
+    for (const char* name : options) {
+        const CLI::Option* opt = cmd.get_option_no_throw(name);
+        if (!opt || opt->count() == 0) continue;
+        for (const std::string& value : opt->results())
+            if (value.empty()) {
+                std::cerr << argument_error("alp85 " + std::string(command), "",
+                                            std::string(name) + " needs a file name; nothing was run or written");
+                return true;
+            }
+    }
+    return false;
 }
+
+std::string input_file_problem(const std::string& path) { return input_problem(path); }
 
 CLI::Option* add_cpu_option(CLI::App* cmd, std::string& cpu, const std::string& help) {
     return cmd->add_option("--cpu", cpu, help)->check(CLI::IsMember({"8080", "8085"}))->capture_default_str();

@@ -6,6 +6,7 @@
 #include "emu/program/firmware.h"
 #include "emu/program/image_loader.h"
 #include "emu/script/parser.h"
+#include "emu/util/input_file.h"
 #include "emu/util/text.h"
 
 namespace alp85::dap {
@@ -91,7 +92,8 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
         std::filesystem::path path = config.program;
         if (path.is_relative()) path = config.cwd / path;
         map.program_path = path.string();
-        if (!std::filesystem::is_regular_file(path)) throw RequestError(fmt::format("no such file '{}'", path.string()));
+        if (const std::string why = program_file_problem(path); !why.empty()) throw RequestError(why);
+        session.add_input(path, "the launched program");  // the REPL's save, record, plot must not replace it
         LoadOptions lo;
         lo.assembler.defines = config.defines;
         try {
@@ -109,6 +111,7 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
         if (!config.map.empty()) {
             std::filesystem::path mp = config.map;
             if (mp.is_relative()) mp = config.cwd / mp;
+            session.add_input(mp, "the launched program's map");
             if (const std::string err = symbols.load_map_file(mp.string()); !err.empty()) throw RequestError(err);
         }
     }

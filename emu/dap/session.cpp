@@ -7,6 +7,7 @@
 #include "emu/dap/adapter.h"
 #include "emu/program/firmware.h"
 #include "emu/script/parser.h"
+#include "emu/util/input_file.h"
 
 namespace alp85::dap {
 
@@ -88,15 +89,19 @@ void Adapter::begin() {
     if (!config_.script.empty()) {
         std::filesystem::path path = config_.script;
         if (path.is_relative()) path = config_.cwd / path;
-        std::ifstream in(path, std::ios::binary);
-        if (!in) {
-            output("stderr", fmt::format("launch script: cannot read '{}'", path.string()));
+        std::string text;
+        try {
+            text = read_input(path, FileKind::Script);
+        } catch (const InputError& e) {
+            output("stderr", fmt::format("launch script: {}", e.what()));
             stopped("entry", "the launch script could not be read");
             return;
         }
-        const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
         std::vector<script::ParseError> errors;
-        const auto commands = script::parse_script(text, path.string(), errors);
+        std::vector<std::string> included;
+        const auto commands = script::parse_script(text, path.string(), errors, &included);
+        session().add_input(path, "the launch script");
+        for (const std::string& f : included) session().add_input(f, "an included script");
         for (const auto& e : errors) output("stderr", e.format());
         if (!errors.empty()) {
             stopped("entry", "the launch script has errors");

@@ -20,9 +20,13 @@ void ToolRecorder::start(Machine& machine, std::uint64_t period) {
     stop();
     machine_ = &machine;
     samples_.clear();
+    full_ = false;
     machine.tool().advance(machine.now());
     samples_.push_back(sample_tool(machine.tool(), machine.now()));
-    machine.set_sampler(period, [this](std::uint64_t t) { samples_.push_back(sample_tool(machine_->tool(), t)); });
+    machine.set_sampler(period, [this](std::uint64_t t) {
+        if (samples_.size() < kMaxSamples) samples_.push_back(sample_tool(machine_->tool(), t));
+        else full_ = true;
+    });
 }
 
 void ToolRecorder::stop() {
@@ -31,18 +35,17 @@ void ToolRecorder::stop() {
     machine_ = nullptr;
 }
 
-std::string ToolRecorder::csv() const {
-    std::string out = "t_ms";
+void ToolRecorder::write_csv(std::ostream& out) const {
+    std::string row = "t_ms";
     for (const char* a : {"x", "y", "z"})
-        out += fmt::format(",{0}_commanded,{0}_mm,{0}_count,{0}_lost,{0}_phases", a);
-    out += '\n';
+        row += fmt::format(",{0}_commanded,{0}_mm,{0}_count,{0}_lost,{0}_phases", a);
+    out << row << '\n';
     for (const ToolSample& s : samples_) {
-        out += fmt::format("{:.4f}", static_cast<double>(s.t) * 1000.0 / board::kCpuHz);
+        row = fmt::format("{:.4f}", static_cast<double>(s.t) * 1000.0 / board::kCpuHz);
         for (const AxisSample& a : s.axes)
-            out += fmt::format(",{},{:.5f},{},{},{:X}", a.commanded, a.mm, a.count, a.lost, a.phases);
-        out += '\n';
+            row += fmt::format(",{},{:.5f},{},{},{:X}", a.commanded, a.mm, a.count, a.lost, a.phases);
+        out << row << '\n';
     }
-    return out;
 }
 
 }  // namespace alp85::debug

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -31,18 +32,28 @@ ToolSample sample_tool(const periph::MachineTool& tool, std::uint64_t t);
 
 class ToolRecorder {
 public:
+    // The most samples a recording keeps (128 bytes each: 128 MB; 1000 s of machine time at one
+    // sample a millisecond). `record every 1t` would otherwise take ~400 MB per simulated second
+    // until memory ran out and the recording was lost; the samples beyond are dropped and full()
+    // says so.
+    static constexpr std::size_t kMaxSamples = 1'000'000;
+
     // Starts sampling `machine` (the first sample is now); stop() ends it. One recorder per machine.
     void start(Machine& machine, std::uint64_t period);
     void stop();
     bool recording() const { return machine_ != nullptr; }
     const std::vector<ToolSample>& samples() const { return samples_; }
+    // The recording reached kMaxSamples: the samples after the first kMaxSamples were dropped.
+    bool full() const { return full_; }
 
-    // "t_ms,x_cmd,x_mm,x_count,x_lost,x_phases,y_cmd,..." one row per sample.
-    std::string csv() const;
+    // "t_ms,x_cmd,x_mm,x_count,x_lost,x_phases,y_cmd,..." one row per sample, written row by row
+    // (a full recording is ~90 MB of text: never built as one string).
+    void write_csv(std::ostream& out) const;
 
 private:
     Machine* machine_ = nullptr;
     std::vector<ToolSample> samples_;
+    bool full_ = false;
 };
 
 }  // namespace alp85::debug

@@ -206,11 +206,21 @@ int App::start() {
         ro.monitor_rom = session_options(o_).monitor_rom;
         ro.out_dir = o_.out_dir;
         ro.err = &std::cerr;
-        if (!script::prepare(o_.script, script_, errors, ro)) {
+        ro.outputs = {{o_.screenshot, "--screenshot"}};  // no save, record or plot of the script may write it
+        std::vector<NamedPath> read;
+        if (!script::prepare(o_.script, script_, errors, ro, &read)) {
             for (const auto& e : errors) std::cerr << e.format();
             std::cerr << fmt::format("alp85 gui: {} error(s) in {}; nothing was run\n", errors.size(), o_.script);
             return 2;
         }
+        // The screenshot on a file the script includes, loads or restores (the script itself and
+        // the firmware were refused before the window opened).
+        if (const std::string clash = output_clash(read, ro.outputs); !clash.empty()) {
+            std::cerr << "alp85 gui: error: " << clash << "; nothing written\n";
+            return 2;
+        }
+        session_.add_input(o_.script, "the script");
+        for (const NamedPath& o : ro.outputs) session_.add_output(o.path, o.role);
         std::vector<script::ParseError> more;
         session_.check(script_, more);  // this session keeps the assembled sources
         script_active_ = true;

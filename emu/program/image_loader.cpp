@@ -9,15 +9,18 @@
 #include <fmt/format.h>
 
 #include "emu/program/ihex.h"
+#include "emu/util/input_file.h"
 #include "emu/util/text.h"
 
 namespace alp85 {
 namespace {
 
-std::string read_all(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw LoadError(fmt::format("{}: cannot open file", path.string()));
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+std::string read_all(const std::filesystem::path& path, FileKind kind) {
+    try {
+        return read_input(path, kind);
+    } catch (const InputError& e) {
+        throw LoadError(e.what());
+    }
 }
 
 // Contiguous runs from a sparse byte map.
@@ -52,14 +55,14 @@ LoadedImage read_image(const std::filesystem::path& path, const LoadOptions& opt
         img.assembly = std::move(r);
     } else if (ext == ".hex" || ext == ".ihx" || ext == ".ihex") {
         std::map<std::uint16_t, std::uint8_t> bytes;
-        const auto err = read_intel_hex(read_all(path), [&](std::uint16_t a, std::uint8_t v) { bytes[a] = v; });
+        const auto err = read_intel_hex(read_all(path, FileKind::HexImage), [&](std::uint16_t a, std::uint8_t v) { bytes[a] = v; });
         if (err) throw LoadError(fmt::format("{}:{}:{}: error: {}", path.string(), err->line, err->col, err->message));
         img.segments = runs(bytes);
     } else if (ext == ".bin" || ext == ".rom" || ext == ".com") {
         // A CP/M .COM file runs at 0100H, its TPA, unless told otherwise.
         const auto address = ext == ".com" ? options.address.value_or(0x0100) : options.address;
         if (!address) throw LoadError(fmt::format("{}: a binary image needs a load address", path.string()));
-        const std::string data = read_all(path);
+        const std::string data = read_all(path, FileKind::Binary);
         if (data.size() + *address > 0x10000)
             throw LoadError(fmt::format("{}: {} bytes at {:04X}H run past FFFFH", path.string(), data.size(), *address));
         img.segments.push_back({*address, {data.begin(), data.end()}});

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "emu/util/input_file.h"
 #include "emu/util/text.h"
 
 namespace alp85 {
@@ -137,11 +138,13 @@ void SymbolTable::add(std::string_view name, std::uint16_t value, std::string_vi
 }
 
 std::string SymbolTable::load_map_file(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) return "cannot open " + path;
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string err = load_map_text(ss.str());
+    std::string text;
+    try {
+        text = read_input(path, FileKind::Map);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    const std::string err = load_map_text(text);
     return err.empty() ? err : path + ": " + err;
 }
 

@@ -14,20 +14,11 @@
 
 #include "asm/isa.h"
 #include "emu/board/board_map.h"
+#include "emu/util/input_file.h"
 #include "emu/util/text.h"
 
 namespace alp85::script {
 namespace {
-
-bool read_text_file(const std::filesystem::path& path, std::string& out) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) return false;
-    out = ss.str();
-    return true;
-}
 
 struct Token {
     std::string text;
@@ -673,7 +664,17 @@ std::optional<Command> parse_line(std::string_view line, const std::string& file
 
 namespace {
 
-constexpr int kMaxIncludeDepth = 16;
+constexpr std::size_t kMaxIncludeDepth = 16;
+
+// "" and the text, or why the file cannot be read.
+std::string read_script(const std::filesystem::path& path, std::string& text) {
+    try {
+        text = read_input(path, FileKind::Script);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return {};
+}
 
 // `include FILE` (FILE quoted when it has blanks): the name, and the column where it starts; nullopt
 // when the line is no include.
@@ -691,7 +692,7 @@ std::optional<std::pair<std::string, int>> include_of(std::string_view line) {
 }
 
 void parse_into(std::string_view text, const std::string& file, std::vector<ParseError>& errors,
-                std::vector<Command>& out, std::vector<std::string>& chain) {
+                std::vector<Command>& out, std::vector<std::string>& chain, std::vector<std::string>* included) {
     int n = 0;
     std::size_t start = 0;
     while (start <= text.size()) {
@@ -714,18 +715,19 @@ void parse_into(std::string_view text, const std::string& file, std::vector<Pars
                 if (path.is_relative()) path = std::filesystem::path(file).parent_path() / path;
                 std::error_code ec;
                 const std::string key = std::filesystem::weakly_canonical(path, ec).string();
-                std::string body;
+                std::string body, unread;
                 if (std::find(chain.begin(), chain.end(), key) != chain.end()) {
                     fail(fmt::format("'{}' includes itself (through {} file{})", inc->first, chain.size(),
                                      chain.size() == 1 ? "" : "s"),
                          inc->second);
-                } else if (chain.size() >= kMaxIncludeDepth) {
+                } else if (chain.size() > kMaxIncludeDepth) {  // chain: the top script and 16 levels below it
                     fail(fmt::format("includes nested deeper than {}", kMaxIncludeDepth), inc->second);
-                } else if (std::filesystem::is_directory(path, ec) || !read_text_file(path, body)) {
-                    fail(fmt::format("cannot read '{}'", path.string()), inc->second);
+                } else if (unread = read_script(path, body); !unread.empty()) {
+                    fail(unread, inc->second);
                 } else {
+                    if (included) included->push_back(path.string());
                     chain.push_back(key);
-                    parse_into(body, path.string(), errors, out, chain);
+                    parse_into(body, path.string(), errors, out, chain, included);
                     chain.pop_back();
                     for (std::size_t i = first_error; i < errors.size(); ++i)
                         errors[i].message += fmt::format(" (included from {}:{})", file, n);
@@ -741,11 +743,12 @@ void parse_into(std::string_view text, const std::string& file, std::vector<Pars
 
 }  // namespace
 
-std::vector<Command> parse_script(std::string_view text, const std::string& file, std::vector<ParseError>& errors) {
+std::vector<Command> parse_script(std::string_view text, const std::string& file, std::vector<ParseError>& errors,
+                                  std::vector<std::string>* included) {
     std::vector<Command> out;
     std::error_code ec;
     std::vector<std::string> chain{std::filesystem::weakly_canonical(file, ec).string()};
-    parse_into(text, file, errors, out, chain);
+    parse_into(text, file, errors, out, chain, included);
     return out;
 }
 

@@ -21,8 +21,10 @@ struct ParseError {
 std::optional<Command> parse_line(std::string_view line, const std::string& file, int line_no,
                                   std::vector<ParseError>& errors);
 
-// A whole script: every line, every error (not only the first).
-std::vector<Command> parse_script(std::string_view text, const std::string& file, std::vector<ParseError>& errors);
+// A whole script: every line, every error (not only the first). `included`, when given, gets the
+// path of every file an `include` read (the session's inputs, which no output may overwrite).
+std::vector<Command> parse_script(std::string_view text, const std::string& file, std::vector<ParseError>& errors,
+                                  std::vector<std::string>* included = nullptr);
 
 // Pieces the debugger's prompt and the runner reuse.
 std::optional<std::int64_t> parse_number(std::string_view text);     // 12, 0CH, 0xC, 1100B, 14O/14Q

@@ -4,9 +4,11 @@
 #include <chrono>
 #include <fstream>
 #include <iterator>
+#include <set>
 
 #include <fmt/format.h>
 
+#include "emu/util/input_file.h"
 #include "emu/util/text.h"
 
 namespace alp85::script {
@@ -25,13 +27,15 @@ SessionOptions session_options(const std::filesystem::path& file, const RunnerOp
 }  // namespace
 
 bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, std::vector<ParseError>& errors,
-             const RunnerOptions& options) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        errors.push_back({{file.string(), 0, 0}, std::filesystem::exists(file) ? "cannot read the script" : "no such script", ""});
+             const RunnerOptions& options, std::vector<NamedPath>* inputs) {
+    std::string text;
+    try {
+        text = read_input(file, FileKind::Script);
+    } catch (const InputError& e) {
+        const std::string why = e.what();
+        errors.push_back({{file.string(), 0, 0}, why.rfind("no such file", 0) == 0 ? "no such script" : why, ""});
         return false;
     }
-    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if (const auto nul = text.find('\0'); nul != std::string::npos) {  // an image or a binary, not a script
         const auto line_start = text.rfind('\n', nul);
         const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
@@ -40,12 +44,17 @@ bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, 
         return false;
     }
     const std::size_t before = errors.size();
-    commands = parse_script(text, file.string(), errors);
+    std::vector<std::string> included;
+    commands = parse_script(text, file.string(), errors, &included);
     Session checker(session_options(file, options));
     checker.set_out_dir(options.out_dir);
+    checker.add_input(file, "the script");
+    for (const std::string& f : included) checker.add_input(f, "an included script");
+    for (const NamedPath& o : options.outputs) checker.add_output(o.path, o.role);
     checker.check(commands, errors);  // the lines that parsed: files, symbols, ranges
     if (options.err)
         for (const std::string& w : checker.warnings()) *options.err << w;
+    if (inputs) *inputs = checker.inputs();
     std::stable_sort(errors.begin() + static_cast<std::ptrdiff_t>(before), errors.end(),
                      [](const ParseError& a, const ParseError& b) { return a.where.line < b.where.line; });
     return errors.size() == before;
@@ -57,6 +66,11 @@ ScriptResult execute(const std::filesystem::path& file, const std::vector<Comman
     r.file = file.string();
     Session session(session_options(file, options));
     session.set_out_dir(options.out_dir);
+    session.add_input(file, "the script");
+    std::set<std::string> scripts;
+    for (const Command& c : commands)
+        if (scripts.insert(c.where.file).second) session.add_input(c.where.file, "an included script");
+    for (const NamedPath& o : options.outputs) session.add_output(o.path, o.role);
     session.machine().tool().set_model(options.motor);
     if (options.trace) session.set_trace(options.trace);
     const auto start = std::chrono::steady_clock::now();

@@ -29,11 +29,15 @@ struct RunnerOptions {
     bool verbose = false;
     std::filesystem::path out_dir;  // --out-dir: where save, restore, record and plot files go
     periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;  // --motor, until `motor`
+    // The command line's outputs (--trace, --junit): no save, record or plot may write one.
+    std::vector<NamedPath> outputs;
 };
 
 // Parses and checks a file. Returns false and fills `errors` when the script cannot run.
+// `inputs`, when given, gets every file the script reads: itself, its includes, the programs it
+// loads, the snapshots it restores (not those it saved itself first).
 bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, std::vector<ParseError>& errors,
-             const RunnerOptions& options);
+             const RunnerOptions& options, std::vector<NamedPath>* inputs = nullptr);
 
 // Executes prepared commands on a fresh session; stops at the first failure.
 ScriptResult execute(const std::filesystem::path& file, const std::vector<Command>& commands,

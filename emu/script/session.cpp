@@ -9,6 +9,7 @@
 #include "emu/board/snapshot_file.h"
 #include "emu/plot/plot.h"
 #include "emu/util/atomic_file.h"
+#include "emu/util/input_file.h"
 #include "emu/debug/trace_csv.h"
 #include "emu/util/text.h"
 #include "peripherals/seven_segment.h"
@@ -24,6 +25,9 @@ std::string rtrim(std::string s) {
 std::string hex(std::int64_t v, int digits) { return fmt::format("{:0{}X}H", v, digits); }
 
 bool is_pair(Reg r) { return r >= Reg::BC; }
+
+// The command that writes a file, as a refusal names it.
+const char* op_word(Op op) { return op == Op::Save ? "save" : op == Op::Record ? "record" : "plot"; }
 
 }  // namespace
 
@@ -107,6 +111,29 @@ Session::Outcome Session::fail_expect(const Command& c, const std::string& expec
                                         c.where.file, c.where.line, rtrim(c.line), expected, actual, where_now())};
 }
 
+void Session::add_input(const std::filesystem::path& path, std::string role) {
+    if (path.empty()) return;
+    for (const std::string& w : written_)
+        if (same_file(w, path.string())) return;  // the session's own output, read back
+    for (const NamedPath& in : inputs_)
+        if (same_file(in.path, path.string())) return;
+    inputs_.push_back({path.string(), std::move(role)});
+}
+
+void Session::add_output(const std::filesystem::path& path, std::string role) {
+    if (!path.empty()) outputs_.push_back({path.string(), std::move(role)});
+}
+
+std::string Session::output_problem(const std::filesystem::path& path, const std::string& role) const {
+    if (path.empty()) return role + ": an empty file name";
+    if (std::string clash = output_clash(inputs_, {{path.string(), role}}); !clash.empty()) return clash + "; nothing written";
+    for (const NamedPath& o : outputs_)
+        if (same_file(o.path, path.string()))
+            return fmt::format("{} '{}' is {} '{}': one would overwrite the other; nothing written", role, path.string(),
+                               o.role, o.path);
+    return {};
+}
+
 void Session::set_trace(std::ostream* out) {
     trace_ = out;
     if (!out) {
@@ -142,8 +169,8 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
             case Op::Load: {
                 const auto path = resolve(c.text);
                 const int col = col_of(c, c.text);
-                if (!std::filesystem::is_regular_file(path)) {
-                    err(c, col, fmt::format("no such file '{}'", path.string()));
+                if (const std::string why = program_file_problem(path); !why.empty()) {
+                    err(c, col, why);
                     break;
                 }
                 const std::string ext = lower_extension(path);
@@ -170,8 +197,9 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 break;
             }
             case Op::Restore:
-                if (!saved.count(resolve_output(c.text).string()) && !std::filesystem::is_regular_file(resolve_output(c.text)))
-                    err(c, col_of(c, c.text), fmt::format("no such snapshot '{}'", resolve_output(c.text).string()));
+                if (saved.count(resolve_output(c.text).string())) break;
+                if (const std::string why = input_problem(resolve_output(c.text)); !why.empty())
+                    err(c, col_of(c, c.text), fmt::format("snapshot: {}", why));
                 break;
             case Op::Save: saved.insert(resolve_output(c.text).string()); break;
             case Op::Monitor:
@@ -221,6 +249,23 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
             default: break;
         }
     }
+    // Every file the script reads, at any line, before any output is checked: `save x.asm` on
+    // line 2 destroys the `load x.asm` of line 1 as surely as one of a later line.
+    std::vector<std::filesystem::path> written;  // a snapshot saved before it is restored is no input
+    std::set<std::string> scripts;               // each file once (a stat per comparison)
+    for (const Command& c : commands) {
+        if (c.where.line > 0 && scripts.insert(c.where.file).second)
+            add_input(c.where.file, "an included script");  // the top one was added as "the script"
+        if (c.op == Op::Load) add_input(resolve(c.text), "a program the script loads");
+        if (c.op == Op::Save) written.push_back(resolve_output(c.text));
+        if (c.op == Op::Restore &&
+            std::none_of(written.begin(), written.end(), [&](const auto& w) { return same_file(w, resolve_output(c.text)); }))
+            add_input(resolve_output(c.text), "a snapshot the script restores");
+    }
+    for (const Command& c : commands)
+        if (c.op == Op::Save || c.op == Op::Record || c.op == Op::Plot)
+            if (const std::string why = output_problem(resolve_output(c.text), op_word(c.op)); !why.empty())
+                err(c, col_of(c, c.text), why);
 }
 
 Session::Outcome Session::load(const Command& c) {
@@ -237,6 +282,7 @@ Session::Outcome Session::load(const Command& c) {
         LoadedImage img = cached != assembled_.end() && !lo.address ? cached->second : read_image(path, lo);
         check_board_regions(img, path);
         machine_->load(img.segments);
+        add_input(path, "a program the session loaded");
         if (img.assembly)
             debugger_.program().add_assembly(*img.assembly);
         else
@@ -445,11 +491,19 @@ std::string Session::axes_text() const {
 
 Session::Outcome Session::write_recording() {
     recorder_.stop();
+    if (const std::string why = output_problem(record_path_, "record"); !why.empty()) return fail(record_command_, why);
     try {
-        write_atomic(record_path_, recorder_.csv());
+        AtomicOutput file(record_path_);
+        recorder_.write_csv(file.stream());
+        file.commit();
     } catch (const std::exception& x) {
         return fail(record_command_, x.what());
     }
+    if (recorder_.full())
+        return fail(record_command_,
+                    fmt::format("the recording reached its cap of {} samples: '{}' holds the first {} (record with a "
+                                "longer period, e.g. every 1ms)",
+                                debug::ToolRecorder::kMaxSamples, record_path_.string(), debug::ToolRecorder::kMaxSamples));
     return {};
 }
 
@@ -518,6 +572,7 @@ Session::Outcome Session::tool_command(const Command& c) {
             if (recorder_.recording()) {
                 if (Outcome o = write_recording(); o.status != Status::Ok) return o;
             }
+            if (const std::string why = output_problem(resolve_output(c.text), "record"); !why.empty()) return fail(c, why);
             record_path_ = resolve_output(c.text);
             record_command_ = c;
             recorder_.start(m, c.period);
@@ -528,6 +583,7 @@ Session::Outcome Session::tool_command(const Command& c) {
         case Op::Plot: {
             const auto& samples = recorder_.samples();
             if (samples.size() < 2) return fail(c, "nothing recorded to plot (record FILE.csv first, then run)");
+            if (const std::string why = output_problem(resolve_output(c.text), "plot"); !why.empty()) return fail(c, why);
             if (recorder_.recording()) {
                 // Include the present moment (the last sample may be up to one period old).
                 m.tool().advance(m.now());
@@ -730,11 +786,13 @@ Session::Outcome Session::run_command(const Command& c) {
             return {};
         }
         case Op::Save:
+            if (const std::string why = output_problem(resolve_output(c.text), "save"); !why.empty()) return fail(c, why);
             try {
                 m.save_snapshot(resolve_output(c.text));
             } catch (const snapshot::SnapshotError& x) {
                 return fail(c, x.what());
             }
+            written_.push_back(resolve_output(c.text).string());
             return {};
         case Op::Restore:
             try {
@@ -742,6 +800,7 @@ Session::Outcome Session::run_command(const Command& c) {
             } catch (const snapshot::SnapshotError& x) {
                 return fail(c, x.what());
             }
+            add_input(resolve_output(c.text), "a snapshot the session restored");
             return {};
         case Op::Option:
             m.set_expansion_eprom(c.real == 1);  // the one board option (board::kBoardOptions)

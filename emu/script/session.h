@@ -19,6 +19,7 @@
 #include "emu/debug/tool_record.h"
 #include "emu/script/command.h"
 #include "emu/script/parser.h"
+#include "emu/util/output_paths.h"
 
 namespace alp85::script {
 
@@ -83,13 +84,24 @@ public:
     // are relative to this folder instead of the script's (alp85 script --out-dir: tests keep the
     // source tree clean).
     void set_out_dir(std::filesystem::path dir) { out_dir_ = std::move(dir); }
+    // The files this session reads and the command line's own outputs: no file the session
+    // writes (save, record, plot) may be one of the inputs or one of those outputs. The session
+    // adds what it reads itself (loaded programs, restored snapshots); a front end adds the
+    // script, its included files, a launched program, a map (add_input) and --trace, --junit
+    // (add_output). `role` is how a refusal names the file ("the script").
+    void add_input(const std::filesystem::path& path, std::string role);
+    void add_output(const std::filesystem::path& path, std::string role);
+    // "" when writing `path` destroys no input and no command-line output; else why.
+    std::string output_problem(const std::filesystem::path& path, const std::string& role) const;
+    const std::vector<NamedPath>& inputs() const { return inputs_; }
     // Ends the script: writes a recording still open (record FILE.csv without record stop).
     Outcome finish();
     const debug::ToolRecorder& recorder() const { return recorder_; }
 
     // Checks, before anything runs, what can be checked: files exist, sources assemble, binaries
-    // have an address, symbols are defined by a load before their use, numbers fit. Appends every
-    // problem to `errors` and keeps the assembled images for the run.
+    // have an address, symbols are defined by a load before their use, numbers fit, no save,
+    // record or plot names a file the script reads (at any line) or a command-line output.
+    // Appends every problem to `errors` and keeps the assembled images for the run.
     void check(const std::vector<Command>& commands, std::vector<ParseError>& errors);
 
     // Warnings of the loads check() read (asm85's, with file:line:col; an image crossing memory
@@ -137,6 +149,8 @@ private:
     std::vector<std::string> warnings_;
     std::uint64_t time_origin_ = 0;
     std::ostream* trace_ = nullptr;
+    std::vector<NamedPath> inputs_, outputs_;  // add_input, add_output
+    std::vector<std::string> written_;         // what this session wrote: restoring it protects nothing
 };
 
 }  // namespace alp85::script
