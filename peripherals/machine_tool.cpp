@@ -139,6 +139,19 @@ void MachineTool::set_model(MotorModel m) {
     }
 }
 
+void MachineTool::set_up_workpiece(std::uint64_t t) {
+    advance(t);
+    for (int a = 0; a < kAxes; ++a) {
+        AxisState& st = s_.axes[a];
+        st.sequencer.count = 0;  // the flip-flops' power-on index; the input levels stay
+        st.ideal_steps = 0;
+        st.grid_t = s_.now;
+        ax_[a].motor.init_at_rest(st.motor, 0.0, Sequencer::phases(st.sequencer));
+        ax_[a].transducer.init(st.transducer, 0.0);
+        st.table.at_stop = 0;
+    }
+}
+
 void MachineTool::set_drive(Axis axis, bool pulse, bool direction, std::uint64_t t) {
     advance(t);
     t = s_.now;  // a late call acts at the part's present time (time never runs backwards)

@@ -127,6 +127,13 @@ public:
     Sense sense(Axis axis, std::uint64_t t);
     // Called when a table arrives at an end stop.
     void on_end_stop(EndStopFn fn) { on_end_stop_ = std::move(fn); }
+    // The operator sets up a new workpiece at T-state t (docs/machine.md, "Setting up a new
+    // workpiece"): the drives switched off, each table wound back by its handwheel to where it
+    // stood at power-on, the drives on again. Each axis's sequencer count, rotor, table and
+    // transducer are then as at power-on (off its end stop); the PULSE and DIRECTION levels the
+    // board drives, the motor model, the feedback, the end-stop arrivals counted so far and the
+    // time stay. The board is not told: the firmware's own position counts stay as they were.
+    void set_up_workpiece(std::uint64_t t);
 
     // Views at now() (no side effects).
     std::int64_t commanded_steps(Axis axis) const;   // the sequencer's count

@@ -108,7 +108,7 @@ void interactive(script::DebugShell& shell) {
 
 void add_debug_command(CLI::App& app, int& status) {
     struct Args {
-        std::vector<std::string> firmware;
+        std::vector<std::string> firmware, firmware_option;
         std::string script;
         bool batch = false;
         bool no_history = false;
@@ -119,6 +119,8 @@ void add_debug_command(CLI::App& app, int& status) {
     CLI::App* cmd = app.add_subcommand("debug", "The source-level debugger (docs/debugging.md)");
     cmd->add_option("firmware", args->firmware,
                     "Built-in firmware (thesis-fixed, thesis) or program files (.asm, .hex) to load after the monitor");
+    cmd->add_option("--firmware", args->firmware_option,
+                    "Firmware to load, named as the positional arguments are (a built-in name or a file); may be repeated");
     cmd->add_option("--script", args->script, "Run the commands of FILE first (echoed as a session)");
     cmd->add_flag("--batch", args->batch, "End after --script (or after standard input); status 1 if a command failed");
     cmd->add_flag("--no-history", args->no_history, "No snapshots for reverse execution");
@@ -132,6 +134,7 @@ void add_debug_command(CLI::App& app, int& status) {
         "session reads is such a failure), 2 a usage error (a --script that is missing, unreadable,\n"
         "empty or no file).");
     cmd->callback([args, &status] {
+        args->firmware.insert(args->firmware.begin(), args->firmware_option.begin(), args->firmware_option.end());
         // The script is read whole before anything runs: one that cannot be read, or is empty, is
         // a usage error, not a session that silently does nothing.
         std::string script_text;

@@ -36,6 +36,7 @@ std::string click_line_problem(const std::string& spec, bool debug) {
 void add_gui_command(CLI::App& app, int& status) {
     struct Args {
         gui::GuiOptions o;
+        std::vector<std::string> firmware;  // --firmware, added to the positional ones
         std::string motor = "physical";
         std::string speed = "1";
         long frames = 0;
@@ -46,17 +47,20 @@ void add_gui_command(CLI::App& app, int& status) {
     cmd->add_option("firmware", args->o.firmware,
                     "Built-in firmware (thesis, thesis-fixed, master, monitor) or .asm/.hex files, loaded after the monitor "
                     "(default: thesis-fixed)");
+    cmd->add_option("--firmware", args->firmware,
+                    "Firmware to load, named as the positional arguments are (a built-in name or a file); may be repeated");
     cmd->add_option("--script", args->o.script, "Run this script (docs/scripting.md) in the window first");
     cmd->add_option("--click", args->o.clicks,
                     "Then click these keypad buttons (R, 0-F, EXEC, NEXT, ..., RESET, VECT) with synthesized mouse "
                     "events (a test hook)");
-    cmd->add_flag("--debug", args->o.debug,
+    CLI::Option* debug = cmd->add_flag("--debug", args->o.debug,
                   "The debugger's panes (source, registers, disassembly, memory, chips, watches, steps and reverse "
                   "steps, the command line: docs/debugging.md) in place of the machine tool's views");
     cmd->add_option("--click-line", args->o.click_lines,
-                    "With --debug: then click the source rows of these FILE:LINE (sets breakpoints; a test hook)");
+                    "With --debug: then click the source rows of these FILE:LINE (sets breakpoints; a test hook)")
+        ->needs(debug);
     cmd->add_option("--debug-command", args->o.debug_commands,
-                    "With --debug: then run these debugger command lines (a test hook)");
+                    "Then run these debugger command lines, or click:BUTTON, frames:N, status, toolpath (a test hook)");
     cmd->add_option("--screenshot", args->o.screenshot,
                     "Save the window as PNG when the script and the clicks are done, then quit");
     cmd->add_option("--expect-display", args->o.expect_display, "At exit the display must read this (else status 1)");
@@ -68,7 +72,8 @@ void add_gui_command(CLI::App& app, int& status) {
         ->check(CLI::Range(0.25, 4.0));
     cmd->add_flag("--key-map", args->o.key_map, "Show the key map (F1 or ? toggles it)");
     cmd->add_flag("--stats", args->o.stats, "Print frames per second and the process's CPU use at exit");
-    cmd->add_option("--speed", args->speed, "0.1, 1 (real time), 10, 100 or max")
+    cmd->add_option("--speed", args->speed,
+                    "0.1, 1 (real time), 10, 100 or max; a --script runs at it too, so that its moves are seen (max to hurry)")
         ->check(CLI::IsMember({"0.1", "1", "10", "100", "max"}))
         ->capture_default_str();
     add_motor_option(cmd, args->motor);
@@ -76,7 +81,8 @@ void add_gui_command(CLI::App& app, int& status) {
     cmd->footer(
         "Examples:\n"
         "  alp85 gui                       the monitor and thesis-fixed; type R 7 0800 EXEC\n"
-        "  alp85 gui --script scripts/demo/thesis.alp --screenshot gui.png\n"
+        "  alp85 gui --script scripts/demo/thesis.alp                 the walk-through at real time\n"
+        "  alp85 gui --script scripts/demo/thesis.alp --speed max --screenshot gui.png\n"
         "Without a display it exits with status 2; use `alp85 run` or `alp85 script` there.\n"
         "Exit status: 0, 1 the script or --expect-display failed or the screenshot cannot be written,\n"
         "2 a usage error (a bad number, a --screenshot that is an input) or no display.");
@@ -100,6 +106,7 @@ void add_gui_command(CLI::App& app, int& status) {
                 status = kUsageError;
                 return;
             }
+        args->o.firmware.insert(args->o.firmware.begin(), args->firmware.begin(), args->firmware.end());
         std::vector<NamedPath> inputs = {{args->o.script, "the script"}};
         for (const std::string& f : args->o.firmware)  // a file, not a built-in name
             if (std::error_code ec; std::filesystem::exists(f, ec)) inputs.push_back({f, "the firmware source"});

@@ -3,6 +3,7 @@
 // and shows the display again. Built on the command language's Session, like every front end:
 // the arguments become Commands directly (no script text is made, so a path may hold any
 // character), and a report points at the argument on the command line.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -76,13 +77,16 @@ void add_run_command(CLI::App& app, int& status) {
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("run", "Run the ALP 85 headless: boot the monitor, type keys, show the display");
-    cmd->add_option("programs", args->programs, "Programs to load first (.asm, .hex; FILE.bin@ADDR, e.g. x.bin@0800H)");
+    cmd->add_option("programs", args->programs,
+                    "Programs to load first (.asm, .hex; FILE.bin@ADDR, e.g. x.bin@0800H) or built-in firmware by name, "
+                    "as with --firmware");
     auto* keys = cmd->add_option("--keys", args->keys, "Keys to type after booting, e.g. \"R 7 0800 EXEC\"");
     cmd->add_option("--boot", args->boot, "Time to run after RESET before typing (default 500ms)");
     cmd->add_option("--for", args->run_for, "Time to run after the keys (default 1s)")->needs(keys);
     cmd->add_flag("--no-monitor", args->no_monitor, "Do not load the built-in monitor ROM");
     cmd->add_option("--firmware", args->firmware,
-                    "Firmware built into alp85 to load (thesis, thesis-fixed, master), with its symbols; may be repeated");
+                    "Firmware built into alp85 to load (thesis, thesis-fixed, master), with its symbols, or a program "
+                    "file as the positional arguments take it; may be repeated");
     add_motor_option(cmd, args->motor);
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
     cmd->footer(
@@ -95,6 +99,13 @@ void add_run_command(CLI::App& app, int& status) {
         "Exit status: 0 success, 1 a program could not be placed or run, 2 a usage error or a bad\n"
         "argument (a program that is missing or does not assemble, a bad time or key).");
     cmd->callback([args, &status] {
+        // One way to name firmware, as in gui, debug and dap: a built-in name among the programs
+        // loads that firmware, a file given to --firmware loads as a program.
+        std::vector<std::string> builtins, files;
+        for (const std::string& f : args->firmware) (firmware::find(f) || !std::filesystem::exists(f) ? builtins : files).push_back(f);
+        for (const std::string& p : args->programs) (firmware::find(p) ? builtins : files).push_back(p);
+        args->firmware = std::move(builtins);
+        args->programs = std::move(files);
         script::SessionOptions so;
         so.base_dir = "";  // paths as the user typed them
         so.out = &std::cout;

@@ -34,6 +34,14 @@ LaunchConfig parse_launch(const Json& args) {
     c.program = opt_string(args, "program").value_or("");
     c.map = opt_string(args, "map").value_or("");
     c.firmware = opt_string(args, "firmware").value_or("");
+    // One way to name firmware, as on alp85's command lines: a built-in name given as the program
+    // is that firmware, a file given as the firmware is the program.
+    const auto file = [&](const std::string& p) {
+        std::error_code ec;
+        return std::filesystem::is_regular_file(std::filesystem::path(c.cwd) / p, ec);
+    };
+    if (c.firmware.empty() && !c.program.empty() && firmware::find(c.program) && !file(c.program)) std::swap(c.firmware, c.program);
+    else if (c.program.empty() && !c.firmware.empty() && !firmware::find(c.firmware) && file(c.firmware)) std::swap(c.firmware, c.program);
     if (c.program.empty() && c.firmware.empty())
         throw RequestError("launch needs 'program' (a .asm or .hex file) or 'firmware' (one built in, e.g. thesis-fixed)");
     for (const auto& [name, value] : opt_object(args, "defines").items()) {

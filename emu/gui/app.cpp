@@ -28,6 +28,7 @@
 #include "emu/gui/screenshot.h"
 #include "emu/gui/tool_view.h"
 #include "emu/gui/toolpath.h"
+#include "emu/plot/plot.h"
 #include "emu/program/firmware.h"
 #include "emu/script/parser.h"
 #include "emu/script/runner.h"
@@ -41,6 +42,7 @@ constexpr auto kMachineBudget = std::chrono::milliseconds(10);  // of a 16.7 ms 
 constexpr std::uint64_t kSamplePeriod = board::tstates_from_ms(1);
 constexpr int kSettleFrames = 30;
 constexpr std::uint64_t kClickGap = board::tstates_from_ms(100);
+constexpr std::uint64_t kPaceSlice = board::tstates_from_ms(1);  // a script's run, between looks at the clock
 
 double cpu_seconds() {
     rusage u{};
@@ -105,8 +107,14 @@ private:
     void step_script(HostClock::time_point until);
     void run_machine(HostClock::time_point until);
     void act(const Action& a);
+    void plot_drawn(const std::string& file);
     void drive_clicks();
     void draw();
+    bool render_frame();
+    void present(bool painted);
+    void pace_script();
+    bool in_command_ = false;  // a frame drawn while a script's command runs (pace_script)
+    FrameClock clock_{HostClock::now()};
     void finish_stats(double wall, double cpu) const;
     std::string absolute(const std::string& p) const { return std::filesystem::absolute(p).string(); }
 
@@ -224,6 +232,9 @@ int App::start() {
         std::vector<script::ParseError> more;
         session_.check(script_, more);  // this session keeps the assembled sources
         script_active_ = true;
+        // At the speed chosen (--speed, real time by default) the script's runs are drawn as they go.
+        session_.set_pace([this](std::uint64_t) { pace_script(); }, kPaceSlice);
+        pacer_.rebase(machine().now(), HostClock::now());
         ui_.add_log("script " + std::filesystem::path(o_.script).filename().string());  // no folder of the user's in the picture
         after_commands();
         return 0;
@@ -375,6 +386,7 @@ void App::step_script(HostClock::time_point until) {
                                          script::Session::format_time(machine().now()));
             }
             script_active_ = false;
+            session_.set_pace({}, 0);
             pacer_.rebase(machine().now(), HostClock::now());
             after_commands();
             if (!o_.debug) begin_run(false);
@@ -412,6 +424,7 @@ void App::pause_run() {
 
 void App::report(const debug::Stop& s) {
     ui_.running = false;
+    if (std::exchange(panes_.pinned, false)) panes_.last_pc = 0xFFFF;  // a stop: the source pane shows the PC's line again
     if (pause_asked_) {
         const double ms = std::chrono::duration<double, std::milli>(HostClock::now() - *pause_asked_).count();
         pause_asked_.reset();
@@ -475,6 +488,23 @@ void App::debug_request(DebugPanes::Request r) {
     }
 }
 
+void App::plot_drawn(const std::string& file) {
+    if (path_.points().size() < 2) {
+        ui_.add_log("nothing drawn to plot yet: the table has not moved (Record CSV records a run)");
+        return;
+    }
+    plot::Series drawn{"table (X, Y)", {}};
+    for (const PointMm& p : path_.points()) drawn.points.push_back({p.x, p.y});
+    std::optional<std::pair<plot::Point, plot::Point>> line;
+    if (const auto l = path_.ideal(machine())) line = std::make_pair(plot::Point{l->from.x, l->from.y}, plot::Point{l->to.x, l->to.y});
+    try {
+        plot::write_toolpath(file, "Toolpath", {drawn}, line);
+        ui_.add_log("plotted " + file);
+    } catch (const plot::PlotError& x) {
+        ui_.add_log(x.what());
+    }
+}
+
 void App::act(const Action& a) {
     using K = Action::Kind;
     const auto host = HostClock::now();
@@ -512,8 +542,18 @@ void App::act(const Action& a) {
         case K::RecordStop:
             if (done(session_.record_stop())) ui_.add_log("wrote " + absolute(a.arg));
             break;
+        case K::NewWorkpiece:
+            if (done(session_.new_workpiece())) {
+                ui_.add_log("new workpiece: the tables and transducers are back at their start positions");
+                path_.clear();  // the last job's path and its workpiece are no longer on the table
+                camera_.reset();
+            }
+            break;
         case K::Plot:
-            if (done(session_.plot_toolpath(absolute(a.arg)))) ui_.add_log("plotted " + absolute(a.arg));
+            // Without a recording, what the table view draws: the toolpath since the last boot,
+            // reset or restore, and the thesis's ideal line.
+            if (session_.recorder().samples().size() < 2) plot_drawn(absolute(a.arg));
+            else if (done(session_.plot_toolpath(absolute(a.arg)))) ui_.add_log("plotted " + absolute(a.arg));
             break;
     }
 }
@@ -541,7 +581,6 @@ void App::drive_clicks() {
 // row of each FILE:LINE (a synthesized left-button press at the row's centre, hit-tested as a
 // user's), then each command line, as typed at the command pane.
 void App::drive_debug_hooks() {
-    if (!o_.debug) return;
     if (line_click_pos_ < o_.click_lines.size()) {
         const std::string& spec = o_.click_lines[line_click_pos_++];
         const auto colon = spec.rfind(':');
@@ -572,7 +611,8 @@ void App::drive_debug_hooks() {
         const std::string& line = o_.debug_commands[command_pos_++];
         // Hooks beside command lines: "click:NAME" clicks a named button (controls.run,
         // debug.continue, debug.step, ...), "frames:N" lets N frames pass, "status" prints whether
-        // the board runs and its time, "toolpath" how many points the drawn path has.
+        // the board runs and its time, "toolpath" how many points the drawn path has, "clickrow:N"
+        // clicks source row N as shown, "source" prints the file and first line the pane shows.
         if (line.starts_with("click:")) {
             const auto it = drawn_buttons().find(line.substr(6));
             if (it == drawn_buttons().end()) {
@@ -591,6 +631,18 @@ void App::drive_debug_hooks() {
             hook_wait_ = std::atol(line.c_str() + 7);
             return;
         }
+        if (line.starts_with("clickrow:")) {  // a click on a source row as shown (no line looked up first)
+            const Vec2 c = source_row(std::atoi(line.c_str() + 9)).centre();
+            push_click(c, true);  // the pointer goes there too: ImGui sees the click where it lands
+            button_up_ = c;
+            return;
+        }
+        if (line == "source") {
+            std::cout << fmt::format("[gui] source: {} from line {}\n", std::filesystem::path(panes_.file).filename().string(),
+                                     panes_.first)
+                      << std::flush;
+            return;
+        }
         if (line == "toolpath") {
             std::cout << fmt::format("[gui] toolpath: {} points\n", path_.points().size()) << std::flush;
             return;
@@ -601,11 +653,8 @@ void App::drive_debug_hooks() {
                       << std::flush;
             return;
         }
-        const std::string out = shell_.execute(line);
-        panes_.add_log("(alp85) " + line);
-        panes_.add_log(out);
-        std::cout << "(alp85) " << line << '\n' << out << std::flush;
-        panes_.last_t = ~0ull;
+        const Typed t = run_typed(panes_, shell_, line, session_.debugger().running());
+        std::cout << "(alp85) " << line << '\n' << t.out << std::flush;
         if (shell_.console().errors()) status_ = 1;
     }
 }
@@ -656,13 +705,21 @@ void App::draw() {
     ImGui::End();
     draw_display(begin_layer("##display", kDisplayRect), backdrop_, machine().display());
     ImGui::End();
+    {
+        ImDrawList* dl = begin_layer("##hint", kHintRect);
+        if (const auto hint = feed_prompt_hint(machine().display_text(),
+                                               machine().tool().model() == periph::MachineTool::MotorModel::Physical))
+            dl->AddText({kHintRect.x, kHintRect.y + 2}, IM_COL32(235, 235, 235, 255), hint->data(), hint->data() + hint->size());
+        ImGui::End();
+    }
     if (o_.debug) {
-        draw_debug_panes(panes_, shell_, ui_.running);
-        if (panes_.request != DebugPanes::Request::None) debug_request(std::exchange(panes_.request, DebugPanes::Request::None));
+        draw_debug_panes(panes_, shell_, ui_.running || in_command_);
+        if (panes_.request != DebugPanes::Request::None && !in_command_) debug_request(std::exchange(panes_.request, DebugPanes::Request::None));
         if (frames_ % 15 == 0)
             ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
                                      script::Session::format_time(machine().now()), fps_);
-        for (const Action& a : controls_panel(ui_)) act(a);
+        for (const Action& a : controls_panel(ui_))
+            if (!in_command_) act(a);
         return;
     }
     const TableView view = camera_.apply(table_view(machine(), path_));
@@ -676,18 +733,63 @@ void App::draw() {
     draw_travel_strip(begin_layer("##strip", kStripRect), backdrop_, machine());
     ImGui::End();
     if (frames_ % 4 == 0) axes_ = read_axes(machine());
-    if (const auto model = axes_panel(axes_, machine().tool().model())) done(session_.set_motor(*model));
+    if (const auto model = axes_panel(axes_, machine().tool().model()); model && !in_command_) done(session_.set_motor(*model));
     // Four times a second: a clock that changes every frame would redraw its panel every frame.
     if (frames_ % 15 == 0)
         ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
                              script::Session::format_time(machine().now()), fps_);
-    for (const Action& a : controls_panel(ui_)) act(a);
+    for (const Action& a : controls_panel(ui_))
+        if (!in_command_) act(a);  // a script's command is under way: the buttons wait for its end
+}
+
+// One frame's picture: ImGui's frame, the views, the canvas; sent to the window when it changed.
+bool App::render_frame() {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplSDL2_NewFrame();
+    update_fit();
+    ImGui::NewFrame();
+    draw();
+    if (key_map_) draw_key_map(o_.debug);
+    ImGui::Render();
+    const bool painted = canvas_.render(ImGui::GetDrawData(), backdrop_, colour::kBackground);
+    ++frames_;
+    return painted;
+}
+
+void App::present(bool painted) {
+    if (painted || expose_) {  // the window is only sent a picture that changed
+        canvas_.present(drawable_.w, drawable_.h, fit_, expose_);
+        SDL_GL_SwapWindow(window_);
+        ++presented_;
+        expose_ = false;
+    }
+}
+
+// Called between the slices of a script's command that runs the machine (Session::set_pace):
+// while the machine is ahead of the pacer's clock, frames are drawn (the views follow the table)
+// and the host waits, so that a script runs at the speed chosen. Only closing the window is heard
+// meanwhile; the buttons wait for the command's end.
+void App::pace_script() {
+    while (!quit_ && !pacer_.max_speed() && machine().now() > pacer_.target(machine().now(), HostClock::now())) {
+        SDL_Event e;
+        while (SDL_PollEvent(&e)) {
+            ImGui_ImplSDL2_ProcessEvent(&e);
+            if (e.type == SDL_QUIT || (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_CLOSE)) quit_ = true;
+            if (e.type == SDL_WINDOWEVENT && (e.window.event == SDL_WINDOWEVENT_EXPOSED || e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED))
+                expose_ = true, canvas_.expose();
+        }
+        in_command_ = true;
+        present(render_frame());
+        in_command_ = false;
+        std::this_thread::sleep_until(clock_.next(HostClock::now()));
+    }
 }
 
 int App::loop() {
     const auto start = HostClock::now();
     const double cpu0 = cpu_seconds();
-    FrameClock clock(start);
+    clock_ = FrameClock(start);
+    FrameClock& clock = clock_;
     auto fps_t = start;
     long fps_frames = 0;
     while (!quit_) {
@@ -704,15 +806,7 @@ int App::loop() {
         if (!script_active_ && click_pos_ >= clicks_.size()) drive_debug_hooks();
         if (done) ++idle_frames_;
 
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplSDL2_NewFrame();
-        update_fit();
-        ImGui::NewFrame();
-        draw();
-        if (key_map_) draw_key_map(o_.debug);
-        ImGui::Render();
-        const bool painted = canvas_.render(ImGui::GetDrawData(), backdrop_, colour::kBackground);
-        ++frames_;
+        const bool painted = render_frame();
         const bool end = (o_.frames && frames_ >= *o_.frames) ||
                          (o_.seconds && std::chrono::duration<double>(HostClock::now() - start).count() >= *o_.seconds) ||
                          (!o_.screenshot.empty() && !o_.frames && !o_.seconds && idle_frames_ > kSettleFrames);
@@ -736,12 +830,7 @@ int App::loop() {
             }
             pending_shot_.clear();
         }
-        if (painted || expose_) {  // the window is only sent a picture that changed
-            canvas_.present(drawable_.w, drawable_.h, fit_, expose_);
-            SDL_GL_SwapWindow(window_);
-            ++presented_;
-            expose_ = false;
-        }
+        present(painted);
         render_s_ += std::chrono::duration<double>(HostClock::now() - machine_end).count();
         if (end) break;
         ++fps_frames;
@@ -798,6 +887,11 @@ int run(const GuiOptions& o) {
     SDL_Rect usable{0, 0, kWindowWidth, kWindowHeight};
     if (SDL_GetDisplayUsableBounds(0, &usable) != 0) usable = {0, 0, kWindowWidth + 40, kWindowHeight + 60};
     const Size size = initial_window_size(o.scale, usable.w, usable.h);
+    if (o.scale > 0 && size.w < std::lround(kWindowWidth * o.scale))
+        std::cerr << fmt::format("alp85 gui: --scale {:g} ({}x{}) does not fit the screen ({}x{} usable): the window opens at {}x{} "
+                                 "(it can be resized)\n",
+                                 o.scale, std::lround(kWindowWidth * o.scale), std::lround(kWindowHeight * o.scale), usable.w, usable.h,
+                                 size.w, size.h);
     SDL_Window* window = SDL_CreateWindow("ALP85 - the ALP 85 and its machine tool", SDL_WINDOWPOS_CENTERED,
                                           SDL_WINDOWPOS_CENTERED, size.w, size.h,
                                           SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);

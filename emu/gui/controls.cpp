@@ -1,5 +1,9 @@
 #include "emu/gui/controls.h"
 
+#include <cctype>
+#include <string_view>
+
+#include <fmt/format.h>
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -8,6 +12,24 @@
 namespace alp85::gui {
 
 void ControlsState::add_log(std::string line) {
+    // Where a line's time begins (" at 1.200 s (3686400 T-states)"), or npos.
+    const auto time_at = [](std::string_view l) {
+        const auto at = l.rfind(" at ");
+        if (at == std::string_view::npos || at + 4 >= l.size() || !std::isdigit(static_cast<unsigned char>(l[at + 4])) ||
+            (l.back() != 's' && l.back() != ')'))
+            return std::string_view::npos;
+        return at;
+    };
+    const auto base = [&](std::string_view l) { return l.substr(0, time_at(l)); };
+    if (repeats_ > 0 && !log.empty() && base(line) == base(repeated_)) {
+        ++repeats_;
+        const auto at = time_at(line);
+        log.back() = at == std::string::npos ? fmt::format("{} ({} times)", repeated_, repeats_)
+                                             : fmt::format("{} ({} times, the last at {})", repeated_, repeats_, line.substr(at + 4));
+        return;
+    }
+    repeated_ = line;
+    repeats_ = 1;
     log.push_back(std::move(line));
     while (log.size() > 200) log.pop_front();
 }
@@ -30,7 +52,24 @@ std::vector<Action> controls_panel(ControlsState& s) {
     const Rect r = kControlsRect;
     ImGui::SetNextWindowPos({r.x, r.y});
     ImGui::SetNextWindowSize({r.w, r.h});
-    ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
+    ImGui::Begin("Controls", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground |
+                     ImGuiWindowFlags_MenuBar);
+    if (ImGui::BeginMenuBar()) {
+        // The menu's place, for the test hooks' clicks (BeginMenu leaves no item rect to read once open).
+        const ImVec2 at = ImGui::GetCursorScreenPos();
+        const ImVec2 text = ImGui::CalcTextSize("Machine tool");
+        drawn_buttons()["controls.machine-tool"] = {at.x, at.y, at.x + text.x + 2 * ImGui::GetStyle().ItemSpacing.x,
+                                                    at.y + ImGui::GetFrameHeight()};
+        if (ImGui::BeginMenu("Machine tool")) {
+            // The operator's set-up between two jobs (docs/machine.md): the tables back at the start.
+            if (ImGui::MenuItem("Set up a new workpiece")) out.push_back({K::NewWorkpiece, {}});
+            const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+            drawn_buttons()["controls.new-workpiece"] = {a.x, a.y, b.x, b.y};
+            ImGui::EndMenu();
+        }
+        ImGui::EndMenuBar();
+    }
     if (named_button("controls.run", s.running ? "Pause###run" : "Run###run", 60)) out.push_back({K::RunPause, {}});
     ImGui::SameLine();
     if (ImGui::Button("Reset")) out.push_back({K::Reset, {}});

@@ -19,7 +19,7 @@ inline constexpr std::array<Speed, 5> kSpeeds{{
     {"x0.1", 0.1}, {"real time (3.072 MHz)", 1}, {"x10", 10}, {"x100", 100}, {"as fast as possible", 0}}};
 
 struct Action {
-    enum class Kind { RunPause, Reset, Speed, Firmware, LoadFile, SaveSnapshot, LoadSnapshot, Screenshot, RecordStart, RecordStop, Plot };
+    enum class Kind { RunPause, Reset, Speed, Firmware, LoadFile, SaveSnapshot, LoadSnapshot, Screenshot, RecordStart, RecordStop, Plot, NewWorkpiece };
     Kind kind;
     std::string arg;  // firmware name or a path (as typed)
     int speed = 1;    // index into kSpeeds
@@ -35,7 +35,14 @@ struct ControlsState {
     std::string record = "toolpath.csv", plot = "toolpath.png";
     std::deque<std::string> log;
     std::string status;  // one line: time, speed, fps
+    // A line that repeats the last but for its time (" at TIME", as "the Y table reached its high
+    // end stop at ..." comes at every step of a runaway) replaces it with a count:
+    // "... at 1.200 s (600 times, the last at 3.400 s)".
     void add_log(std::string line);
+
+private:
+    std::string repeated_;  // the last line as first logged, and how often it came
+    int repeats_ = 0;
 };
 
 std::vector<Action> controls_panel(ControlsState& s);

@@ -1,5 +1,6 @@
 #include "emu/gui/debug_panes.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -20,14 +21,62 @@ void begin_pane(const char* title, const Rect& r) {
     ImGui::SetNextWindowSize({r.w, r.h});
     ImGui::Begin(title, nullptr, kPane);
 }
-std::string run(DebugPanes& p, script::DebugShell& shell, const std::string& line) {
-    p.add_log("(alp85) " + line);
-    std::string out = shell.execute(line);
-    p.add_log(out);
-    p.last_t = ~0ull;  // refresh the panes
-    return out;
+// A pane the user can resize (by its edges and corners): placed in its rect the first time only.
+void begin_resizable_pane(const char* title, const Rect& r, ImGuiWindowFlags extra = 0) {
+    ImGui::SetNextWindowPos({r.x, r.y}, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize({r.w, r.h}, ImGuiCond_FirstUseEver);
+    ImGui::Begin(title, nullptr, (kPane & ~ImGuiWindowFlags_NoResize) | extra);
+}
+// The words of a line: the command (without a /FMT) and its first argument.
+std::pair<std::string_view, std::string_view> first_words(std::string_view line) {
+    const auto word = [&line] {
+        const auto b = line.find_first_not_of(" \t");
+        if (b == std::string_view::npos) return std::string_view{};
+        line.remove_prefix(b);
+        const auto e = std::min(line.find_first_of(" \t"), line.size());
+        const std::string_view w = line.substr(0, e);
+        line.remove_prefix(e);
+        return w;
+    };
+    std::string_view cmd = word();
+    cmd = cmd.substr(0, cmd.find('/'));
+    return {cmd, word()};
+}
+bool prefix_of(std::string_view word, std::string_view full, std::size_t least) {
+    return word.size() >= least && full.starts_with(word);
+}
+// The last item's place, for the test hooks' clicks (click:NAME).
+void remember_item(const std::string& name) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    drawn_buttons()[name] = {a.x, a.y, b.x, b.y};
 }
 }  // namespace
+
+bool runs_while_running(std::string_view line) {
+    const auto [cmd, arg] = first_words(line);
+    // list only reads the source: it runs too, and the source pane follows it.
+    for (std::string_view w : {"break", "b", "br", "brea", "tbreak", "tb", "watch", "wa", "rwatch", "rw", "awatch", "aw", "display", "disp",
+                               "list", "l"})
+        if (cmd == w) return true;
+    if (cmd == "info" || cmd == "i")
+        return prefix_of(arg, "breakpoints", 1) || prefix_of(arg, "watchpoints", 2) || prefix_of(arg, "displays", 4);
+    return false;
+}
+
+Typed run_typed(DebugPanes& p, script::DebugShell& shell, const std::string& line, bool running) {
+    p.add_log("(alp85) " + line);
+    Typed t;
+    if (running && !runs_while_running(line)) {
+        t.out = "The machine is running: pause first (Pause), then the command runs as typed.\n";
+    } else {
+        t.out = shell.execute(line);
+        t.ran = true;
+        if (const auto l = list_target(p, shell, line)) p.show_chosen(*l);
+    }
+    p.add_log(t.out);
+    p.last_t = ~0ull;  // refresh the panes
+    return t;
+}
 
 void DebugPanes::add_log(const std::string& text) {
     std::size_t start = 0;
@@ -38,6 +87,42 @@ void DebugPanes::add_log(const std::string& text) {
         start = nl + 1;
     }
     while (log.size() > 400) log.pop_front();
+}
+
+void DebugPanes::show_chosen(const SourceLine& l) {
+    file = l.file;
+    first = std::max(1, l.line - kSourceRows / 2);
+    pinned = true;
+}
+
+std::optional<SourceLine> list_target(const DebugPanes& p, script::DebugShell& shell, std::string_view line) {
+    const auto [cmd, arg_word] = first_words(line);
+    if (cmd != "list" && cmd != "l") return std::nullopt;
+    const auto b = line.find(arg_word);
+    std::string_view arg = arg_word.empty() ? arg_word : line.substr(b);
+    arg = arg.substr(0, arg.find(','));  // a range: its first line
+    while (!arg.empty() && (arg.back() == ' ' || arg.back() == '\t')) arg.remove_suffix(1);
+    if (arg.empty()) return std::nullopt;
+    const auto number = [](std::string_view t) -> std::optional<int> {
+        if (t.empty() || t.size() > 6 || !std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; })) return std::nullopt;
+        return std::stoi(std::string(t));
+    };
+    const SymbolTable& program = shell.debugger().program();
+    if (const auto colon = arg.rfind(':'); colon != std::string_view::npos) {  // FILE:LINE
+        const auto n = number(arg.substr(colon + 1));
+        const std::string_view name = arg.substr(0, colon);
+        if (!n) return std::nullopt;
+        for (const std::string& f : program.files())
+            if (f == name || (f.size() > name.size() && f.ends_with(name) && f[f.size() - name.size() - 1] == '/')) return SourceLine{f, *n};
+        return std::nullopt;
+    }
+    if (const auto n = number(arg)) {  // a line of the file shown
+        if (p.file.empty()) return std::nullopt;
+        return SourceLine{p.file, *n};
+    }
+    const auto v = shell.debugger().evaluate(std::string(arg));  // a symbol or an address
+    if (!v.error.empty()) return std::nullopt;
+    return program.line_of(static_cast<std::uint16_t>(v.value));
 }
 
 std::optional<SourceLine> DebugPanes::line_in_row(int row) const {
@@ -79,6 +164,10 @@ void toggle_breakpoint(DebugPanes& p, script::DebugShell& shell, int row) {
     p.last_t = ~0ull;
 }
 
+void draw_part_lines(const DebugPanes::PartPane& part) {
+    for (const std::string& l : part.lines) ImGui::TextWrapped("%s", l.c_str());  // wrapped, not cut at the edge
+}
+
 std::vector<DebugPanes::PartPane> part_panes(script::DebugShell& shell) {
     std::vector<DebugPanes::PartPane> out;
     for (const periph::Part* part : shell.debugger().machine().parts()) {
@@ -101,7 +190,7 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     const std::uint16_t pc = m.cpu().regs().pc;
     const auto pc_line = d.program().line_of(d.where());  // a halted CPU: its HLT's line
     if (pc != p.last_pc) {
-        if (pc_line) p.show(*pc_line);
+        if (pc_line && !p.pinned) p.show(*pc_line);
         p.last_pc = pc;
     }
     if (m.now() != p.last_t) {
@@ -116,6 +205,8 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
             f(0x10), f(0x04), f(0x01), f(0x02), f(0x20), m.cpu().interrupts_enabled() ? 1 : 0, (rim >> 2) & 1, (rim >> 1) & 1, rim & 1,
             (rim >> 6) & 1, m.now(), board::ms_from_tstates(m.now()));
         p.parts = part_panes(shell);
+        p.frames = d.backtrace();
+        if (p.files.size() != d.program().files().size()) p.files = d.program().files();
         p.last_t = m.now();
     }
 
@@ -135,6 +226,10 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
         dl->AddText({r.x + kSourceTextX, r.y + 1}, IM_COL32(230, 230, 230, 255), text->c_str());
     }
     if (p.file.empty()) ImGui::TextUnformatted("(no source for the PC)");
+    if (ImGui::IsWindowHovered() && ImGui::GetIO().MouseWheel != 0 && !p.file.empty()) {  // the wheel scrolls the file
+        p.first = std::max(1, p.first - static_cast<int>(ImGui::GetIO().MouseWheel * 3));
+        p.pinned = true;
+    }
     ImGui::End();
 
     // ---- registers and flags ----
@@ -172,24 +267,40 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     ImGui::End();
 
     // ---- the parts: a tab each, showing its description ----
-    ImGui::SetNextWindowPos({kChipsRect.x, kChipsRect.y});
-    ImGui::SetNextWindowSize({kChipsRect.w, kChipsRect.h});
-    ImGui::Begin("Parts", nullptr, kPane | ImGuiWindowFlags_HorizontalScrollbar);
+    // The scrollbar always there: text wrapped at a width that does not change when one appears.
+    begin_resizable_pane("Parts", kChipsRect, ImGuiWindowFlags_AlwaysVerticalScrollbar);
     if (ImGui::BeginTabBar("parts", ImGuiTabBarFlags_FittingPolicyScroll)) {
         for (const DebugPanes::PartPane& part : p.parts) {
             const bool bring = !p.shown_part.empty() && p.shown_part == part.name;
-            if (ImGui::BeginTabItem(part.name.c_str(), nullptr, bring ? ImGuiTabItemFlags_SetSelected : 0)) {
+            const bool open = ImGui::BeginTabItem(part.name.c_str(), nullptr, bring ? ImGuiTabItemFlags_SetSelected : 0);
+            remember_item("debug.tab:" + part.name);
+            if (open) {
                 if (bring) p.shown_part.clear();  // it is in front: the user's clicks choose from now on
-                for (const std::string& l : part.lines) ImGui::TextUnformatted(l.c_str());
+                draw_part_lines(part);
                 ImGui::EndTabItem();
             }
+        }
+        // The call stack: a click on a frame shows its line in the source pane. At the right end of
+        // the tabs, always in view however many parts there are.
+        const bool stack_open = ImGui::BeginTabItem("call stack", nullptr, ImGuiTabItemFlags_Trailing);
+        remember_item("debug.tab:call stack");
+        if (stack_open) {
+            for (std::size_t i = 0; i < p.frames.size(); ++i) {
+                const debug::Frame& f = p.frames[i];
+                const std::string where =
+                    f.line ? fmt::format("{}:{}", std::filesystem::path(f.line->file).filename().string(), f.line->line) : std::string("??");
+                const std::string text = fmt::format("#{} {:04X}H {} {}", i, f.pc, f.routine.value_or("??"), where);
+                if (ImGui::Selectable(text.c_str()) && f.line) p.show_chosen(*f.line);
+                remember_item(fmt::format("debug.frame:{}", i));
+            }
+            ImGui::EndTabItem();
         }
         ImGui::EndTabBar();
     }
     ImGui::End();
 
     // ---- watch list ----
-    begin_pane("Watch", kWatchRect);
+    begin_resizable_pane("Watch", kWatchRect);
     int remove = -1;
     for (std::size_t i = 0; i < p.watches.size(); ++i) {
         const auto v = d.evaluate(p.watches[i]);
@@ -232,6 +343,19 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     if (named_button("debug.reverse-next", "Rev next", b.x)) p.request = R::ReverseNext;
     ImGui::SameLine();
     if (named_button("debug.reverse-finish", "Rev finish", b.x)) p.request = R::ReverseFinish;
+    // Every source of the loaded program's map: the source pane shows the one chosen.
+    ImGui::SetNextItemWidth(260);
+    const std::string shown = p.file.empty() ? std::string("(none)") : std::filesystem::path(p.file).filename().string();
+    const bool chooser = ImGui::BeginCombo("source file", shown.c_str());
+    remember_item("debug.source-files");
+    if (chooser) {
+        for (const std::string& f : p.files) {
+            const std::string name = std::filesystem::path(f).filename().string();
+            if (ImGui::Selectable(name.c_str(), f == p.file)) p.show_chosen({f, 1 + kSourceRows / 2});
+            remember_item("debug.source:" + name);
+        }
+        ImGui::EndCombo();
+    }
     ImGui::End();
 
     // ---- the command line ----
@@ -242,8 +366,8 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     ImGui::EndChild();
     ImGui::SetNextItemWidth(kCommandRect.w - 20);
     if (ImGui::InputText("##command", &p.command, ImGuiInputTextFlags_EnterReturnsTrue)) {
-        if (!p.command.empty()) run(p, shell, p.command);
-        p.command.clear();
+        // A line refused while running stays in the box, to be entered again after Pause.
+        if (p.command.empty() || run_typed(p, shell, p.command, running).ran) p.command.clear();
         ImGui::SetKeyboardFocusHere(-1);
     }
     ImGui::End();

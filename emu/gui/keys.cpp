@@ -88,16 +88,27 @@ std::string_view cap_label(const PadKey& k) {
     }
 }
 
+std::optional<std::string_view> feed_prompt_hint(std::string_view display, bool physical_motors) {
+    if (!physical_motors || !display.starts_with("H=")) return std::nullopt;
+    return "F 0006-1500 mm/min; F <= 0300 runs away along X (physical motors)";
+}
+
 void Presser::down(const PadKey& k, Machine& m) {
     if (held(k)) return;
-    held_.push_back({k, m.now()});
-    apply(k, true, m.now(), m);
+    // After a press whose release is still to come (a short one), this one waits its turn: closed
+    // with it, it would merge into it (the same key) or be two keys at once to the 8279. A queue
+    // further ahead than kQueueLimit is from a machine taken back in time (restore, reverse).
+    const std::uint64_t at = free_at_ > m.now() && free_at_ - m.now() <= kQueueLimit ? free_at_ : m.now();
+    held_.push_back({k, at});
+    apply(k, true, at, m);
 }
 
 void Presser::up(const PadKey& k, Machine& m) {
     const auto it = std::find_if(held_.begin(), held_.end(), [&](const Held& h) { return same(h.key, k); });
     if (it == held_.end()) return;
-    apply(k, false, std::max(m.now(), it->since + kMinHold), m);
+    const std::uint64_t release = std::max(m.now(), it->since + kMinHold);
+    apply(k, false, release, m);
+    free_at_ = release + kMinGap;
     held_.erase(it);
 }
 

@@ -3,7 +3,8 @@
 // key names), the captions, the key map's rows, and the presses themselves. A press closes the key
 // now (machine time) and opens it when released, but never sooner than kMinHold after it closed,
 // so that the 8279's debounce (two scans, about 10 ms) always sees it: the script's default hold,
-// 30 ms of simulated time.
+// 30 ms of simulated time. Presses quicker than that (several in one frame) are queued: each
+// closes kMinGap after the one before opened, the script's default gap, so none is lost.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +20,8 @@
 namespace alp85::gui {
 
 inline constexpr std::uint64_t kMinHold = kKeyHold;
+inline constexpr std::uint64_t kMinGap = kKeyGap;
+inline constexpr std::uint64_t kQueueLimit = board::tstates_from_ms(2000);
 
 // A PC key by its name ("0"-"9", "A"-"F" for the hex keys, then "Enter", "Space", "Backspace",
 // "R", "G", "M", "X", "S", "Esc", "V"), the board key's name (find_pad_key), and the short label
@@ -39,6 +42,12 @@ struct KeyMapRow {
 };
 std::vector<KeyMapRow> key_map_rows(bool debug);
 
+// A line shown under the display while the thesis firmware's feed prompt ("H=----", F in mm/min,
+// D = 1500 / F) is typed with the physical motors: F 0006-1500 is accepted, but at F <= 0300
+// (D >= 5) the closed loop reads the rotor's swing back as a step back and X runs away
+// (docs/results.md). nullopt at every other display.
+std::optional<std::string_view> feed_prompt_hint(std::string_view display, bool physical_motors);
+
 class Presser {
 public:
     // Button down / up from the mouse or the keyboard (a second down of a held key is ignored).
@@ -53,6 +62,7 @@ private:
         std::uint64_t since;
     };
     std::vector<Held> held_;
+    std::uint64_t free_at_ = 0;  // machine time from which the next press may close
 };
 
 }  // namespace alp85::gui

@@ -152,10 +152,12 @@ Vec2 to_logical(const Fit& f, float x, float y) { return {(x - f.ox) / f.scale, 
 Vec2 to_window(const Fit& f, float x, float y) { return {x * f.scale + f.ox, y * f.scale + f.oy}; }
 
 Size initial_window_size(double scale, int usable_w, int usable_h) {
-    if (scale <= 0) {
+    if (usable_w > 0 && usable_h > 0) {
         // Room for a title bar and a panel (about 60 pixels), and a margin at the sides.
-        const double fit = std::min({1.0, (usable_w - 40) / double(kWindowWidth), (usable_h - 60) / double(kWindowHeight)});
-        scale = std::max(fit, 0.25);
+        const double fit = std::max(0.25, std::min((usable_w - 40) / double(kWindowWidth), (usable_h - 60) / double(kWindowHeight)));
+        scale = scale <= 0 ? std::min(1.0, fit) : std::min(scale, fit);
+    } else if (scale <= 0) {
+        scale = 1;  // the screen's size unknown
     }
     return {static_cast<int>(std::lround(kWindowWidth * scale)), static_cast<int>(std::lround(kWindowHeight * scale))};
 }

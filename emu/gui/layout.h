@@ -70,7 +70,8 @@ Vec2 to_logical(const Fit& f, float x, float y);
 Vec2 to_window(const Fit& f, float x, float y);
 // The window's first size: the logical size times `scale` when scale > 0; otherwise the largest
 // that fits a usable_w x usable_h desktop with room for a title bar and a panel, at most 1:1
-// (1366x768 gives 1133x708).
+// (1366x768 gives 1133x708). A scale too large for the desktop is brought down to that fit (the
+// caller warns); a desktop of unknown size (0 x 0) takes the scale as given.
 struct Size {
     int w = 0, h = 0;
 };
@@ -82,6 +83,7 @@ inline constexpr float kDigitPitch = 58, kDigitW = 40, kDigitH = 76, kSegT = 8;
 inline constexpr float kDpRadius = 4.5f;
 inline constexpr Rect kBoardRect{8, 8, 504, 470};
 inline constexpr Rect kDisplayRect{16, 30, 488, 104};
+inline constexpr Rect kHintRect{16, 138, 488, 18};  // under the display: a prompt's hint (keys.h)
 
 // A segment as its centre line (the drawn bar is kSegT thick around it, with pointed ends).
 struct Segment {

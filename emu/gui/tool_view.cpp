@@ -25,6 +25,12 @@ Bounds table_bounds(const Machine& m, const Toolpath& path) {
     return b;
 }
 
+std::optional<float> grid_label_y(float line_y) {
+    const float y = line_y - kGridLabelRise;
+    if (y < kTableRect.y + kTableTitleBand) return std::nullopt;
+    return y;
+}
+
 TableView table_view(const Machine& m, const Toolpath& path) { return TableView::fit(table_bounds(m, path)); }
 
 void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& path, const TableView& view) {
@@ -42,7 +48,7 @@ void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& 
     for (double y : plot::ticks(view.cy - half_h, view.cy + half_h, 6)) {
         const Vec2 p = view.to_px(0, y);
         dl->AddLine({r.x, p.y}, {r.x + r.w, p.y}, grid);
-        dl->AddText({r.x + 2, p.y - 14}, label, fmt::format("{:g}", y).c_str());
+        if (const auto ly = grid_label_y(p.y)) dl->AddText({r.x + 2, *ly}, label, fmt::format("{:g}", y).c_str());
     }
     const Bounds w = path.workpiece(m);
     const Vec2 w0 = view.to_px(w.x0, w.y1), w1 = view.to_px(w.x1, w.y0);

@@ -43,6 +43,13 @@ AxesReadout read_axes(const Machine& m);
 std::optional<periph::MachineTool::MotorModel> axes_panel(const AxesReadout& axes, periph::MachineTool::MotorModel model);
 
 inline constexpr float kToolRadius = 7;
+// The title's band at the top of the table view (the title is drawn at 4 px, 13 px of text):
+// the grid's labels stay out of it.
+inline constexpr float kTableTitleBand = 20;
+inline constexpr float kGridLabelRise = 14;  // a Y label sits this far above its grid line
+// Where the label of the horizontal grid line at window row `line_y` is drawn, or nullopt when it
+// would overlap the title (the "30" that was drawn over it).
+std::optional<float> grid_label_y(float line_y);
 // The table view's title: it must fit kTableRect's width (the Z gauge follows).
 inline constexpr const char* kTableTitle = "X-Y table from above, mm: ideal line (green), toolpath (blue), tool";
 // The axis panel's column headers; "axis" and the phase lamps' get the width of their text.

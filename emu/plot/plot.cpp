@@ -151,7 +151,8 @@ std::vector<double> ticks(double lo, double hi, int target) {
     std::vector<double> out;
     if (!(hi > lo)) return out;
     const double step = nice_step(hi - lo, target);
-    for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + step * 1e-9; k += 1.0) out.push_back(k * step);
+    // + 0.0: ceil of a small negative is -0.0, and a tick there would be labelled "-0".
+    for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + step * 1e-9; k += 1.0) out.push_back(k * step + 0.0);
     return out;
 }
 

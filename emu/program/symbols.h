@@ -75,6 +75,8 @@ public:
     // The next line of `file` at or after `line` that produced code (a breakpoint on a comment
     // binds there), or nullopt.
     std::optional<SourceLine> next_line_with_code(std::string_view file, int line) const;
+    // Every source file lines were added from, in load order (full names as loaded).
+    const std::vector<std::string>& files() const { return files_; }
 
 private:
     struct Span {

@@ -49,7 +49,7 @@ enum class Op : std::uint8_t {
     Break, Delete, DeleteAll,
     ExpectDisplay, ExpectMem, ExpectWord, ExpectReg, ExpectFlag, ExpectPort, ExpectSymbol, ExpectTime,
     ExpectHalted, ExpectRunning,
-    Motor, Feedback, PrintAxes, PrintTime, Mark, ExpectAxis, ExpectCount, ExpectLost, RunUntilAxis, Record, RecordStop, Plot,
+    Motor, Feedback, NewWorkpiece, PrintAxes, PrintTime, Mark, ExpectAxis, ExpectCount, ExpectLost, RunUntilAxis, Record, RecordStop, Plot,
     SetMem, SetReg,
     Save, Restore,
     Option,

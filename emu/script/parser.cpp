@@ -53,6 +53,7 @@ public:
             {"MOTOR", &LineParser::motor},     {"RECORD", &LineParser::record},
             {"PLOT", &LineParser::plot},       {"FEEDBACK", &LineParser::feedback},
             {"MARK", &LineParser::mark},       {"OPTION", &LineParser::option},
+            {"NEW", &LineParser::new_workpiece},
         };
         const auto it = verbs.find(verb);
         if (it == verbs.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
@@ -362,6 +363,13 @@ private:
     bool mark(Command& c) {
         c.op = Op::Mark;
         return true;
+    }
+    // new workpiece: the operator's set-up (MachineTool::set_up_workpiece).
+    bool new_workpiece(Command& c) {
+        c.op = Op::NewWorkpiece;
+        if (at_word("WORKPIECE")) return ++pos_, true;
+        if (more()) return fail(peek(), fmt::format("unknown '{}' after new (new workpiece)", peek().text)), false;
+        return missing("'workpiece' (new workpiece)");
     }
     bool feedback(Command& c) {
         c.op = Op::Feedback;

@@ -295,13 +295,25 @@ Session::Outcome Session::load(const Command& c) {
     return {};
 }
 
+// A run in slices of pace_slice_ with the pace hook called between them (a window drawing the
+// machine at real time); the same instructions run as in one piece.
+debug::Stop Session::run_paced(std::uint64_t until, const std::function<bool()>& condition, const debug::Origin& o) {
+    if (!pace_) return debugger_.run_until(until, condition, o);
+    for (;;) {
+        const std::uint64_t slice_end = std::min(until, machine_->now() + pace_slice_);
+        const debug::Stop s = debugger_.run_until(slice_end, condition, o);
+        if (s.reason != debug::StopReason::Deadline || machine_->now() >= until) return s;
+        pace_(machine_->now());
+    }
+}
+
 Session::Outcome Session::press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap) {
     Machine& m = *machine_;
     const Button button = key.kind == KeyRef::Kind::Matrix ? Button::Matrix
                           : key.kind == KeyRef::Kind::Reset ? Button::Reset
                                                             : Button::Vect;
     if (button == Button::Reset) time_origin_ = m.now();
-    debugger_.run_until(schedule_press(m, button, key.key, hold, gap), {}, origin(c));
+    run_paced(schedule_press(m, button, key.key, hold, gap), {}, origin(c));
     return {};
 }
 
@@ -531,6 +543,7 @@ Session::Outcome Session::tool_command(const Command& c) {
                             : fmt::format("time: {} since the last reset", format_time(elapsed())));
             return {};
         case Op::Mark: mark_ = m.now(); return {};
+        case Op::NewWorkpiece: tool.set_up_workpiece(m.now()); return {};
         case Op::ExpectAxis: {
             if (c.in_mm) {
                 const double mm = tool.table_mm(axis);
@@ -559,8 +572,8 @@ Session::Outcome Session::tool_command(const Command& c) {
             return {};
         }
         case Op::RunUntilAxis: {
-            const debug::Stop stop = debugger_.run_for(
-                c.time, [&] { return compare(whole_steps(tool, axis), c.compare, c.integer); }, origin(c));
+            const debug::Stop stop = run_paced(
+                m.now() + c.time, [&] { return compare(whole_steps(tool, axis), c.compare, c.integer); }, origin(c));
             if (stop.reason == debug::StopReason::Condition) return {};
             if (stop.reason == debug::StopReason::Breakpoint)
                 return fail(c, fmt::format("stopped at breakpoint {} before axis {} reached {}{} steps", hex(stop.pc, 4),
@@ -665,6 +678,8 @@ Session::Outcome Session::plot_toolpath(const std::filesystem::path& out) {
     return execute(c);
 }
 
+Session::Outcome Session::new_workpiece() { return execute(typed(Op::NewWorkpiece)); }
+
 Session::Outcome Session::set_motor(periph::MachineTool::MotorModel model) {
     Command c = typed(Op::Motor);
     c.real = model == periph::MachineTool::MotorModel::Ideal ? 0 : 1;
@@ -681,7 +696,7 @@ Session::Outcome Session::execute(const Command& c) {
     Outcome o = run_command(c);
     // The machine changed outside its run: reverse execution's history ends here.
     switch (c.op) {
-        case Op::Load: case Op::Monitor: case Op::Firmware: case Op::Reset: case Op::Motor: case Op::Feedback:
+        case Op::Load: case Op::Monitor: case Op::Firmware: case Op::Reset: case Op::Motor: case Op::Feedback: case Op::NewWorkpiece:
         case Op::SetMem: case Op::SetReg: case Op::Restore: case Op::Option:
             debugger_.state_changed(c.op == Op::Restore);
             break;
@@ -735,7 +750,7 @@ Session::Outcome Session::run_command(const Command& c) {
             return {};
         }
         case Op::Run:
-            debugger_.run_for(c.time, {}, origin(c));
+            run_paced(m.now() + c.time, {}, origin(c));
             return {};
         case Op::RunUntil: {
             const auto a = resolve(*c.address, e);
@@ -747,7 +762,7 @@ Session::Outcome Session::run_command(const Command& c) {
         }
         case Op::WaitDisplay: {
             const std::string want = rtrim(c.text);
-            const debug::Stop stop = debugger_.run_for(c.time, [&] { return rtrim(m.display_text()) == want; }, origin(c));
+            const debug::Stop stop = run_paced(m.now() + c.time, [&] { return rtrim(m.display_text()) == want; }, origin(c));
             if (stop.reason == debug::StopReason::Condition) return {};
             if (stop.reason == debug::StopReason::Breakpoint || stop.reason == debug::StopReason::Watchpoint)
                 return fail(c, fmt::format("stopped at {} {} before the display showed \"{}\"", debug::name(stop.reason),
@@ -807,6 +822,7 @@ Session::Outcome Session::run_command(const Command& c) {
             return {};
         case Op::Motor:
         case Op::Feedback:
+        case Op::NewWorkpiece:
         case Op::PrintAxes:
         case Op::PrintTime:
         case Op::Mark:

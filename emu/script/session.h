@@ -74,6 +74,7 @@ public:
     Outcome record_stop();
     Outcome plot_toolpath(const std::filesystem::path& out);
     Outcome set_motor(periph::MachineTool::MotorModel model);
+    Outcome new_workpiece();  // the operator's set-up of a new workpiece (the script's `new workpiece`)
     // A key pressed or released now (a user at the keypad), scheduled where every key is.
     void key(Button button, periph::Key key, bool down);
 
@@ -113,6 +114,13 @@ public:
     std::string where_now() const;
     // A trace line per executed instruction (CSV), to `out`; nullptr stops it.
     void set_trace(std::ostream* out);
+    // Commands that run the machine (run, wait, type, press, run until axis) run in slices of
+    // `slice` T-states and call `pace` between them: a window draws and keeps to real time there.
+    // Unset (the default), they run in one piece.
+    void set_pace(std::function<void(std::uint64_t now)> pace, std::uint64_t slice) {
+        pace_ = std::move(pace);
+        pace_slice_ = slice;
+    }
 
     static std::string format_time(std::uint64_t tstates);
 
@@ -133,6 +141,7 @@ private:
     Outcome expect(const Command& c);
     Outcome tool_command(const Command& c);
     Outcome write_recording();
+    debug::Stop run_paced(std::uint64_t until, const std::function<bool()>& condition, const debug::Origin& o);
     std::string axes_text() const;
     std::uint16_t read_reg(Reg r) const;
     void write_reg(Reg r, std::uint16_t v);
@@ -143,6 +152,8 @@ private:
     std::filesystem::path out_dir_;
     std::optional<std::uint64_t> mark_;  // `mark`: the time `print time` also counts from
     debug::ToolRecorder recorder_;
+    std::function<void(std::uint64_t)> pace_;
+    std::uint64_t pace_slice_ = 0;
     std::filesystem::path record_path_;
     Command record_command_;
     std::map<std::string, LoadedImage> assembled_;  // from check(), by resolved path

@@ -1,12 +1,16 @@
 // emu/gui without a window: the pacing clock, the keypad's geometry and presses, the toolpath's
 // ideal line.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 
 #include "emu/board/machine.h"
+#include "emu/gui/controls.h"
 #include "emu/gui/debug_panes.h"
 #include "emu/gui/input.h"
+#include "emu/gui/keys.h"
 #include "emu/gui/layout.h"
 #include "emu/gui/pacer.h"
 #include "emu/gui/tool_view.h"
@@ -74,6 +78,62 @@ TEST(Presser, AShortClickIsHeldForTheDebounce) {
     EXPECT_TRUE(m.keypad().is_pressed(periph::Key::K7));
     m.run_for(board::tstates_from_ms(2));
     EXPECT_FALSE(m.keypad().is_pressed(periph::Key::K7));
+}
+
+// Two presses of 0 and then EXEC within one frame (key down, up, down, up, down, up before the
+// machine runs): each is held kKeyHold = 30 ms and the next closes kKeyGap = 30 ms after it
+// opened (emu/board/key_press.h, the script's defaults), so the 8279 sees three presses: 0 over
+// 0-30 ms, 0 over 60-90 ms, EXEC over 120-150 ms. Sampled in the middle of each interval.
+TEST(Presser, PressesWithinOneFrameAreQueuedNotLost) {
+    Machine m;
+    Presser p;
+    const PadKey zero = *find_pad_key("0"), exec = *find_pad_key("EXEC");
+    for (const PadKey& k : {zero, zero, exec}) {
+        p.down(k, m);
+        p.up(k, m);
+    }
+    const auto at = [&](int ms) { m.run_until(board::tstates_from_ms(ms)); };
+    at(15);
+    EXPECT_TRUE(m.keypad().is_pressed(periph::Key::K0));
+    at(45);
+    EXPECT_FALSE(m.keypad().is_pressed(periph::Key::K0));  // the gap: the first press ended
+    at(75);
+    EXPECT_TRUE(m.keypad().is_pressed(periph::Key::K0));   // the second, not merged into the first
+    EXPECT_FALSE(m.keypad().is_pressed(periph::Key::Exec));
+    at(105);
+    EXPECT_FALSE(m.keypad().is_pressed(periph::Key::K0));
+    EXPECT_FALSE(m.keypad().is_pressed(periph::Key::Exec));
+    at(135);
+    EXPECT_TRUE(m.keypad().is_pressed(periph::Key::Exec));  // not at once with the zeros
+    at(165);
+    EXPECT_FALSE(m.keypad().is_pressed(periph::Key::Exec));
+}
+
+// A runaway into an end stop reports it at every step: the log shows one line with a count.
+TEST(ControlsLog, RepeatedEndStopMessagesCoalesce) {
+    ControlsState s;
+    s.add_log("script endstop.alp");
+    for (int i = 0; i < 600; ++i) s.add_log(fmt::format("machine tool: the Y table reached its high end stop at {} ms", 400 + i));
+    ASSERT_EQ(s.log.size(), 2u);
+    EXPECT_EQ(s.log.back(), "machine tool: the Y table reached its high end stop at 400 ms (600 times, the last at 999 ms)");
+    s.add_log("machine tool: the Y table reached its low end stop at 2 s");  // another message: a line of its own
+    s.add_log("paused at 0B2CH");
+    s.add_log("paused at 0B2CH");  // the same text without a time: counted too
+    ASSERT_EQ(s.log.size(), 4u);
+    EXPECT_EQ(s.log[2], "machine tool: the Y table reached its low end stop at 2 s");
+    EXPECT_EQ(s.log[3], "paused at 0B2CH (2 times)");
+}
+
+// The feed prompt "H=----" (docs/thesis.md) and its digits as typed get the hint with the
+// physical motors; X1's "H1=----", the Z prompt and the ideal motors do not.
+TEST(Prompt, TheFeedPromptWarnsOfTheRunawayBelow300) {
+    const auto hint = feed_prompt_hint("H=----  ", true);
+    ASSERT_TRUE(hint);
+    EXPECT_NE(hint->find("0300"), std::string_view::npos);
+    EXPECT_TRUE(feed_prompt_hint("H=0750", true));
+    EXPECT_FALSE(feed_prompt_hint("H1=----", true));
+    EXPECT_FALSE(feed_prompt_hint("?.=----", true));
+    EXPECT_FALSE(feed_prompt_hint("H=----", false));
 }
 
 // The thesis firmware's line: X1,Y1 = 100,50; X2,Y2 = 300,200 steps (16-bit little endian, 3 bytes
@@ -152,6 +212,27 @@ TEST(Window, TheFirstSizeFitsA1366x768Screen) {
     const Size hidpi = initial_window_size(2, 0, 0);
     EXPECT_EQ(hidpi.w, 2 * kWindowWidth);
     EXPECT_EQ(hidpi.h, 2 * kWindowHeight);
+}
+
+// --scale 2 on a 1366x768 screen: brought down to the largest that fits, as without --scale:
+// min((1366 - 40) / 1280, (768 - 60) / 800) = 0.885 -> 1133 x 708.
+TEST(Window, AScaleTooLargeForTheScreenIsFitted) {
+    const Size s = initial_window_size(2, 1366, 768);
+    EXPECT_EQ(s.w, 1133);
+    EXPECT_EQ(s.h, 708);
+    const Size fits = initial_window_size(2, 2600, 1700);  // 2560 + 40 and 1600 + 60 fit: as asked
+    EXPECT_EQ(fits.w, 2 * kWindowWidth);
+    EXPECT_EQ(fits.h, 2 * kWindowHeight);
+}
+
+// The table view's Y labels sit 14 px above their grid line; one that would reach into the title's
+// band (the top 20 px of kTableRect, y 8..28) is not drawn: a line at y 40 would put its label at
+// 26, over the title; one at 42 at 28, just below it.
+TEST(TableView, NoGridLabelOverTheTitle) {
+    EXPECT_FALSE(grid_label_y(kTableRect.y + 32));
+    ASSERT_TRUE(grid_label_y(kTableRect.y + 34));
+    EXPECT_FLOAT_EQ(*grid_label_y(kTableRect.y + 34), kTableRect.y + 20);
+    EXPECT_FLOAT_EQ(*grid_label_y(300), 286);
 }
 
 // A resized window: the picture keeps its proportions, centred; a point maps there and back.
@@ -263,6 +344,76 @@ TEST(PartPane, AToyPartAddedInOneLineHasItsTab) {
     EXPECT_EQ(tab->lines[2], "  heartbeats  0");
     for (const char* board_part : {"8155", "8279", "machine tool"})
         EXPECT_TRUE(std::any_of(panes.begin(), panes.end(), [&](const DebugPanes::PartPane& p) { return p.name == board_part; }));
+}
+
+// No part's text is cut off at the chip pane's edge (the 8155's "command 01H: port A out, port B
+// in, ..." ran past it): each part's lines, drawn as its tab draws them in a pane of the chip
+// pane's size and scrollbars, are no wider than the pane (nothing to scroll to sideways). The layout is the same
+// at 1366x768: the window scales it.
+TEST(DebugPanes, NoPartTextIsCutOff) {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    io.DisplaySize = {static_cast<float>(kWindowWidth), static_cast<float>(kWindowHeight)};
+    script::DebugShell shell{script::SessionOptions{}};
+    const auto parts = part_panes(shell);
+    ASSERT_GE(parts.size(), 4u);
+    for (const DebugPanes::PartPane& part : parts) {
+        float scroll_x = -1;
+        for (int i = 0; i < 3; ++i) {  // the content's size is known from the frame after
+            io.DeltaTime = 1.0f / 60;
+            ImGui::NewFrame();
+            ImGui::SetNextWindowSize({kChipsRect.w, kChipsRect.h});
+            ImGui::Begin(("pane " + part.name).c_str(), nullptr, ImGuiWindowFlags_HorizontalScrollbar | ImGuiWindowFlags_AlwaysVerticalScrollbar);
+            draw_part_lines(part);
+            scroll_x = ImGui::GetScrollMaxX();
+            ImGui::End();
+            ImGui::EndFrame();
+        }
+        EXPECT_EQ(scroll_x, 0) << part.name;
+    }
+    ImGui::DestroyContext();
+}
+
+// The Parts and Watch panes keep the size a user drags them to (ImGui::SetWindowSize is what a
+// drag on an edge does); the other panes stay in their rects.
+TEST(DebugPanes, PartsAndWatchAreResizable) {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    io.DisplaySize = {static_cast<float>(kWindowWidth), static_cast<float>(kWindowHeight)};
+    script::DebugShell shell{script::SessionOptions{}};
+    DebugPanes panes;
+    const auto frame = [&](const std::function<void()>& after) {
+        io.DeltaTime = 1.0f / 60;
+        ImGui::NewFrame();
+        draw_debug_panes(panes, shell, false);
+        after();
+        ImGui::EndFrame();
+    };
+    frame([] {
+        ImGui::SetWindowSize("Parts", {400, 300});
+        ImGui::SetWindowSize("Watch", {500, 200});
+        ImGui::SetWindowSize("Registers", {400, 300});
+    });
+    const auto size_of = [](const char* name) {
+        ImGui::Begin(name);  // appends to the pane drawn this frame
+        const ImVec2 s = ImGui::GetWindowSize();
+        ImGui::End();
+        return s;
+    };
+    ImVec2 parts, watch, regs;
+    frame([&] { parts = size_of("Parts"), watch = size_of("Watch"), regs = size_of("Registers"); });
+    EXPECT_FLOAT_EQ(parts.x, 400);
+    EXPECT_FLOAT_EQ(parts.y, 300);
+    EXPECT_FLOAT_EQ(watch.x, 500);
+    EXPECT_FLOAT_EQ(watch.y, 200);
+    EXPECT_FLOAT_EQ(regs.x, kRegistersRect.w);  // fixed
+    ImGui::DestroyContext();
 }
 
 }  // namespace

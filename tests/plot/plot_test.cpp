@@ -2,6 +2,7 @@
 // element), the toolpath and time-series helpers, tick choice, and the errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -92,6 +93,17 @@ TEST(Plot, TicksAreOneTwoFiveSteps) {
     ASSERT_EQ(t.size(), want.size());
     for (std::size_t i = 0; i < t.size(); ++i) EXPECT_NEAR(t[i], want[i], 1e-12);
     EXPECT_EQ(plot::ticks(0, 700, 7).size(), 8u);  // 0..700 by 100
+}
+
+// A span starting just below zero (a table view's grid from -2.3 mm): the tick at zero is +0,
+// labelled "0" (std::format's "{:g}" of -0.0 is "-0").
+TEST(Plot, TheTickAtZeroIsNotNegative) {
+    for (const double lo : {-2.3, -0.4, -1e-3}) {
+        const auto t = plot::ticks(lo, 10, 5);  // steps of 2: the first tick is at 0
+        ASSERT_FALSE(t.empty());
+        EXPECT_EQ(t.front(), 0.0);
+        EXPECT_FALSE(std::signbit(t.front())) << "from " << lo;
+    }
 }
 
 TEST(Plot, Errors) {

@@ -24,6 +24,16 @@ TEST(ScriptTool, MotorAndFeedback) {
     EXPECT_EQ(error_of("feedback").message, "expected a feedback (scale or commanded)");
 }
 
+TEST(ScriptTool, NewWorkpiece) {
+    EXPECT_EQ(one("new workpiece").op, Op::NewWorkpiece);
+    EXPECT_EQ(one("NEW Workpiece").op, Op::NewWorkpiece);
+    const ParseError e = error_of("new table");
+    EXPECT_EQ(e.where.col, 5);
+    EXPECT_EQ(e.message, "unknown 'table' after new (new workpiece)");
+    EXPECT_EQ(error_of("new").message, "expected 'workpiece' (new workpiece)");
+    EXPECT_EQ(error_of("new workpiece now").message, "unexpected 'now'");
+}
+
 TEST(ScriptTool, ExpectAxisInStepsAndMm) {
     const Command s = one("expect axis y steps -120");
     EXPECT_EQ(s.op, Op::ExpectAxis);
