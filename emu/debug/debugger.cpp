@@ -232,10 +232,11 @@ Stop Debugger::run_until(std::uint64_t until, const std::function<bool()>& condi
 Stop Debugger::run_to(std::uint16_t pc, std::uint64_t until) {
     check_inputs();
     for (;;) {
-        std::uint64_t chunk = until;
+        if (interrupt_.exchange(false)) return here(StopReason::Interrupted);
+        std::uint64_t chunk = std::min(until, m_.now() + kHistoryInterval);  // Ctrl-C is seen between chunks
         if (history_on_) {
             if (history_->due(m_.now())) history_->take(m_);
-            chunk = std::min(until, std::max(history_->next_due(), m_.now() + 1));
+            chunk = std::min(chunk, std::max(history_->next_due(), m_.now() + 1));
         }
         const Machine::RunEnd s = m_.run_to(pc, chunk);
         if (s == Machine::RunEnd::Target) return here(StopReason::Target);

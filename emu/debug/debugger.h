@@ -386,8 +386,13 @@ private:
     // an IN or OUT) or by an outside input (a key, RESET); otherwise not even its bytes are read.
     std::int64_t part_watch_value(Watchpoint& w, bool io = true);
     // Re-execution: the machine back at checkpoint `c`, then run to `t` (a position of this
-    // timeline), recording boundaries and/or hits on the way; nothing stops it.
-    void replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits);
+    // timeline), recording boundaries and/or hits on the way, a slice of kReplaySlice T-states at
+    // a time; after each slice `drain` takes what was recorded (and empties the vectors). Only
+    // interrupt() stops it: false, the machine left where it had got to.
+    bool replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits,
+                const std::function<void()>& drain = {});
+    Stop interrupted_reverse();  // a reverse command's Stop when interrupt() ended its re-execution
+    static constexpr std::uint64_t kReplaySlice = 65'536;  // about 21 ms simulated, well under 1 ms of host time
     Stop reverse_frame(bool finish);
     // Inputs scheduled since the last run (a key pressed after going back): snapshots later than
     // now belong to the old future and go.
