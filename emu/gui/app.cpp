@@ -2,7 +2,9 @@
 
 #include <sys/resource.h>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -38,6 +40,16 @@ namespace alp85::gui {
 namespace {
 
 constexpr auto kMachineBudget = std::chrono::milliseconds(10);  // of a 16.7 ms frame
+
+// SIGTERM (and SIGINT, Ctrl-C in the terminal that started the window) end the window within a
+// second whatever it is doing: the handler interrupts the debugger's run or re-execution under
+// way, and the frame loop and the script see the flag.
+volatile std::sig_atomic_t g_terminate = 0;  // the signal that asked, or 0
+std::atomic<debug::Debugger*> g_debugger{nullptr};
+extern "C" void on_terminate(int signal) {
+    g_terminate = signal;
+    if (debug::Debugger* d = g_debugger.load()) d->interrupt();
+}
 constexpr std::uint64_t kSamplePeriod = board::tstates_from_ms(1);
 constexpr int kSettleFrames = 30;
 constexpr std::uint64_t kClickGap = board::tstates_from_ms(100);
@@ -89,6 +101,7 @@ public:
 
     int start();
     int loop();
+    debug::Debugger& debugger() { return session_.debugger(); }
     bool canvas_ok() { return canvas_.init(kWindowWidth, kWindowHeight); }
 
 private:
@@ -355,6 +368,7 @@ void App::handle(const SDL_Event& event) {
 
 void App::step_script(HostClock::time_point until) {
     do {
+        if (g_terminate) return;
         if (script_pos_ >= script_.size()) {
             const auto r = session_.finish();
             if (r.status != script::Session::Status::Ok) {
@@ -680,7 +694,7 @@ int App::loop() {
     FrameClock clock(start);
     auto fps_t = start;
     long fps_frames = 0;
-    while (!quit_) {
+    while (!quit_ && !g_terminate) {
         const auto frame_start = HostClock::now();
         SDL_Event e;
         while (SDL_PollEvent(&e)) handle(e);
@@ -807,16 +821,26 @@ int run(const GuiOptions& o) {
     ImGui::StyleColorsDark();
     ImGui_ImplSDL2_InitForOpenGL(window, gl);
     ImGui_ImplOpenGL3_Init("#version 130");
+    struct sigaction ask{}, old_term{}, old_int{};
+    ask.sa_handler = on_terminate;
+    sigemptyset(&ask.sa_mask);
+    sigaction(SIGTERM, &ask, &old_term);
+    sigaction(SIGINT, &ask, &old_int);
     int status = 0;
     {
         App app(o, window);
+        g_debugger.store(&app.debugger());
         if (!app.canvas_ok()) {
             std::cerr << "alp85 gui: OpenGL has no framebuffer objects\n";
             status = 2;
         }
         if (status == 0) status = app.start();
         if (status == 0) status = app.loop();
+        g_debugger.store(nullptr);
     }
+    sigaction(SIGTERM, &old_term, nullptr);
+    sigaction(SIGINT, &old_int, nullptr);
+    if (g_terminate) status = 128 + g_terminate;  // as a shell reports a process a signal ended
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplSDL2_Shutdown();
     ImGui::DestroyContext();
