@@ -27,6 +27,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "emu/board/machine.h"
@@ -232,6 +233,15 @@ public:
     Stop advance(std::uint16_t pc) { return complete(begin_advance(pc)); }
     Stop until(std::optional<std::uint16_t> pc = {}) { return complete(begin_until(pc)); }
     Stop here(StopReason reason) const;  // a Stop describing the machine now
+    // A guard on machine time (--max-time): no run goes past the T-state `at`; one that would
+    // stops there with an Error Stop whose message is `why`. ~0: none.
+    void set_time_limit(std::uint64_t at, std::string why) {
+        time_limit_ = at;
+        time_limit_why_ = std::move(why);
+    }
+    // True once after a run stopped at the limit (a front end's command then fails).
+    bool take_time_limit_hit() { return std::exchange(time_limit_hit_, false); }
+    const std::string& time_limit_message() const { return time_limit_why_; }
     // Ends a run from another thread or a signal handler (Ctrl-C); the run returns Interrupted.
     void interrupt() { interrupt_.store(true); }
     void interrupt_clear() { interrupt_.store(false); }
@@ -424,6 +434,10 @@ private:
     Expr::Variables vars_;
     bool halted_ = false;  // set by the CPU's HLT while a run that stops there is under way
     bool track_stack_ = false;
+    std::uint64_t time_limit_ = ~std::uint64_t{0};
+    std::string time_limit_why_;
+    bool time_limit_hit_ = false;
+    Stop time_limit_stop();
     std::optional<std::bitset<0x10000>> code_;  // the runaway guard's map (nullopt: off)
 };
 

@@ -29,6 +29,7 @@ struct RunnerOptions {
     bool verbose = false;
     std::filesystem::path out_dir;  // --out-dir: where save, restore, record and plot files go
     periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;  // --motor, until `motor`
+    std::uint64_t max_time = SessionOptions::kDefaultMaxTime;  // --max-time: each script's machine time at most
 };
 
 // Parses and checks a file. Returns false and fills `errors` when the script cannot run.
