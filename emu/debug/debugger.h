@@ -21,6 +21,7 @@
 
 #include <atomic>
 #include <bitset>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -242,6 +243,11 @@ public:
     // True once after a run stopped at the limit (a front end's command then fails).
     bool take_time_limit_hit() { return std::exchange(time_limit_hit_, false); }
     const std::string& time_limit_message() const { return time_limit_why_; }
+    // Called between slices of a re-execution (under the reverse commands and `history`), at most
+    // every kPollPeriod of host time: a front end that reads its requests on this thread (DAP, the
+    // window) looks there for a pause and calls interrupt(). It must not run the debugger.
+    void set_poll(std::function<void()> poll) { poll_ = std::move(poll); }
+    static constexpr std::chrono::milliseconds kPollPeriod{10};
     // Ends a run from another thread or a signal handler (Ctrl-C); the run returns Interrupted.
     void interrupt() { interrupt_.store(true); }
     void interrupt_clear() { interrupt_.store(false); }
@@ -430,6 +436,7 @@ private:
     bool replaying_ = false;
     std::uint64_t seen_seq_ = 0;  // the input queue's numbering at the last run
     std::atomic<bool> interrupt_{false};
+    std::function<void()> poll_;
     std::optional<Active> active_;
     Expr::Variables vars_;
     bool halted_ = false;  // set by the CPU's HLT while a run that stops there is under way

@@ -3,6 +3,7 @@
 // deterministic, so the re-run is the run; while it runs the observer records each instruction
 // boundary or each breakpoint/watchpoint hit, from which the wanted position is chosen.
 #include <algorithm>
+#include <chrono>
 #include <deque>
 #include <map>
 
@@ -60,6 +61,7 @@ bool Debugger::replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary
     // A slice at a time: Ctrl-C is seen between slices, and what a slice recorded is handed on
     // and dropped (a reverse command's memory does not grow with the span it re-executes).
     bool whole = true;
+    auto next_poll = std::chrono::steady_clock::now() + kPollPeriod;
     while (m_.now() < t) {
         if (interrupt_.load()) {
             whole = false;
@@ -75,6 +77,10 @@ bool Debugger::replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary
             }
         }
         if (drain) drain();
+        if (poll_ && std::chrono::steady_clock::now() >= next_poll) {
+            poll_();
+            next_poll = std::chrono::steady_clock::now() + kPollPeriod;
+        }
     }
     m_.pause_sampler(false);
     mon.replay = false;
