@@ -2,6 +2,7 @@
 
 #include <sys/resource.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -93,6 +94,7 @@ public:
         pacer_.set_speed(kSpeeds[static_cast<std::size_t>(o.speed)].factor, machine().now(), HostClock::now());
         clicks_ = o.clicks;
         key_map_ = o.key_map;
+        session_.debugger().set_poll([this] { poll_during_reverse(); });
         if (o.debug) {
             shell_.debugger().set_history(true);
             ui_.running = false;  // the debugger starts paused: Continue (or the prompt) runs it
@@ -113,6 +115,12 @@ private:
     void pause_run();
     void report(const debug::Stop& s);
     void debug_request(DebugPanes::Request r);
+    // The reverse buttons: the request waits a frame, drawn with Pause showing, then runs whole
+    // (it holds the frame loop); meanwhile poll_during_reverse() reads the window's events: a
+    // click on Pause (or the Controls' Run/Pause) or closing the window ends it.
+    void run_reverse(DebugPanes::Request r);
+    void poll_during_reverse();
+    std::optional<DebugPanes::Request> reverse_pending_;
     void after_commands();
     void handle(const SDL_Event& e);
     void step_script(HostClock::time_point until);
@@ -472,11 +480,54 @@ void App::debug_request(DebugPanes::Request r) {
         case R::Step: forward(d.begin_step()); return;
         case R::Next: forward(d.begin_next()); return;
         case R::Finish: forward(d.begin_finish()); return;
-        case R::ReverseContinue: report(d.reverse_continue()); return;
+        case R::ReverseContinue:
+        case R::ReverseStep:
+        case R::ReverseNext:
+        case R::ReverseFinish:
+            reverse_pending_ = r;
+            ui_.running = true;  // the next frame shows Pause
+            return;
+    }
+}
+
+void App::run_reverse(DebugPanes::Request r) {
+    using R = DebugPanes::Request;
+    debug::Debugger& d = session_.debugger();
+    d.interrupt_clear();
+    if (o_.debug) std::cout << "[gui] reverse run under way\n" << std::flush;
+    switch (r) {
         case R::ReverseStep: report(d.reverse_step()); return;
         case R::ReverseNext: report(d.reverse_next()); return;
         case R::ReverseFinish: report(d.reverse_finish()); return;
+        default: report(d.reverse_continue()); return;
     }
+}
+
+void App::poll_during_reverse() {
+    SDL_PumpEvents();
+    SDL_Event e;
+    if (SDL_PeepEvents(&e, 1, SDL_PEEKEVENT, SDL_QUIT, SDL_QUIT) > 0) session_.debugger().interrupt();
+    std::array<SDL_Event, 32> events;
+    const int n = SDL_PeepEvents(events.data(), static_cast<int>(events.size()), SDL_PEEKEVENT, SDL_WINDOWEVENT,
+                                 SDL_MOUSEBUTTONUP);
+    bool pause = false;
+    for (int i = 0; i < n; ++i) {
+        const SDL_Event& x = events[static_cast<std::size_t>(i)];
+        if (x.type == SDL_WINDOWEVENT && x.window.event == SDL_WINDOWEVENT_CLOSE) session_.debugger().interrupt();
+        if (x.type != SDL_MOUSEBUTTONDOWN || x.button.button != SDL_BUTTON_LEFT) continue;
+        const Vec2 p = window_to_logical(static_cast<float>(x.button.x), static_cast<float>(x.button.y));
+        for (const char* name : {"debug.continue", "controls.run"}) {
+            const auto it = drawn_buttons().find(name);
+            if (it != drawn_buttons().end() && p.x >= it->second.x0 && p.x < it->second.x1 && p.y >= it->second.y0 &&
+                p.y < it->second.y1)
+                pause = true;
+        }
+    }
+    if (!pause) return;
+    pause_asked_ = HostClock::now();
+    session_.debugger().interrupt();
+    // The click was Pause's: it must not press Continue once the window reads events again.
+    SDL_FlushEvents(SDL_MOUSEBUTTONDOWN, SDL_MOUSEBUTTONUP);
 }
 
 void App::act(const Action& a) {
@@ -576,7 +627,8 @@ void App::drive_debug_hooks() {
         const std::string& line = o_.debug_commands[command_pos_++];
         // Hooks beside command lines: "click:NAME" clicks a named button (controls.run,
         // debug.continue, debug.step, ...), "frames:N" lets N frames pass, "status" prints whether
-        // the board runs and its time, "toolpath" how many points the drawn path has.
+        // the board runs and its time, "toolpath" how many points the drawn path has, "where:NAME"
+        // a button's centre in screen coordinates.
         if (line.starts_with("click:")) {
             const auto it = drawn_buttons().find(line.substr(6));
             if (it == drawn_buttons().end()) {
@@ -593,6 +645,20 @@ void App::drive_debug_hooks() {
         }
         if (line.starts_with("frames:")) {
             hook_wait_ = std::atol(line.c_str() + 7);
+            return;
+        }
+        if (line.starts_with("where:")) {  // a button's centre on the screen, for a test's real click
+            const auto it = drawn_buttons().find(line.substr(6));
+            if (it == drawn_buttons().end()) {
+                std::cerr << "alp85 gui: --debug-command " << line << ": no such button\n";
+                status_ = 2;
+                return;
+            }
+            const Vec2 c = logical_to_window((it->second.x0 + it->second.x1) / 2, (it->second.y0 + it->second.y1) / 2);
+            int wx = 0, wy = 0;
+            SDL_GetWindowPosition(window_, &wx, &wy);
+            std::cout << fmt::format("[gui] {} at {},{}\n", line.substr(6), wx + static_cast<int>(c.x), wy + static_cast<int>(c.y))
+                      << std::flush;
             return;
         }
         if (line == "toolpath") {
@@ -699,7 +765,8 @@ int App::loop() {
         SDL_Event e;
         while (SDL_PollEvent(&e)) handle(e);
         const auto budget = frame_start + kMachineBudget;
-        if (script_active_) step_script(budget);
+        if (reverse_pending_) run_reverse(*std::exchange(reverse_pending_, std::nullopt));
+        else if (script_active_) step_script(budget);
         else if (ui_.running) run_machine(budget);
         const auto machine_end = HostClock::now();
         machine_s_ += std::chrono::duration<double>(machine_end - frame_start).count();
