@@ -58,8 +58,8 @@ void add_script_command(CLI::App& app, int& status) {
         "Examples:\n"
         "  alp85 script scripts/monitor/*.alp\n"
         "  alp85 script test.alp --junit report.xml -v\n"
-        "Exit status: 0 every script passed, 1 an expectation failed, a script's machine time reached\n"
-        "--max-time or an output (--trace, --junit) could not be written, 2 a usage or script error (a script that is missing or a directory, an\n"
+        "Exit status: 0 every script passed, 1 an expectation failed or an output (--trace, --junit)\n"
+        "could not be written or a script's run reached --max-time, 2 a usage or script error (a script that is missing or a directory, an\n"
         "output that is a script or a file it loads, --trace and --junit on one file): then nothing runs.");
     cmd->callback([args, &status] {
         script::RunnerOptions o;
