@@ -437,6 +437,7 @@ private:
     std::uint64_t seen_seq_ = 0;  // the input queue's numbering at the last run
     std::atomic<bool> interrupt_{false};
     std::function<void()> poll_;
+    std::chrono::steady_clock::time_point poll_due_{};  // when replay() calls poll_ next
     std::optional<Active> active_;
     Expr::Variables vars_;
     bool halted_ = false;  // set by the CPU's HLT while a run that stops there is under way

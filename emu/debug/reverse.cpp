@@ -61,7 +61,6 @@ bool Debugger::replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary
     // A slice at a time: Ctrl-C is seen between slices, and what a slice recorded is handed on
     // and dropped (a reverse command's memory does not grow with the span it re-executes).
     bool whole = true;
-    auto next_poll = std::chrono::steady_clock::now() + kPollPeriod;
     while (m_.now() < t) {
         if (interrupt_.load()) {
             whole = false;
@@ -77,9 +76,11 @@ bool Debugger::replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary
             }
         }
         if (drain) drain();
-        if (poll_ && std::chrono::steady_clock::now() >= next_poll) {
+        // Due across re-executions: a walk back over short intervals re-executes many, each
+        // shorter than the period.
+        if (poll_ && std::chrono::steady_clock::now() >= poll_due_) {
             poll_();
-            next_poll = std::chrono::steady_clock::now() + kPollPeriod;
+            poll_due_ = std::chrono::steady_clock::now() + kPollPeriod;
         }
     }
     m_.pause_sampler(false);
