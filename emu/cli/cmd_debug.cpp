@@ -114,6 +114,7 @@ void add_debug_command(CLI::App& app, int& status) {
         bool no_history = false;
         std::string out_dir;
         std::string motor = "physical";
+        std::string max_time = "1h";
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("debug", "The source-level debugger (docs/debugging.md)");
@@ -125,14 +126,15 @@ void add_debug_command(CLI::App& app, int& status) {
     cmd->add_flag("--batch", args->batch, "End after --script (or after standard input); status 1 if a command failed");
     cmd->add_flag("--no-history", args->no_history, "No snapshots for reverse execution");
     add_motor_option(cmd, args->motor);
+    add_max_time_option(cmd, args->max_time);
     cmd->add_option("--out-dir", args->out_dir, "Folder for the files save, restore, record and plot write");
     cmd->footer(
         "Examples:\n"
         "  alp85 debug thesis-fixed\n"
         "  alp85 debug thesis-fixed --script session.gdb --batch\n"
         "Exit status: 0, 1 a command failed in a batch session (a save, record or plot onto a file the\n"
-        "session reads is such a failure), 2 a usage error (a --script that is missing, unreadable,\n"
-        "empty or no file).");
+        "session reads is such a failure; a run that reached --max-time fails), 2 a usage error (a\n"
+        "--script that is missing, unreadable, empty or no file).");
     cmd->callback([args, &status] {
         args->firmware.insert(args->firmware.begin(), args->firmware_option.begin(), args->firmware_option.end());
         // The script is read whole before anything runs: one that cannot be read, or is empty, is
@@ -156,7 +158,13 @@ void add_debug_command(CLI::App& app, int& status) {
                 return;
             }
         }
+        const auto max_time = max_time_of("alp85 debug", args->max_time);
+        if (!max_time) {
+            status = kUsageError;
+            return;
+        }
         script::SessionOptions o;
+        o.max_time = *max_time;
         o.base_dir = args->script.empty() ? std::filesystem::current_path()
                                           : std::filesystem::absolute(args->script).parent_path();
         if (firmware::have_monitor()) o.monitor_rom = firmware::monitor;

@@ -1,6 +1,6 @@
 // alp85 gui [FIRMWARE...]: the ALP 85 and its machine tool in a window (emu/gui). Exit status: 0,
 // 1 the script (--script) or --expect-display failed or the screenshot cannot be written, 2 a
-// usage error or no display.
+// usage error or no display, 128 + the signal when SIGTERM or SIGINT closed it.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -85,7 +85,8 @@ void add_gui_command(CLI::App& app, int& status) {
         "  alp85 gui --script scripts/demo/thesis.alp --speed max --screenshot gui.png\n"
         "Without a display it exits with status 2; use `alp85 run` or `alp85 script` there.\n"
         "Exit status: 0, 1 the script or --expect-display failed or the screenshot cannot be written,\n"
-        "2 a usage error (a bad number, a --screenshot that is an input) or no display.");
+        "2 a usage error (a bad number, a --screenshot that is an input) or no display; SIGTERM or\n"
+        "Ctrl-C close the window within a second whatever it is doing: 128 + the signal (143, 130).");
     cmd->callback([args, cmd, &status] {
         if (refuse_empty_outputs("gui", *cmd, {"--screenshot"})) {
             status = kUsageError;

@@ -1,5 +1,6 @@
 // alp85 script FILE... [--junit OUT.xml] [--trace OUT.csv] [-v]: headless firmware tests
-// (docs/scripting.md). Exit status: 0 all passed, 1 an expectation failed, 2 a script error.
+// (docs/scripting.md). Exit status: 0 all passed, 1 an expectation failed (or --max-time was
+// reached), 2 a script error.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -41,6 +42,7 @@ void add_script_command(CLI::App& app, int& status) {
         bool verbose = false;
         std::string out_dir;
         std::string motor = "physical";
+        std::string max_time = "1h";
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("script", "Run headless test scripts against the ALP 85 (docs/scripting.md)");
@@ -49,6 +51,7 @@ void add_script_command(CLI::App& app, int& status) {
     cmd->add_option("--trace", args->trace, "Write every executed instruction as CSV");
     cmd->add_flag("-v,--verbose", args->verbose, "Echo each command with the simulated time");
     add_motor_option(cmd, args->motor);
+    add_max_time_option(cmd, args->max_time);
     cmd->add_option("--out-dir", args->out_dir,
                     "Folder for the files scripts write and read back (save, restore, record, plot); "
                     "created if missing. Default: each script's own folder");
@@ -57,9 +60,10 @@ void add_script_command(CLI::App& app, int& status) {
         "  alp85 script scripts/monitor/*.alp\n"
         "  alp85 script test.alp --junit report.xml -v\n"
         "Exit status: 0 every script passed, 1 an expectation failed or an output (--trace, --junit)\n"
-        "could not be written, 2 a usage or script error (a script that is missing or a directory, an\n"
-        "output that is a script, an included script, a file it loads or restores, or an empty name;\n"
-        "--trace and --junit on one file; a save, record or plot onto any of those): then nothing runs.");
+        "could not be written or a script's run reached --max-time, 2 a usage or script error (a script\n"
+        "that is missing or a directory, an output that is a script, an included script, a file it\n"
+        "loads or restores, or an empty name; --trace and --junit on one file; a save, record or plot\n"
+        "onto any of those): then nothing runs.");
     cmd->callback([args, cmd, &status] {
         if (refuse_empty_outputs("script", *cmd, {"--junit", "--trace"})) {
             status = kUsageError;
@@ -71,6 +75,12 @@ void add_script_command(CLI::App& app, int& status) {
         o.err = &std::cerr;
         o.verbose = args->verbose;
         o.motor = motor_model_of(args->motor);
+        const auto max_time = max_time_of("alp85 script", args->max_time);
+        if (!max_time) {
+            status = 2;
+            return;
+        }
+        o.max_time = *max_time;
         if (!args->out_dir.empty()) {
             std::error_code ec;
             std::filesystem::create_directories(args->out_dir, ec);

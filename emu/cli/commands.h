@@ -1,6 +1,8 @@
 // The alp85 subcommands; each lives in its own file (cmd_*.cpp) and registers itself on the app.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -52,6 +54,12 @@ Variant variant_of(const std::string& cpu);
 // gives the model it names.
 CLI::Option* add_motor_option(CLI::App* cmd, std::string& motor);
 periph::MachineTool::MotorModel motor_model_of(const std::string& motor);
+
+// --max-time TIME (script, debug): the machine time a session may run, "1h" by default (a number
+// with a unit: t, us, ms, s or h), into `text`; max_time_of() gives the T-states, or prints why
+// the text is no time (argument_error) and gives nullopt.
+CLI::Option* add_max_time_option(CLI::App* cmd, std::string& text);
+std::optional<std::uint64_t> max_time_of(std::string_view who, const std::string& text);
 
 // Host time of a run: wall clock and this process's CPU time, from construction.
 using alp85::Stopwatch;  // emu/util/stopwatch.h

@@ -1,9 +1,13 @@
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
+#include <fmt/format.h>
+
 #include "emu/cli/commands.h"
 #include "emu/util/input_file.h"
+#include "emu/script/parser.h"
 
 namespace alp85::cli {
 namespace {
@@ -80,6 +84,32 @@ CLI::Option* add_motor_option(CLI::App* cmd, std::string& motor) {
 
 periph::MachineTool::MotorModel motor_model_of(const std::string& motor) {
     return motor == "ideal" ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical;
+}
+
+CLI::Option* add_max_time_option(CLI::App* cmd, std::string& text) {
+    return cmd
+        ->add_option("--max-time", text,
+                     "Machine time the session may run at most (t, us, ms, s or h); a run that reaches it stops and "
+                     "its command fails")
+        ->capture_default_str();
+}
+
+std::optional<std::uint64_t> max_time_of(std::string_view who, const std::string& text) {
+    std::optional<std::uint64_t> t;
+    if (!text.empty() && (text.back() == 'h' || text.back() == 'H')) {  // hours: the script language stops at s
+        const std::string num = text.substr(0, text.size() - 1);
+        char* end = nullptr;
+        const double h = std::strtod(num.c_str(), &end);
+        if (!num.empty() && end == num.c_str() + num.size() && h > 0 && h < 1e5) t = script::parse_time(fmt::format("{}s", h * 3600));
+    } else {
+        t = script::parse_time(text);
+    }
+    if (!t || *t == 0) {
+        std::cerr << argument_error(who, text,
+                                    fmt::format("bad --max-time '{}' (a time above 0 with a unit: t, us, ms, s or h)", text));
+        return std::nullopt;
+    }
+    return t;
 }
 
 int column_of(std::string_view argument) {

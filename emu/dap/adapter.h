@@ -48,6 +48,16 @@ public:
     // messages before the next slice: 0 to go on at once, more when pacing to real time.
     int advance();
     bool running() const { return session_ && session_->debugger().running(); }
+    // Called between slices of a long reverse run (Debugger::set_poll): the server reads the
+    // messages that came meanwhile there, keeps them for after the run, and on a `pause`
+    // calls interrupt(), which ends the run.
+    void set_poll(std::function<void()> poll) {
+        poll_ = std::move(poll);
+        if (session_) session_->debugger().set_poll(poll_);
+    }
+    void interrupt() {
+        if (session_) session_->debugger().interrupt();
+    }
     // The client said disconnect (answered): the server may close.
     bool finished() const { return finished_; }
 
@@ -135,6 +145,7 @@ private:
     LaunchConfig config_;
     std::unique_ptr<script::DebugShell> shell_;
     script::Session* session_ = nullptr;  // shell_'s
+    std::function<void()> poll_;
     ProgramMap map_;           // what is loaded where, for runaways and sources
     BreakpointTable bps_;      // every kind the client set
     std::vector<int> engine_points_;    // the Debugger's breakpoints and watchpoints made for bps_

@@ -3,6 +3,9 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <deque>
+#include <optional>
+#include <string>
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -14,6 +17,14 @@
 
 namespace alp85::dap {
 
+namespace {
+bool is_pause(const std::string& body) {
+    const Json msg = Json::parse(body, nullptr, /*allow_exceptions=*/false);
+    return msg.is_object() && msg.contains("type") && msg["type"] == "request" && msg.contains("command") &&
+           msg["command"] == "pause";
+}
+}  // namespace
+
 int serve(int in, int out) {
     std::signal(SIGPIPE, SIG_IGN);  // a client that goes away ends the session, not the process
     Channel channel(in, out);
@@ -21,15 +32,32 @@ int serve(int in, int out) {
     Adapter adapter([&](const Json& message) {
         if (!channel.send(message.dump(-1, ' ', false, Json::error_handler_t::replace))) peer_gone = true;
     });
+    // A reverse run holds this thread while it re-executes the past: between its slices the
+    // messages that came are read and kept, in order, for after it; a pause among them ends it.
+    std::deque<Frame> early;
+    bool input_ended = false;
+    adapter.set_poll([&] {
+        if (!input_ended && !channel.fill(0)) input_ended = true;
+        while (auto f = channel.next()) {
+            if (f->error.empty() && is_pause(f->body)) adapter.interrupt();
+            early.push_back(std::move(*f));
+        }
+    });
+    const auto next_frame = [&]() -> std::optional<Frame> {
+        if (early.empty()) return channel.next();
+        Frame f = std::move(early.front());
+        early.pop_front();
+        return f;
+    };
     int pace = 0;  // ms the last slice ran ahead of the host's clock (real-time runs)
     while (!adapter.finished() && !peer_gone) {
         // Messages first: a run never delays a pause by more than one slice.
-        while (auto f = channel.next()) {
+        while (auto f = next_frame()) {
             if (f->error.empty()) adapter.receive(f->body);
             else adapter.refuse_frame(f->error);
             if (adapter.finished()) return 0;
         }
-        if (!channel.fill(adapter.running() ? pace : -1)) return adapter.finished() ? 0 : 1;
+        if (input_ended || !channel.fill(adapter.running() ? pace : -1)) return adapter.finished() ? 0 : 1;
         pace = adapter.running() ? std::max(0, adapter.advance()) : 0;
     }
     return adapter.finished() ? 0 : 1;

@@ -71,6 +71,7 @@ void Adapter::start_session() {
     for (const std::string& w : warnings) output("stderr", w);
     debug::Debugger& d = session_->debugger();
     d.set_history(true);  // stepBack and reverseContinue from the first instruction on
+    d.set_poll(poll_);    // a pause during a long reverseContinue
     // The stack's top as the program set it (LXI SP / SPHL): return addresses above it are left
     // over from earlier code (the monitor's), not callers.
     d.track_stack_base(true);

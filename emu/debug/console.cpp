@@ -194,7 +194,9 @@ std::string Console::execute(std::string_view line) {
     int acol = col + static_cast<int>(word.size());
     const std::string_view args = trim_blanks(t.substr(word.size()), &acol);
     try {
-        return (this->*(c->handler))(args, acol);
+        std::string out = (this->*(c->handler))(args, acol);
+        if (d_.take_time_limit_hit()) ++errors_;  // a run stopped at --max-time: the command failed
+        return out;
     } catch (const std::exception& e) {  // nothing a command does ends the session
         return error(col, e.what());
     }

@@ -1,6 +1,7 @@
 // Running under the debugger: the run loop, steps with CALL/RET tracking, stops as values.
 #include "emu/debug/debugger.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include <fmt/format.h>
@@ -113,7 +114,9 @@ std::optional<Stop> Debugger::drive(const Budget& budget) {
     rebaseline();
     arm();
     const auto started = std::chrono::steady_clock::now();
-    const std::uint64_t slice_end = budget.tstates < run.until - std::min(run.until, m_.now()) ? m_.now() + budget.tstates : run.until;
+    if (m_.now() >= time_limit_ && run.until > m_.now()) return end_run(time_limit_stop());
+    const std::uint64_t until = std::min(run.until, time_limit_);
+    const std::uint64_t slice_end = budget.tstates < until - std::min(until, m_.now()) ? m_.now() + budget.tstates : until;
     const auto stop_condition = [&] { return interrupt_.load() || halted_ || (run.condition && run.condition()); };
     for (;;) {
         std::uint64_t chunk = std::min(slice_end, m_.now() + kHistoryInterval);  // Ctrl-C is seen between chunks
@@ -132,6 +135,7 @@ std::optional<Stop> Debugger::drive(const Budget& budget) {
                 return end_run(here(StopReason::Condition));
             case Machine::RunEnd::Deadline:
                 if (m_.now() >= run.until) return end_run(here(StopReason::Deadline));
+                if (m_.now() >= time_limit_) return end_run(time_limit_stop());
                 if (m_.now() >= slice_end) return std::nullopt;
                 if (budget.seconds > 0 &&
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >= budget.seconds)
@@ -234,16 +238,25 @@ Stop Debugger::run_until(std::uint64_t until, const std::function<bool()>& condi
     return complete(begin(std::move(a)));
 }
 
+Stop Debugger::time_limit_stop() {
+    time_limit_hit_ = true;
+    Stop s = here(StopReason::Error);
+    s.message = time_limit_why_;
+    return s;
+}
+
 Stop Debugger::run_to(std::uint16_t pc, std::uint64_t until) {
     check_inputs();
     // Breakpoints and watchpoints do not stop it: their observer is off for the run (one left on
     // stopped the machine at a breakpoint on the way again and again, until the deadline).
     m_.set_observer(nullptr);
     for (;;) {
-        std::uint64_t chunk = until;
+        if (m_.now() >= time_limit_ && until > m_.now()) return time_limit_stop();
+        if (interrupt_.exchange(false)) return here(StopReason::Interrupted);
+        std::uint64_t chunk = std::min({until, time_limit_, m_.now() + kHistoryInterval});  // Ctrl-C is seen between chunks
         if (history_on_) {
             if (history_->due(m_.now())) history_->take(m_);
-            chunk = std::min(until, std::max(history_->next_due(), m_.now() + 1));
+            chunk = std::min(chunk, std::max(history_->next_due(), m_.now() + 1));
         }
         const Machine::RunEnd s = m_.run_to(pc, chunk);
         if (s == Machine::RunEnd::Target || m_.now() >= until) {

@@ -21,12 +21,14 @@
 
 #include <atomic>
 #include <bitset>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "emu/board/machine.h"
@@ -232,6 +234,20 @@ public:
     Stop advance(std::uint16_t pc) { return complete(begin_advance(pc)); }
     Stop until(std::optional<std::uint16_t> pc = {}) { return complete(begin_until(pc)); }
     Stop here(StopReason reason) const;  // a Stop describing the machine now
+    // A guard on machine time (--max-time): no run goes past the T-state `at`; one that would
+    // stops there with an Error Stop whose message is `why`. ~0: none.
+    void set_time_limit(std::uint64_t at, std::string why) {
+        time_limit_ = at;
+        time_limit_why_ = std::move(why);
+    }
+    // True once after a run stopped at the limit (a front end's command then fails).
+    bool take_time_limit_hit() { return std::exchange(time_limit_hit_, false); }
+    const std::string& time_limit_message() const { return time_limit_why_; }
+    // Called between slices of a re-execution (under the reverse commands and `history`), at most
+    // every kPollPeriod of host time: a front end that reads its requests on this thread (DAP, the
+    // window) looks there for a pause and calls interrupt(). It must not run the debugger.
+    void set_poll(std::function<void()> poll) { poll_ = std::move(poll); }
+    static constexpr std::chrono::milliseconds kPollPeriod{10};
     // Ends a run from another thread or a signal handler (Ctrl-C); the run returns Interrupted.
     void interrupt() { interrupt_.store(true); }
     void interrupt_clear() { interrupt_.store(false); }
@@ -389,8 +405,13 @@ private:
     // an IN or OUT) or by an outside input (a key, RESET); otherwise not even its bytes are read.
     std::int64_t part_watch_value(Watchpoint& w, bool io = true);
     // Re-execution: the machine back at checkpoint `c`, then run to `t` (a position of this
-    // timeline), recording boundaries and/or hits on the way; nothing stops it.
-    void replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits);
+    // timeline), recording boundaries and/or hits on the way, a slice of kReplaySlice T-states at
+    // a time; after each slice `drain` takes what was recorded (and empties the vectors). Only
+    // interrupt() stops it: false, the machine left where it had got to.
+    bool replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits,
+                const std::function<void()>& drain = {});
+    Stop interrupted_reverse();  // a reverse command's Stop when interrupt() ended its re-execution
+    static constexpr std::uint64_t kReplaySlice = 65'536;  // about 21 ms simulated, well under 1 ms of host time
     Stop reverse_frame(bool finish);
     // Inputs scheduled since the last run (a key pressed after going back): snapshots later than
     // now belong to the old future and go.
@@ -418,10 +439,16 @@ private:
     bool replaying_ = false;
     std::uint64_t seen_seq_ = 0;  // the input queue's numbering at the last run
     std::atomic<bool> interrupt_{false};
+    std::function<void()> poll_;
+    std::chrono::steady_clock::time_point poll_due_{};  // when replay() calls poll_ next
     std::optional<Active> active_;
     Expr::Variables vars_;
     bool halted_ = false;  // set by the CPU's HLT while a run that stops there is under way
     bool track_stack_ = false;
+    std::uint64_t time_limit_ = ~std::uint64_t{0};
+    std::string time_limit_why_;
+    bool time_limit_hit_ = false;
+    Stop time_limit_stop();
     std::optional<std::bitset<0x10000>> code_;  // the runaway guard's map (nullopt: off)
 };
 

@@ -2,6 +2,11 @@
 // machine tool, time) and runs forward again to the wanted instruction. The machine is
 // deterministic, so the re-run is the run; while it runs the observer records each instruction
 // boundary or each breakpoint/watchpoint hit, from which the wanted position is chosen.
+#include <algorithm>
+#include <chrono>
+#include <deque>
+#include <map>
+
 #include <fmt/format.h>
 
 #include "asm/isa.h"
@@ -37,7 +42,8 @@ std::uint64_t Debugger::history_start() const {
 }
 std::size_t Debugger::history_snapshots() const { return history_->points.size(); }
 
-void Debugger::replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits) {
+bool Debugger::replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary>* record, std::vector<Hit>* hits,
+                      const std::function<void()>& drain) {
     Observer& mon = *observer_;
     const auto target = std::move(mon.target);
     mon.target = nullptr;
@@ -52,12 +58,29 @@ void Debugger::replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary
     rebaseline();
     arm();
     m_.pause_sampler(true);
-    while (m_.now() < t)
-        if (m_.run_until(t) == Machine::RunEnd::Deadline) break;
-    if (hits && !mon.pending.empty()) {
-        for (Hit& h : mon.decide_pending(false)) {
-            h.t = m_.now();
-            hits->push_back(std::move(h));
+    // A slice at a time: Ctrl-C is seen between slices, and what a slice recorded is handed on
+    // and dropped (a reverse command's memory does not grow with the span it re-executes).
+    bool whole = true;
+    while (m_.now() < t) {
+        if (interrupt_.load()) {
+            whole = false;
+            break;
+        }
+        const std::uint64_t slice = std::min(t, m_.now() + kReplaySlice);
+        while (m_.now() < slice)
+            if (m_.run_until(slice) == Machine::RunEnd::Deadline) break;
+        if (hits && m_.now() >= t && !mon.pending.empty()) {
+            for (Hit& h : mon.decide_pending(false)) {
+                h.t = m_.now();
+                hits->push_back(std::move(h));
+            }
+        }
+        if (drain) drain();
+        // Due across re-executions: a walk back over short intervals re-executes many, each
+        // shorter than the period.
+        if (poll_ && std::chrono::steady_clock::now() >= poll_due_) {
+            poll_();
+            poll_due_ = std::chrono::steady_clock::now() + kPollPeriod;
         }
     }
     m_.pause_sampler(false);
@@ -68,6 +91,14 @@ void Debugger::replay(const Checkpoint& c, std::uint64_t t, std::vector<Boundary
     mon.target = target;
     rebaseline();
     arm();
+    return whole;
+}
+
+Stop Debugger::interrupted_reverse() {
+    interrupt_.store(false);
+    Stop s = here(StopReason::Interrupted);
+    s.message = "interrupted: the machine is where re-execution had got to";
+    return s;
 }
 
 Stop Debugger::no_history(std::string why) {
@@ -99,37 +130,81 @@ Stop Debugger::reverse_stepi() {
     const Checkpoint* c = history_->before(now);
     if (!c) return no_history("no more reverse-execution history");
     std::vector<Boundary> b;
-    replay(*c, now, &b, nullptr);
     std::uint64_t target = c->t;
-    for (const Boundary& x : b)
-        if (x.t < now) target = x.t;
-    replay(*c, target, nullptr, nullptr);
+    const auto last_before_now = [&] {
+        for (const Boundary& x : b)
+            if (x.t < now) target = x.t;
+        b.clear();
+    };
+    if (!replay(*c, now, &b, nullptr, last_before_now)) return interrupted_reverse();
+    if (!replay(*c, target, nullptr, nullptr)) return interrupted_reverse();
     return here(StopReason::Step);
 }
 
 Stop Debugger::reverse_step() { return reverse_stepi(); }
 
+// Back through the checkpoints one span at a time (the latest first), each re-executed once:
+// a forward pass over a span gives each boundary's call depth relative to the span's start,
+// and keeps for each depth only the latest boundary at it. The depth of the span's end relative
+// to now is known from the spans after it, so the wanted boundary (the latest one shallower
+// than now for finish, not deeper for next) is found without keeping the span's boundaries.
+namespace {
+constexpr std::size_t kMaxDepths = 65'536;  // call depths one interval's table holds (about 3 MB)
+}  // namespace
+
 Stop Debugger::reverse_frame(bool finish) {
     if (!history_on_) return no_history("reverse execution needs the history (set history on)");
+    if (finish && !return_slot()) {
+        Stop s = here(StopReason::Error);
+        s.message = "\"reverse-finish\" not meaningful in the outermost routine (no return address on the stack)";
+        return s;
+    }
+    const bool i8080 = m_.cpu().variant() == Variant::I8080;
     const std::uint64_t now = m_.now();
-    for (const Checkpoint* c = history_->before(now); c; c = history_->before(c->t)) {
+    int end_depth = 0;  // the depth at the span's end, relative to now
+    std::uint64_t end = now;
+    for (const Checkpoint* c = history_->before(now); c; end = c->t, c = history_->before(c->t)) {
+        std::map<int, std::uint64_t> latest;  // depth from the span's start -> the latest boundary at it
+        int depth = 0;
+        std::optional<Boundary> prev;
         std::vector<Boundary> b;
-        replay(*c, now, &b, nullptr);
-        const Registers at_now = m_.cpu().regs();
-        int depth = 0;  // of boundary j, relative to now
-        for (std::size_t j = b.size(); j-- > 0;) {
-            if (b[j].t >= now) continue;
-            const Registers& next = j + 1 < b.size() && b[j + 1].t <= now ? b[j + 1].regs : at_now;
-            depth -= depth_delta(b[j], next, m_.cpu().variant() == Variant::I8080);
-            if (finish ? depth < 0 : depth <= 0) {
-                const std::uint64_t target = b[j].t;
-                replay(*c, target, nullptr, nullptr);
-                return here(finish ? StopReason::Finished : StopReason::Step);
+        bool too_deep = false;
+        const auto fold = [&] {
+            for (const Boundary& x : b) {
+                if (x.t >= end || too_deep) continue;
+                if (prev) depth += depth_delta(*prev, x.regs, i8080);
+                latest[depth] = x.t;
+                prev = x;
+                too_deep = latest.size() > kMaxDepths;
             }
+            b.clear();
+        };
+        if (!replay(*c, end, &b, nullptr, fold)) return interrupted_reverse();
+        if (too_deep) {  // the memory cap: back to where the command began, and why it stopped
+            if (const Checkpoint* from = history_->before(now); from && !replay(*from, now, nullptr, nullptr))
+                return interrupted_reverse();
+            Stop s = here(StopReason::Error);
+            s.message = fmt::format("{}: the call depth takes more than {} values within one snapshot interval "
+                                    "(SP reset inside calls?); stopped at the memory cap of reverse execution",
+                                    finish ? "reverse-finish" : "reverse-next", kMaxDepths);
+            return s;
         }
+        if (prev) depth += depth_delta(*prev, m_.cpu().regs(), i8080);  // to the boundary at the span's end
+        // A boundary at depth d from the span's start is at d - depth + end_depth from now.
+        const int bound = depth - end_depth;
+        std::optional<std::uint64_t> best;
+        for (const auto& [d, t] : latest) {
+            if (finish ? d >= bound : d > bound) break;
+            if (!best || t > *best) best = t;
+        }
+        if (best) {
+            if (!replay(*c, *best, nullptr, nullptr)) return interrupted_reverse();
+            return here(finish ? StopReason::Finished : StopReason::Step);
+        }
+        end_depth -= depth;
     }
     const Checkpoint& oldest = history_->points.front();
-    replay(oldest, oldest.t, nullptr, nullptr);
+    if (!replay(oldest, oldest.t, nullptr, nullptr)) return interrupted_reverse();
     return no_history(finish ? "no more reverse-execution history: the routine was entered before it began"
                              : "no more reverse-execution history");
 }
@@ -143,13 +218,16 @@ Stop Debugger::reverse_continue() {
     std::uint64_t end = now;
     for (const Checkpoint* c = history_->before(now); c; end = c->t, c = history_->before(c->t)) {
         std::vector<Hit> hits;
-        replay(*c, end, nullptr, &hits);
-        const Hit* best = nullptr;
-        for (const Hit& h : hits)
-            if (h.t < now && (!best || h.t >= best->t)) best = &h;
+        std::optional<Hit> best;  // the latest hit before now in this span
+        const auto keep_latest = [&] {
+            for (Hit& h : hits)
+                if (h.t < now && (!best || h.t >= best->t)) best = std::move(h);
+            hits.clear();
+        };
+        if (!replay(*c, end, nullptr, &hits, keep_latest)) return interrupted_reverse();
         if (!best) continue;
-        const Hit hit = *best;
-        replay(*c, hit.t, nullptr, nullptr);
+        const Hit hit = std::move(*best);
+        if (!replay(*c, hit.t, nullptr, nullptr)) return interrupted_reverse();
         Stop s = here(hit.reason);
         s.number = hit.number;
         s.changes = hit.changes;
@@ -158,25 +236,40 @@ Stop Debugger::reverse_continue() {
         return s;
     }
     const Checkpoint& oldest = history_->points.front();
-    replay(oldest, oldest.t, nullptr, nullptr);
+    if (!replay(oldest, oldest.t, nullptr, nullptr)) return interrupted_reverse();
     return no_history("no more reverse-execution history");
 }
 
 std::vector<Executed> Debugger::last_instructions(std::size_t n) {
-    std::vector<Executed> out;
+    std::vector<Executed> out;  // newest first while collecting
     if (!history_on_ || n == 0) return out;
     const std::uint64_t now = m_.now();
-    for (const Checkpoint* c = history_->before(now); c; c = history_->before(c->t)) {
+    std::uint64_t end = now;
+    for (const Checkpoint* c = history_->before(now); c && out.size() < n; end = c->t, c = history_->before(c->t)) {
+        const std::size_t want = n - out.size();
+        std::deque<Boundary> kept;  // the span's last `want` boundaries
         std::vector<Boundary> b;
-        replay(*c, now, &b, nullptr);
-        std::erase_if(b, [now](const Boundary& x) { return x.t >= now; });
-        if (b.size() < n && history_->before(c->t)) continue;  // reach further back
-        const Registers at_now = m_.cpu().regs();
-        const std::size_t first = b.size() > n ? b.size() - n : 0;
-        for (std::size_t j = first; j < b.size(); ++j)
-            out.push_back({b[j].t, b[j].regs.pc, b[j].regs, j + 1 < b.size() ? b[j + 1].regs : at_now});
-        return out;
+        const auto keep_last = [&] {
+            for (Boundary& x : b) {
+                if (x.t >= end) continue;
+                kept.push_back(x);
+                if (kept.size() > want) kept.pop_front();
+            }
+            b.clear();
+        };
+        if (!replay(*c, end, &b, nullptr, keep_last)) break;
+        Registers after = m_.cpu().regs();
+        for (auto j = kept.rbegin(); j != kept.rend(); ++j) {
+            out.push_back({j->t, j->regs.pc, j->regs, after});
+            after = j->regs;
+        }
     }
+    interrupt_.store(false);
+    // Back to now (one span re-executed, or none when the last span ended there).
+    if (m_.now() != now) {
+        if (const Checkpoint* c = history_->before(now, true)) replay(*c, now, nullptr, nullptr);
+    }
+    std::reverse(out.begin(), out.end());
     return out;
 }
 

@@ -2,7 +2,10 @@
 
 #include <sys/resource.h>
 
+#include <array>
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -39,6 +42,16 @@ namespace alp85::gui {
 namespace {
 
 constexpr auto kMachineBudget = std::chrono::milliseconds(10);  // of a 16.7 ms frame
+
+// SIGTERM (and SIGINT, Ctrl-C in the terminal that started the window) end the window within a
+// second whatever it is doing: the handler interrupts the debugger's run or re-execution under
+// way, and the frame loop and the script see the flag.
+volatile std::sig_atomic_t g_terminate = 0;  // the signal that asked, or 0
+std::atomic<debug::Debugger*> g_debugger{nullptr};
+extern "C" void on_terminate(int signal) {
+    g_terminate = signal;
+    if (debug::Debugger* d = g_debugger.load()) d->interrupt();
+}
 constexpr std::uint64_t kSamplePeriod = board::tstates_from_ms(1);
 constexpr int kSettleFrames = 30;
 constexpr std::uint64_t kClickGap = board::tstates_from_ms(100);
@@ -83,6 +96,7 @@ public:
         pacer_.set_speed(kSpeeds[static_cast<std::size_t>(o.speed)].factor, machine().now(), HostClock::now());
         clicks_ = o.clicks;
         key_map_ = o.key_map;
+        session_.debugger().set_poll([this] { poll_during_reverse(); });
         if (o.debug) {
             shell_.debugger().set_history(true);
             ui_.running = false;  // the debugger starts paused: Continue (or the prompt) runs it
@@ -91,6 +105,7 @@ public:
 
     int start();
     int loop();
+    debug::Debugger& debugger() { return session_.debugger(); }
     bool canvas_ok() { return canvas_.init(kWindowWidth, kWindowHeight); }
 
 private:
@@ -102,6 +117,12 @@ private:
     void pause_run();
     void report(const debug::Stop& s);
     void debug_request(DebugPanes::Request r);
+    // The reverse buttons: the request waits a frame, drawn with Pause showing, then runs whole
+    // (it holds the frame loop); meanwhile poll_during_reverse() reads the window's events: a
+    // click on Pause (or the Controls' Run/Pause) or closing the window ends it.
+    void run_reverse(DebugPanes::Request r);
+    void poll_during_reverse();
+    std::optional<DebugPanes::Request> reverse_pending_;
     void after_commands();
     void handle(const SDL_Event& e);
     void step_script(HostClock::time_point until);
@@ -376,6 +397,7 @@ void App::handle(const SDL_Event& event) {
 
 void App::step_script(HostClock::time_point until) {
     do {
+        if (g_terminate) return;
         if (script_pos_ >= script_.size()) {
             const auto r = session_.finish();
             if (r.status != script::Session::Status::Ok) {
@@ -481,10 +503,26 @@ void App::debug_request(DebugPanes::Request r) {
         case R::Step: forward(d.begin_step()); return;
         case R::Next: forward(d.begin_next()); return;
         case R::Finish: forward(d.begin_finish()); return;
-        case R::ReverseContinue: report(d.reverse_continue()); return;
+        case R::ReverseContinue:
+        case R::ReverseStep:
+        case R::ReverseNext:
+        case R::ReverseFinish:
+            reverse_pending_ = r;
+            ui_.running = true;  // the next frame shows Pause
+            return;
+    }
+}
+
+void App::run_reverse(DebugPanes::Request r) {
+    using R = DebugPanes::Request;
+    debug::Debugger& d = session_.debugger();
+    d.interrupt_clear();
+    if (o_.debug) std::cout << "[gui] reverse run under way\n" << std::flush;
+    switch (r) {
         case R::ReverseStep: report(d.reverse_step()); return;
         case R::ReverseNext: report(d.reverse_next()); return;
         case R::ReverseFinish: report(d.reverse_finish()); return;
+        default: report(d.reverse_continue()); return;
     }
 }
 
@@ -503,6 +541,33 @@ void App::plot_drawn(const std::string& file) {
     } catch (const plot::PlotError& x) {
         ui_.add_log(x.what());
     }
+}
+
+void App::poll_during_reverse() {
+    SDL_PumpEvents();
+    SDL_Event e;
+    if (SDL_PeepEvents(&e, 1, SDL_PEEKEVENT, SDL_QUIT, SDL_QUIT) > 0) session_.debugger().interrupt();
+    std::array<SDL_Event, 32> events;
+    const int n = SDL_PeepEvents(events.data(), static_cast<int>(events.size()), SDL_PEEKEVENT, SDL_WINDOWEVENT,
+                                 SDL_MOUSEBUTTONUP);
+    bool pause = false;
+    for (int i = 0; i < n; ++i) {
+        const SDL_Event& x = events[static_cast<std::size_t>(i)];
+        if (x.type == SDL_WINDOWEVENT && x.window.event == SDL_WINDOWEVENT_CLOSE) session_.debugger().interrupt();
+        if (x.type != SDL_MOUSEBUTTONDOWN || x.button.button != SDL_BUTTON_LEFT) continue;
+        const Vec2 p = window_to_logical(static_cast<float>(x.button.x), static_cast<float>(x.button.y));
+        for (const char* name : {"debug.continue", "controls.run"}) {
+            const auto it = drawn_buttons().find(name);
+            if (it != drawn_buttons().end() && p.x >= it->second.x0 && p.x < it->second.x1 && p.y >= it->second.y0 &&
+                p.y < it->second.y1)
+                pause = true;
+        }
+    }
+    if (!pause) return;
+    pause_asked_ = HostClock::now();
+    session_.debugger().interrupt();
+    // The click was Pause's: it must not press Continue once the window reads events again.
+    SDL_FlushEvents(SDL_MOUSEBUTTONDOWN, SDL_MOUSEBUTTONUP);
 }
 
 void App::act(const Action& a) {
@@ -612,7 +677,8 @@ void App::drive_debug_hooks() {
         // Hooks beside command lines: "click:NAME" clicks a named button (controls.run,
         // debug.continue, debug.step, ...), "frames:N" lets N frames pass, "status" prints whether
         // the board runs and its time, "toolpath" how many points the drawn path has, "clickrow:N"
-        // clicks source row N as shown, "source" prints the file and first line the pane shows.
+        // clicks source row N as shown, "source" prints the file and first line the pane shows,
+        // "where:NAME" a button's centre in screen coordinates.
         if (line.starts_with("click:")) {
             const auto it = drawn_buttons().find(line.substr(6));
             if (it == drawn_buttons().end()) {
@@ -640,6 +706,20 @@ void App::drive_debug_hooks() {
         if (line == "source") {
             std::cout << fmt::format("[gui] source: {} from line {}\n", std::filesystem::path(panes_.file).filename().string(),
                                      panes_.first)
+                      << std::flush;
+            return;
+        }
+        if (line.starts_with("where:")) {  // a button's centre on the screen, for a test's real click
+            const auto it = drawn_buttons().find(line.substr(6));
+            if (it == drawn_buttons().end()) {
+                std::cerr << "alp85 gui: --debug-command " << line << ": no such button\n";
+                status_ = 2;
+                return;
+            }
+            const Vec2 c = logical_to_window((it->second.x0 + it->second.x1) / 2, (it->second.y0 + it->second.y1) / 2);
+            int wx = 0, wy = 0;
+            SDL_GetWindowPosition(window_, &wx, &wy);
+            std::cout << fmt::format("[gui] {} at {},{}\n", line.substr(6), wx + static_cast<int>(c.x), wy + static_cast<int>(c.y))
                       << std::flush;
             return;
         }
@@ -792,12 +872,13 @@ int App::loop() {
     FrameClock& clock = clock_;
     auto fps_t = start;
     long fps_frames = 0;
-    while (!quit_) {
+    while (!quit_ && !g_terminate) {
         const auto frame_start = HostClock::now();
         SDL_Event e;
         while (SDL_PollEvent(&e)) handle(e);
         const auto budget = frame_start + kMachineBudget;
-        if (script_active_) step_script(budget);
+        if (reverse_pending_) run_reverse(*std::exchange(reverse_pending_, std::nullopt));
+        else if (script_active_) step_script(budget);
         else if (ui_.running) run_machine(budget);
         const auto machine_end = HostClock::now();
         machine_s_ += std::chrono::duration<double>(machine_end - frame_start).count();
@@ -911,16 +992,26 @@ int run(const GuiOptions& o) {
     ImGui::StyleColorsDark();
     ImGui_ImplSDL2_InitForOpenGL(window, gl);
     ImGui_ImplOpenGL3_Init("#version 130");
+    struct sigaction ask{}, old_term{}, old_int{};
+    ask.sa_handler = on_terminate;
+    sigemptyset(&ask.sa_mask);
+    sigaction(SIGTERM, &ask, &old_term);
+    sigaction(SIGINT, &ask, &old_int);
     int status = 0;
     {
         App app(o, window);
+        g_debugger.store(&app.debugger());
         if (!app.canvas_ok()) {
             std::cerr << "alp85 gui: OpenGL has no framebuffer objects\n";
             status = 2;
         }
         if (status == 0) status = app.start();
         if (status == 0) status = app.loop();
+        g_debugger.store(nullptr);
     }
+    sigaction(SIGTERM, &old_term, nullptr);
+    sigaction(SIGINT, &old_int, nullptr);
+    if (g_terminate) status = 128 + g_terminate;  // as a shell reports a process a signal ended
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplSDL2_Shutdown();
     ImGui::DestroyContext();

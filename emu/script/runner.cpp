@@ -21,6 +21,7 @@ SessionOptions session_options(const std::filesystem::path& file, const RunnerOp
     s.monitor_rom = o.monitor_rom;
     s.out = o.out;
     s.verbose = o.verbose;
+    s.max_time = o.max_time;
     return s;
 }
 

@@ -31,6 +31,7 @@ struct RunnerOptions {
     periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;  // --motor, until `motor`
     // The command line's outputs (--trace, --junit): no save, record or plot may write one.
     std::vector<NamedPath> outputs;
+    std::uint64_t max_time = SessionOptions::kDefaultMaxTime;  // --max-time: each script's machine time at most
 };
 
 // Parses and checks a file. Returns false and fills `errors` when the script cannot run.

@@ -35,6 +35,11 @@ Session::Session(SessionOptions options)
     : options_(std::move(options)),
       machine_(std::make_unique<Machine>(Machine::Options{options_.cpu})),
       debugger_(*machine_) {
+    if (options_.max_time != ~std::uint64_t{0})
+        debugger_.set_time_limit(options_.max_time,
+                                 fmt::format("the machine-time limit was reached: {} of machine time (--max-time; "
+                                             "a longer run needs a larger one)",
+                                             format_limit(options_.max_time)));
     // A table reaching an end stop is reported as it happens (the screw stalls the motor there).
     machine_->tool().on_end_stop([this](periph::MachineTool::Axis axis, bool high, std::uint64_t t) {
         if (debugger_.replaying()) return;  // said the first time
@@ -59,6 +64,14 @@ Session::Session(SessionOptions options)
             }
         });
     }
+}
+
+// A --max-time as given: "1 h", "90 s", "250 ms".
+std::string Session::format_limit(std::uint64_t t) {
+    const double s = static_cast<double>(t) / board::kCpuHz;
+    if (t % (3600ull * board::kCpuHz) == 0) return fmt::format("{} h", t / (3600ull * board::kCpuHz));
+    if (s >= 1) return fmt::format("{:g} s", s);
+    return fmt::format("{:g} ms", s * 1000);
 }
 
 std::string Session::format_time(std::uint64_t t) {
@@ -694,6 +707,7 @@ void Session::key(Button button, periph::Key k, bool down) {
 
 Session::Outcome Session::execute(const Command& c) {
     Outcome o = run_command(c);
+    if (debugger_.take_time_limit_hit()) o = fail(c, debugger_.time_limit_message());
     // The machine changed outside its run: reverse execution's history ends here.
     switch (c.op) {
         case Op::Load: case Op::Monitor: case Op::Firmware: case Op::Reset: case Op::Motor: case Op::Feedback: case Op::NewWorkpiece:

@@ -31,6 +31,11 @@ struct SessionOptions {
     std::function<firmware::Firmware()> monitor_rom;
     std::ostream* out = nullptr;  // events as text (print, stops, -v echo); nullptr: none
     bool verbose = false;
+    // --max-time: no run takes the machine's clock past this many T-states; a command whose run
+    // reaches it fails. ~0: no limit (the window, DAP); `alp85 script` and `alp85 debug` default
+    // to kDefaultMaxTime, 1 h of machine time (a couple of minutes of host time).
+    std::uint64_t max_time = ~std::uint64_t{0};
+    static constexpr std::uint64_t kDefaultMaxTime = 3600ull * board::kCpuHz;
 };
 
 class Session {
@@ -122,6 +127,7 @@ public:
         pace_slice_ = slice;
     }
 
+    static std::string format_limit(std::uint64_t t);  // a --max-time: "1 h", "90 s", "250 ms"
     static std::string format_time(std::uint64_t tstates);
 
 private:

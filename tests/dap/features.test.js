@@ -240,6 +240,40 @@ test('the 8155 scope and info 8155 show the same port C mode: ALT3 for bits 01',
   }
 });
 
+// A pause during a long reverseContinue: the adapter reads messages between the slices of the
+// re-execution, so the pause ends it within 100 ms, where it has got to (not at the start of the
+// history it would have reached). 600 s of machine time at the monitor's prompt are the history;
+// SOBE is never reached while the firmware waits for keys, so reverseContinue would re-execute
+// all of it.
+test('pause ends a long reverseContinue at once', async () => {
+  const dc = await started({ firmware: 'thesis-fixed', realTime: false, stopOnEntry: true });
+  try {
+    await stopAfter(dc, dc.configurationDoneRequest());
+    let r = await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'SOBE' }] });
+    assert.equal(r.body.breakpoints[0].verified, true, r.body.breakpoints[0].message);
+    const ran = dc.waitForEvent('stopped');  // the console's command moved the machine
+    r = await dc.evaluateRequest({ expression: 'run 600s', context: 'repl' });
+    assert.ok(r.success);
+    await ran;
+    const stopped = dc.waitForEvent('stopped');
+    const going = dc.reverseContinueRequest({ threadId: 1 });
+    await new Promise((res) => setTimeout(res, 300));
+    const asked = Date.now();
+    await dc.pauseRequest({ threadId: 1 });
+    const stop = (await stopped).body;
+    const ms = Date.now() - asked;
+    await going;
+    assert.equal(stop.reason, 'pause');
+    assert.ok(ms < 100, `the pause took ${ms} ms`);
+    // Somewhere inside the history: neither at its start (0) nor at 600 s.
+    const t = Number((await dc.evaluateRequest({ expression: '$T', context: 'repl' })).body.result.match(/\d+/g).pop());
+    assert.ok(t > 0 && t < 600 * 3072000, `T = ${t}`);
+    await finished(dc);
+  } finally {
+    dc._adapterProcess.kill();
+  }
+});
+
 test('over TCP: paced to the board clock, pause, restart, terminate', async () => {
   const server = cp.spawn(ALP85, ['dap', '--port', '0'], { stdio: ['ignore', 'ignore', 'pipe'] });
   const exited = new Promise((resolve) => server.on('exit', (code, signal) => resolve({ code, signal })));

@@ -4,6 +4,11 @@
 // without changing any device, and errors with their columns.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+#include <iostream>
+#include <thread>
+
 #include "emu/program/firmware.h"
 #include "emu/script/debug_shell.h"
 
@@ -133,6 +138,54 @@ TEST_F(Thesis, ReverseFinishAndReverseNextGoBackOverWholeCalls) {
     EXPECT_EQ(m().cpu().regs().pc, symbol("DELAY") + 8);
     run("reverse-next");
     EXPECT_EQ(snap(), at_call);
+}
+
+// LOOP+6 (JZ SOBE) is the main loop's own code: the firmware set SP (LXI SP) and calls from
+// here, so no return address is on the stack. reverse-finish there has no caller to go back to,
+// as finish has none to run to: it says so at once and changes nothing, however long the history
+// behind it (20 s of machine time waiting at the prompt: 2000 snapshots at 10 ms).
+TEST_F(Thesis, ReverseFinishInTheOutermostRoutineAnswersAtOnce) {
+    run("run 20s");
+    run("break LOOP+6");
+    run("press EXEC");
+    ASSERT_EQ(m().cpu().regs().pc, symbol("LOOP") + 6);
+    const auto before = snap();
+    const auto started = std::chrono::steady_clock::now();
+    const std::string out = shell.execute("reverse-finish");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    EXPECT_LT(seconds, 1.0);
+    EXPECT_NE(out.find("not meaningful in the outermost routine"), std::string::npos) << out;
+    EXPECT_EQ(snap(), before);
+    const std::string fin = shell.execute("finish");
+    EXPECT_NE(fin.find("not meaningful in the outermost routine"), std::string::npos) << fin;
+    EXPECT_EQ(snap(), before);
+}
+
+// A reverse command that goes far back re-executes the history once, a span at a time: an
+// interrupt (Ctrl-C, the window's Pause, DAP's pause) ends it between two spans of at most
+// 65 536 T-states (21 ms of machine time, well under a millisecond of host time).
+TEST_F(Thesis, AnInterruptEndsALongReverseRunPromptly) {
+    run("run 120s");
+    run("break SOBE");  // never reached while the firmware waits for EXEC: back to the start
+    std::atomic<bool> started{false};
+    std::chrono::steady_clock::time_point asked;
+    std::thread ctrl_c([&] {
+        while (!started.load()) std::this_thread::yield();
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        asked = std::chrono::steady_clock::now();
+        shell.debugger().interrupt();
+    });
+    started.store(true);
+    const debug::Stop s = shell.debugger().reverse_continue();
+    const auto ended = std::chrono::steady_clock::now();
+    ctrl_c.join();
+    ASSERT_EQ(s.reason, debug::StopReason::Interrupted) << s.message;
+    const double ms = std::chrono::duration<double, std::milli>(ended - asked).count();
+    EXPECT_LT(ms, 100.0);
+    std::cout << "reverse-continue ended " << ms << " ms after the interrupt\n";
+    // The machine is at a position of this timeline: forward from it runs as before.
+    EXPECT_GE(m().now(), shell.debugger().history_start());
+    EXPECT_EQ(shell.execute("reverse-stepi").find("error"), std::string::npos);
 }
 
 TEST_F(Thesis, HistoryListsTheLastInstructionsWithTheRegistersTheyChanged) {

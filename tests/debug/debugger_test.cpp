@@ -3,6 +3,9 @@
 // tests/board/programs/hello.asm (ORG 0040H; instruction lengths from the 8085 data sheet).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "emu/debug/debugger.h"
 #include "emu/program/image_loader.h"
 
@@ -108,6 +111,40 @@ TEST(Debugger, TheInputLogReplaysARunExactly) {
     EXPECT_EQ(b.m.now(), a.m.now());
     EXPECT_EQ(b.m.snapshot_bytes(), a.m.snapshot_bytes());
     EXPECT_EQ(b.d.input_log().size(), 4u);
+}
+
+}  // namespace
+}  // namespace alp85::test
+
+namespace alp85::test {
+namespace {
+
+// The memory cap of reverse execution: a program that calls and then resets SP inside the call,
+// over and over, deepens the counted call depth by one each pass (CALL pushes, LXI SP is no
+// return) and never comes back. One pass is CALL 18 + LXI 10 + JMP 10 = 38 T-states (8085 data
+// sheet), so 3.9 M T-states inside one snapshot interval are 102 631 passes: more call depths
+// than reverse-next keeps for one interval (65 536). It stops, says so, and leaves the machine
+// where it was.
+TEST(Debugger, ReverseNextStopsAtTheDepthCapAndSaysSo) {
+    const std::filesystem::path src = std::filesystem::temp_directory_path() / "alp85_depth_cap.asm";
+    {
+        std::ofstream f(src);
+        f << "        ORG     0\n        LXI     SP,20F0H\nLOOP:   CALL    SUB\nSUB:    LXI     SP,20F0H\n"
+             "        JMP     LOOP\n        END\n";
+    }
+    Machine m;
+    Debugger d{m};
+    const LoadedImage img = load_image(m, src);
+    std::filesystem::remove(src);
+    d.program().add_assembly(*img.assembly);
+    m.reset();
+    d.set_history(true, 4'000'000);  // one snapshot, at 0, for the whole run
+    d.run_for(3'900'000);
+    const std::vector<std::uint8_t> before = m.snapshot_bytes();
+    const debug::Stop s = d.reverse_next();
+    EXPECT_EQ(s.reason, StopReason::Error);
+    EXPECT_NE(s.message.find("memory cap"), std::string::npos) << s.message;
+    EXPECT_EQ(m.snapshot_bytes(), before);
 }
 
 }  // namespace

@@ -4,9 +4,10 @@ Every expectation is the documented behaviour (README's exit statuses, each --he
 tools' own earlier output.
 
   python3 cli_robust.py BIN_DIR WORK_DIR CASE      (CASE: same_path, signals, bad_input, messages,
-                                                    disasm, debug_interrupt, debug_commands, ...)
+                                                    disasm, debug_interrupt, debug_commands, max_time, ...)
 """
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -356,7 +357,34 @@ def determinism():
     check(outs[0] == outs[1] and len(outs[0]) > 100000, f"two traces differ ({len(outs[0])} and {len(outs[1])} bytes)")
 
 
-{"determinism": determinism, "debug_commands": debug_commands, "debug_expressions": debug_expressions, "same_path": same_path, "signals": signals, "bad_input": bad_input, "messages": messages, "disasm": disasm,
+def max_time():
+    """--max-time bounds the machine time of `script` and `debug` (default 1 h): a run past it stops
+    there, the command fails with a message naming the option, the status is 1."""
+    d = fresh("max_time")
+    write(d, "long.alp", "monitor\nfirmware thesis-fixed\nreset\nrun 7200s\nrun 1ms\n")
+    started = time.monotonic()
+    rc, out, err = run([ALP85, "script", "long.alp", "--max-time", "1s"], d, timeout=60)
+    took = time.monotonic() - started
+    # 1 s of machine time is 3 072 000 T-states (the 6.144 MHz crystal halved): the script stops there.
+    check(rc == 1 and "long.alp:4:" in out and "machine-time limit" in out and "--max-time" in out
+          and "(3072000 T-states)" in out, f"script run 7200s --max-time 1s: exit {rc}\n{out}{err}")
+    check(took < 10, f"script --max-time 1s took {took:.1f} s")
+    # alp85 debug: the run stops with the message, the session goes on, a batch ends with 1.
+    rc, out, err = run([ALP85, "debug", "thesis-fixed", "--batch", "--max-time", "2s"], d,
+                       stdin="run 7200s\nprint $T\nprint 6*7\n", timeout=60)
+    # $T: 2 s is 6 144 000 T-states; the run stops at the first instruction boundary at or after it
+    # (an instruction takes at most 18 T-states).
+    check(rc == 1 and "machine-time limit" in out and "(42)" in out and re.search(r"\$1 = 61440[01][0-9]\b", out),
+          f"debug run 7200s --max-time 2s: exit {rc}\n{out}{err}")
+    for bad in ("5parsecs", "0s", "-1s", "h"):
+        rc, _, err = run([ALP85, "script", "long.alp", "--max-time", bad], d)
+        check(rc == 2 and "--max-time" in err, f"script --max-time {bad}: exit {rc}: {err}")
+    for cmd in ("script", "debug"):
+        rc, out, _ = run([ALP85, cmd, "--help"], d)
+        check("--max-time" in out and "1h" in out, f"{cmd} --help does not give --max-time's default:\n{out}")
+
+
+{"determinism": determinism, "debug_commands": debug_commands, "max_time": max_time, "debug_expressions": debug_expressions, "same_path": same_path, "signals": signals, "bad_input": bad_input, "messages": messages, "disasm": disasm,
  "debug_interrupt": debug_interrupt}[CASE]()
 if failures:
     print(f"{len(failures)} failure(s)")
