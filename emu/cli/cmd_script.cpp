@@ -1,4 +1,4 @@
-// alp85 script FILE... [--junit OUT.xml] [--trace OUT.csv] [-v]: headless firmware tests
+// alp85 script FILE... [-j N] [--junit OUT.xml] [--trace OUT.csv] [-v]: headless firmware tests
 // (docs/scripting.md). Exit status: 0 all passed, 1 an expectation failed, 2 a script error.
 #include <cstdio>
 #include <filesystem>
@@ -40,6 +40,7 @@ void add_script_command(CLI::App& app, int& status) {
         bool verbose = false;
         std::string out_dir;
         std::string motor = "physical";
+        unsigned jobs = 1;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("script", "Run headless test scripts against the ALP 85 (docs/scripting.md)");
@@ -48,6 +49,10 @@ void add_script_command(CLI::App& app, int& status) {
     cmd->add_option("--trace", args->trace, "Write every executed instruction as CSV");
     cmd->add_flag("-v,--verbose", args->verbose, "Echo each command with the simulated time");
     add_motor_option(cmd, args->motor);
+    cmd->add_option("-j,--jobs", args->jobs,
+                    "Run up to N scripts at once (default 1); the output stays grouped per script, in file order")
+        ->check(CLI::Range(1u, 1024u))
+        ->option_text("N");
     cmd->add_option("--out-dir", args->out_dir,
                     "Folder for the files scripts write and read back (save, restore, record, plot); "
                     "created if missing. Default: each script's own folder");
@@ -55,6 +60,7 @@ void add_script_command(CLI::App& app, int& status) {
         "Examples:\n"
         "  alp85 script scripts/monitor/*.alp\n"
         "  alp85 script test.alp --junit report.xml -v\n"
+        "  alp85 script -j 2 scripts/*/*.alp --junit report.xml\n"
         "Exit status: 0 every script passed, 1 an expectation failed or an output (--trace, --junit)\n"
         "could not be written, 2 a usage or script error (a script that is missing or a directory, an\n"
         "output that is a script or a file it loads, --trace and --junit on one file): then nothing runs.");
@@ -117,11 +123,10 @@ void add_script_command(CLI::App& app, int& status) {
             }
             o.trace = &trace->stream();
         }
-        std::vector<script::ScriptResult> results;
         int failed = 0;
-        for (std::size_t i = 0; i < args->files.size(); ++i) {
-            results.push_back(script::execute(args->files[i], programs[i], o));
-            const auto& r = results.back();
+        const std::vector<std::filesystem::path> files(args->files.begin(), args->files.end());
+        const auto results = script::execute_all(files, programs, o, args->jobs, [&](const script::ScriptResult& r, const std::string& output) {
+            std::cout << output;
             if (r.passed) {
                 std::cout << fmt::format("PASS {} ({} commands, {} simulated, {:.3f} s)\n", r.file, r.commands,
                                          script::Session::format_time(r.tstates), r.seconds);
@@ -129,7 +134,7 @@ void add_script_command(CLI::App& app, int& status) {
                 ++failed;
                 std::cout << fmt::format("FAIL {}\n{}\n", r.file, r.failure);
             }
-        }
+        });
         std::cout << fmt::format("{} passed, {} failed\n", results.size() - failed, failed);
         if (trace) {
             try {

@@ -1,9 +1,18 @@
 #include "emu/script/runner.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <exception>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <mutex>
+#include <numeric>
+#include <sstream>
+#include <system_error>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -22,7 +31,52 @@ SessionOptions session_options(const std::filesystem::path& file, const RunnerOp
     return s;
 }
 
+// The files a script writes or reads back (save, restore, record, plot), as its session resolves
+// them: relative to --out-dir, else to the script's folder.
+std::vector<std::string> shared_files(const std::filesystem::path& file, const std::vector<Command>& commands,
+                                      const RunnerOptions& o) {
+    std::vector<std::string> paths;
+    const std::filesystem::path dir = o.out_dir.empty() ? session_options(file, o).base_dir : o.out_dir;
+    for (const Command& c : commands) {
+        if (c.op != Op::Save && c.op != Op::Restore && c.op != Op::Record && c.op != Op::Plot) continue;
+        std::filesystem::path p(c.text);
+        if (!p.is_absolute()) p = dir / p;
+        std::error_code ec;
+        const std::filesystem::path key = std::filesystem::weakly_canonical(p, ec);
+        paths.push_back((ec ? p.lexically_normal() : key).string());
+    }
+    return paths;
+}
+
 }  // namespace
+
+std::vector<std::vector<std::size_t>> script_groups(const std::vector<std::filesystem::path>& files,
+                                                    const std::vector<std::vector<Command>>& programs,
+                                                    const RunnerOptions& o) {
+    std::vector<std::size_t> leader(files.size());
+    std::iota(leader.begin(), leader.end(), std::size_t{0});
+    auto find = [&](std::size_t i) {
+        while (leader[i] != i) i = leader[i] = leader[leader[i]];
+        return i;
+    };
+    std::map<std::string, std::size_t> first_user;
+    for (std::size_t i = 0; i < files.size(); ++i)
+        for (const std::string& f : shared_files(files[i], programs[i], o)) {
+            const auto [it, fresh] = first_user.emplace(f, i);
+            if (!fresh) {
+                const std::size_t a = find(it->second), b = find(i);
+                leader[std::max(a, b)] = std::min(a, b);  // the earlier script leads
+            }
+        }
+    std::vector<std::vector<std::size_t>> groups;
+    std::map<std::size_t, std::size_t> group_of;  // leader -> index in groups
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        const auto [it, fresh] = group_of.emplace(find(i), groups.size());
+        if (fresh) groups.emplace_back();
+        groups[it->second].push_back(i);
+    }
+    return groups;
+}
 
 bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, std::vector<ParseError>& errors,
              const RunnerOptions& options) {
@@ -78,6 +132,80 @@ ScriptResult execute(const std::filesystem::path& file, const std::vector<Comman
     r.tstates = session.machine().now();
     session.set_trace(nullptr);
     return r;
+}
+
+std::vector<ScriptResult> execute_all(const std::vector<std::filesystem::path>& files,
+                                      const std::vector<std::vector<Command>>& programs, const RunnerOptions& options,
+                                      unsigned jobs,
+                                      const std::function<void(const ScriptResult&, const std::string& output)>& report) {
+    std::vector<ScriptResult> results(files.size());
+    if (jobs <= 1 || files.size() <= 1) {
+        for (std::size_t i = 0; i < files.size(); ++i) {
+            results[i] = execute(files[i], programs[i], options);
+            report(results[i], {});
+        }
+        return results;
+    }
+    struct Held {
+        std::ostringstream out, trace;
+        bool done = false;
+        std::exception_ptr error;  // what ended the run instead of a result (out of memory, say)
+    };
+    std::vector<Held> held(files.size());
+    const std::vector<std::vector<std::size_t>> groups = script_groups(files, programs, options);
+    std::mutex m;
+    std::condition_variable finished;
+    std::atomic<std::size_t> next_group{0};
+    auto worker = [&] {
+        for (std::size_t g; (g = next_group++) < groups.size();) {
+            for (const std::size_t i : groups[g]) {
+                RunnerOptions o = options;
+                o.out = &held[i].out;
+                o.trace = options.trace ? &held[i].trace : nullptr;
+                ScriptResult r;
+                std::exception_ptr error;
+                try {
+                    r = execute(files[i], programs[i], o);
+                } catch (...) {
+                    error = std::current_exception();  // rethrown when its turn to be reported comes
+                }
+                const std::lock_guard lock(m);
+                results[i] = std::move(r);
+                held[i].error = error;
+                held[i].done = true;
+                finished.notify_all();
+            }
+        }
+    };
+    std::vector<std::thread> threads;
+    const std::size_t n = std::min<std::size_t>(jobs, groups.size());
+    for (std::size_t t = 0; t < n; ++t) {
+        try {
+            threads.emplace_back(worker);
+        } catch (const std::system_error&) {  // no more threads to be had: run with those there are
+            break;
+        }
+    }
+    if (threads.empty()) worker();
+    auto join = [&] {
+        for (std::thread& t : threads) t.join();
+    };
+    // Report in file order, each script as soon as it and every one before it are done.
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        std::unique_lock lock(m);
+        finished.wait(lock, [&] { return held[i].done; });
+        lock.unlock();
+        if (held[i].error) {
+            join();
+            std::rethrow_exception(held[i].error);
+        }
+        if (options.trace) *options.trace << held[i].trace.view();
+        held[i].trace = {};
+        report(results[i], held[i].out.str());
+        held[i].out = {};
+    }
+    join();
+    return results;
 }
 
 std::string junit_xml(const std::vector<ScriptResult>& results) {

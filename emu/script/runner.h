@@ -39,6 +39,24 @@ bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, 
 ScriptResult execute(const std::filesystem::path& file, const std::vector<Command>& commands,
                      const RunnerOptions& options);
 
+// Executes prepared scripts (`files[i]` with `programs[i]`), up to `jobs` at once, each on a session
+// of its own. Scripts that name one file (save, restore, record, plot) run one after another, in
+// file order, so that none reads or overwrites another's file half-written. With more than one
+// job each script's output (print, -v echo, the debugger's events) and its trace are held until
+// every script before it is reported; `report` gets the results in file order, each with its
+// held output (empty with one job: the output went straight to options.out), and the trace is
+// written in file order too. Returns the results in file order.
+std::vector<ScriptResult> execute_all(const std::vector<std::filesystem::path>& files,
+                                      const std::vector<std::vector<Command>>& programs, const RunnerOptions& options,
+                                      unsigned jobs,
+                                      const std::function<void(const ScriptResult&, const std::string& output)>& report);
+
+// How execute_all() groups scripts: groups that share no file (save, restore, record, plot, as the
+// sessions resolve them), each in file order, ordered by their first script.
+std::vector<std::vector<std::size_t>> script_groups(const std::vector<std::filesystem::path>& files,
+                                                    const std::vector<std::vector<Command>>& programs,
+                                                    const RunnerOptions& options);
+
 // JUnit XML for CI systems: one testsuite, one testcase per script.
 std::string junit_xml(const std::vector<ScriptResult>& results);
 
