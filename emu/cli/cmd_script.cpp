@@ -55,7 +55,8 @@ void add_script_command(CLI::App& app, int& status) {
         ->option_text("N");
     cmd->add_option("--out-dir", args->out_dir,
                     "Folder for the files scripts write and read back (save, restore, record, plot); "
-                    "created if missing. Default: each script's own folder");
+                    "created if missing. Default: each script's own folder, or the current folder when that one cannot "
+                    "be written (a note says so)");
     cmd->footer(
         "Examples:\n"
         "  alp85 script scripts/monitor/*.alp\n"

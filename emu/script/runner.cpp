@@ -14,6 +14,9 @@
 #include <system_error>
 #include <thread>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include "emu/util/text.h"
@@ -31,12 +34,47 @@ SessionOptions session_options(const std::filesystem::path& file, const RunnerOp
     return s;
 }
 
+// Whether files can be made in `dir`: access() first, then a file made and removed, since root
+// passes access() in a folder whose file system refuses new files (/proc, a read-only mount).
+bool can_write_in(const std::filesystem::path& dir) {
+    if (::access(dir.c_str(), W_OK) != 0) return false;
+    static std::atomic<unsigned> probes{0};
+    const std::filesystem::path probe = dir / fmt::format(".alp85-write-test-{}-{}", ::getpid(), probes++);
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0) return false;
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return true;
+}
+
+// Where a script's save, restore, record and plot files go: --out-dir; else the script's folder,
+// unless the script writes files and cannot write there (an installed example under /usr/share,
+// run by a user): then the current folder, and `note` says so.
+std::filesystem::path output_dir(const std::filesystem::path& file, const std::vector<Command>& commands,
+                                 const RunnerOptions& o, std::string* note = nullptr) {
+    if (!o.out_dir.empty()) return o.out_dir;
+    const bool writes = std::any_of(commands.begin(), commands.end(), [](const Command& c) {
+        return c.op == Op::Save || c.op == Op::Record || c.op == Op::Plot;
+    });
+    const std::filesystem::path dir = session_options(file, o).base_dir;
+    if (!writes || can_write_in(dir)) return {};
+    std::error_code ec;
+    const std::filesystem::path here = std::filesystem::current_path(ec);
+    if (ec || std::filesystem::equivalent(here, dir, ec)) return {};  // nowhere better: the write will say why
+    if (note)
+        *note = fmt::format("{}: note: its folder {} is not writable; the files it writes (save, record, plot) go "
+                            "to the current folder, {} (--out-dir DIR chooses another)\n",
+                            file.string(), dir.string(), here.string());
+    return here;
+}
+
 // The files a script writes or reads back (save, restore, record, plot), as its session resolves
 // them: relative to --out-dir, else to the script's folder.
 std::vector<std::string> shared_files(const std::filesystem::path& file, const std::vector<Command>& commands,
                                       const RunnerOptions& o) {
     std::vector<std::string> paths;
-    const std::filesystem::path dir = o.out_dir.empty() ? session_options(file, o).base_dir : o.out_dir;
+    std::filesystem::path dir = output_dir(file, commands, o);
+    if (dir.empty()) dir = session_options(file, o).base_dir;
     for (const Command& c : commands) {
         if (c.op != Op::Save && c.op != Op::Restore && c.op != Op::Record && c.op != Op::Plot) continue;
         std::filesystem::path p(c.text);
@@ -96,7 +134,9 @@ bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, 
     const std::size_t before = errors.size();
     commands = parse_script(text, file.string(), errors);
     Session checker(session_options(file, options));
-    checker.set_out_dir(options.out_dir);
+    std::string note;
+    checker.set_out_dir(output_dir(file, commands, options, &note));
+    if (options.err) *options.err << note;
     checker.check(commands, errors);  // the lines that parsed: files, symbols, ranges
     if (options.err)
         for (const std::string& w : checker.warnings()) *options.err << w;
@@ -110,7 +150,7 @@ ScriptResult execute(const std::filesystem::path& file, const std::vector<Comman
     ScriptResult r;
     r.file = file.string();
     Session session(session_options(file, options));
-    session.set_out_dir(options.out_dir);
+    session.set_out_dir(output_dir(file, commands, options));
     session.machine().tool().set_model(options.motor);
     if (options.trace) session.set_trace(options.trace);
     const auto start = std::chrono::steady_clock::now();

@@ -27,7 +27,9 @@ struct RunnerOptions {
     std::ostream* trace = nullptr;  // --trace CSV
     std::ostream* err = nullptr;    // warnings of loaded sources (asm85's, file:line:col)
     bool verbose = false;
-    std::filesystem::path out_dir;  // --out-dir: where save, restore, record and plot files go
+    // --out-dir: where save, restore, record and plot files go. Empty: the script's folder, or the
+    // current folder when the script writes files and its folder takes none (prepare() notes it on err).
+    std::filesystem::path out_dir;
     periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;  // --motor, until `motor`
 };
 
