@@ -239,7 +239,7 @@ std::vector<ScriptResult> execute_all(const std::vector<std::filesystem::path>& 
             join();
             std::rethrow_exception(held[i].error);
         }
-        if (options.trace) *options.trace << held[i].trace.view();
+        if (options.trace) *options.trace << held[i].trace.str();
         held[i].trace = {};
         report(results[i], held[i].out.str());
         held[i].out = {};
