@@ -49,7 +49,7 @@ val outcome(const script::Session::Outcome& o) {
 // The snapshot's layout (web/main.js reads it by the same numbers).
 constexpr std::size_t kSnapT = 0, kSnapPc = 1, kSnapRunning = 2, kSnapStops = 3, kSnapDisplayChanges = 4,
                       kSnapDigits = 5, kSnapAxes = 13, kSnapPathSize = 25, kSnapIdeal = 26, kSnapLog = 31,
-                      kSnapSize = 32;
+                      kSnapHalted = 32, kSnapSize = 33;
 
 }  // namespace
 
@@ -170,6 +170,7 @@ public:
         v[kSnapT] = static_cast<double>(m.now());
         v[kSnapPc] = m.cpu().regs().pc;
         v[kSnapRunning] = running() ? 1 : 0;
+        v[kSnapHalted] = m.cpu().halted() ? 1 : 0;  // after a HLT: the run goes on (RESET, interrupts), the CPU waits
         v[kSnapStops] = static_cast<double>(stops_);
         const auto digits = m.display();
         if (digits != digits_) {

@@ -36,8 +36,8 @@ for (let i = 0; i < 8; i++) {
   digits.push(segs);
 }
 // What the board shows, copied each frame from its snapshot (web/binding.cpp: the same numbers).
-const SNAP = { t: 0, pc: 1, running: 2, stops: 3, displayChanges: 4, digits: 5, axes: 13, pathSize: 25, ideal: 26, log: 31 };
-const S = new Float64Array(32);
+const SNAP = { t: 0, pc: 1, running: 2, stops: 3, displayChanges: 4, digits: 5, axes: 13, pathSize: 25, ideal: 26, log: 31, halted: 32 };
+const S = new Float64Array(33);
 let shownChanges = -1;
 const shown = new Array(8).fill(-1);
 function drawDisplay() {  // only when the segments changed
@@ -228,8 +228,30 @@ function drawGrid() {  // the grid, 5, 10 or 50 mm, on a clean lower canvas
   for (let g = Math.floor((view.cx - view.span) / step) * step; g < view.cx + view.span; g += step) { ctx.moveTo(X(g), 0); ctx.lineTo(X(g), canvas.height); }
   for (let g = Math.floor((view.cy - view.span) / step) * step; g < view.cy + view.span; g += step) { ctx.moveTo(0, Y(g)); ctx.lineTo(canvas.width, Y(g)); }
   ctx.stroke();
-  ctx.fillStyle = '#777'; ctx.font = '11px system-ui';
-  ctx.fillText(`${step} mm grid`, 6, canvas.height - 6);
+  drawNumbers(step);
+}
+// The grid lines' values in mm, X along the bottom edge and Y along the left, as elements over
+// the canvas (written when the view moves): every grid line's, or every second or fifth one's
+// where they would stand closer than 48 CSS pixels.
+function drawNumbers(step) {
+  const every = [1, 2, 5, 10].map((k) => k * step).find((s) => s * view.scale * cssScale >= 48) ?? 10 * step;
+  const numbers = (box, lo, hi, at) => {
+    const spans = [];
+    for (let g = Math.ceil(lo / every) * every; g <= hi; g += every) {
+      const e = document.createElement('span');
+      e.textContent = `${Number(g.toFixed(3))}`;
+      e.dataset.mm = g;
+      at(e, g);
+      spans.push(e);
+    }
+    box.replaceChildren(...spans);
+  };
+  const w = canvas.width, h = canvas.height, x0 = view.cx - w / 2 / view.scale, y0 = view.cy - h / 2 / view.scale;
+  // Leave the corner where both edges meet to the Y numbers (an X number there would cover one),
+  // and no number so near the far edges that it would be cut.
+  const px = 1 / view.scale / cssScale;  // mm in a CSS pixel
+  numbers($('table-xnums'), x0 + 30 * px, x0 + w / view.scale - 14 * px, (e, g) => { e.style.left = `${X(g) * cssScale}px`; });
+  numbers($('table-ynums'), y0 + 20 * px, y0 + h / view.scale - 8 * px, (e, g) => { e.style.top = `${Y(g) * cssScale}px`; });
 }
 // The axes' figures, with the other slow parts while they change: a cell is written only when its
 // figure changed; the Z gauge is scaled by the compositor.
@@ -272,7 +294,9 @@ function status(now) {
   const ratio = (t - tSince) / CLOCK_HZ / ((now - runSince) / 1000);
   runSince = now; tSince = t; slowDrawn = true;
   const stop = running ? '' : board.stopText();
-  $('status').textContent = `${running ? 'running' : 'stopped' + (stop ? ` (${stop})` : '')} · ${(t / CLOCK_HZ).toFixed(3)} s · ` +
+  // After a HLT the board's clock runs on (RESET and interrupts still answer), but the CPU waits.
+  const state = running ? (S[SNAP.halted] === 1 ? 'halted' : 'running') : 'stopped' + (stop ? ` (${stop})` : '');
+  $('status').textContent = `${state} · ${(t / CLOCK_HZ).toFixed(3)} s · ` +
     `${running ? ratio.toFixed(ratio < 10 ? 2 : 0) + '× real time' : ''} · PC ${S[SNAP.pc].toString(16).toUpperCase().padStart(4, '0')}H`;
   const run = running ? 'Pause' : 'Run';
   if (run !== shownRun) $('run').textContent = shownRun = run;

@@ -50,17 +50,22 @@ void add_gui_command(CLI::App& app, int& status) {
     cmd->add_option("--firmware", args->firmware,
                     "Firmware to load, named as the positional arguments are (a built-in name or a file); may be repeated");
     cmd->add_option("--script", args->o.script, "Run this script (docs/scripting.md) in the window first");
+    // The test hooks (tests/gui) are in no group, so --help, the man page and completion, all made
+    // from --help, do not offer them; they work all the same.
     cmd->add_option("--click", args->o.clicks,
                     "Then click these keypad buttons (R, 0-F, EXEC, NEXT, ..., RESET, VECT) with synthesized mouse "
-                    "events (a test hook)");
+                    "events (a test hook)")
+        ->group("");
     CLI::Option* debug = cmd->add_flag("--debug", args->o.debug,
                   "The debugger's panes (source, registers, disassembly, memory, chips, watches, steps and reverse "
                   "steps, the command line: docs/debugging.md) in place of the machine tool's views");
     cmd->add_option("--click-line", args->o.click_lines,
                     "With --debug: then click the source rows of these FILE:LINE (sets breakpoints; a test hook)")
-        ->needs(debug);
+        ->needs(debug)
+        ->group("");
     cmd->add_option("--debug-command", args->o.debug_commands,
-                    "Then run these debugger command lines, or click:BUTTON, frames:N, status, toolpath (a test hook)");
+                    "Then run these debugger command lines, or click:BUTTON, frames:N, status, toolpath (a test hook)")
+        ->group("");
     cmd->add_option("--screenshot", args->o.screenshot,
                     "Save the window as PNG when the script and the clicks are done, then quit");
     cmd->add_option("--expect-display", args->o.expect_display, "At exit the display must read this (else status 1)");

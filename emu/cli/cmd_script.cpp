@@ -1,4 +1,4 @@
-// alp85 script FILE... [--junit OUT.xml] [--trace OUT.csv] [-v]: headless firmware tests
+// alp85 script FILE... [-j N] [--junit OUT.xml] [--trace OUT.csv] [-v]: headless firmware tests
 // (docs/scripting.md). Exit status: 0 all passed, 1 an expectation failed (or --max-time was
 // reached), 2 a script error.
 #include <cstdio>
@@ -43,6 +43,7 @@ void add_script_command(CLI::App& app, int& status) {
         std::string out_dir;
         std::string motor = "physical";
         std::string max_time = "1h";
+        unsigned jobs = 1;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("script", "Run headless test scripts against the ALP 85 (docs/scripting.md)");
@@ -52,13 +53,19 @@ void add_script_command(CLI::App& app, int& status) {
     cmd->add_flag("-v,--verbose", args->verbose, "Echo each command with the simulated time");
     add_motor_option(cmd, args->motor);
     add_max_time_option(cmd, args->max_time);
+    cmd->add_option("-j,--jobs", args->jobs,
+                    "Run up to N scripts at once (default 1); the output stays grouped per script, in file order")
+        ->check(CLI::Range(1u, 1024u))
+        ->option_text("N");
     cmd->add_option("--out-dir", args->out_dir,
                     "Folder for the files scripts write and read back (save, restore, record, plot); "
-                    "created if missing. Default: each script's own folder");
+                    "created if missing. Default: each script's own folder, or the current folder when that one cannot "
+                    "be written (a note says so)");
     cmd->footer(
         "Examples:\n"
         "  alp85 script scripts/monitor/*.alp\n"
         "  alp85 script test.alp --junit report.xml -v\n"
+        "  alp85 script -j 2 scripts/*/*.alp --junit report.xml\n"
         "Exit status: 0 every script passed, 1 an expectation failed or an output (--trace, --junit)\n"
         "could not be written or a script's run reached --max-time, 2 a usage or script error (a script\n"
         "that is missing or a directory, an output that is a script, an included script, a file it\n"
@@ -131,11 +138,10 @@ void add_script_command(CLI::App& app, int& status) {
             }
             o.trace = &trace->stream();
         }
-        std::vector<script::ScriptResult> results;
         int failed = 0;
-        for (std::size_t i = 0; i < args->files.size(); ++i) {
-            results.push_back(script::execute(args->files[i], programs[i], o));
-            const auto& r = results.back();
+        const std::vector<std::filesystem::path> files(args->files.begin(), args->files.end());
+        const auto results = script::execute_all(files, programs, o, args->jobs, [&](const script::ScriptResult& r, const std::string& output) {
+            std::cout << output;
             if (r.passed) {
                 std::cout << fmt::format("PASS {} ({} commands, {} simulated, {:.3f} s)\n", r.file, r.commands,
                                          script::Session::format_time(r.tstates), r.seconds);
@@ -143,7 +149,7 @@ void add_script_command(CLI::App& app, int& status) {
                 ++failed;
                 std::cout << fmt::format("FAIL {}\n{}\n", r.file, r.failure);
             }
-        }
+        });
         std::cout << fmt::format("{} passed, {} failed\n", results.size() - failed, failed);
         if (trace) {
             try {

@@ -110,6 +110,30 @@ private:
     cairo_t* cr_ = nullptr;
 };
 
+// A rectangle in device units (pixels or points).
+struct Box {
+    double x, y, w, h;
+};
+
+// Whether the segment (x0,y0)-(x1,y1) meets the box: Liang-Barsky clipping of the segment to it.
+bool meets(const Box& b, double x0, double y0, double x1, double y1) {
+    double t0 = 0, t1 = 1;
+    const double dx = x1 - x0, dy = y1 - y0;
+    const double p[] = {-dx, dx, -dy, dy};
+    const double q[] = {x0 - b.x, b.x + b.w - x0, y0 - b.y, b.y + b.h - y0};
+    for (int i = 0; i < 4; ++i) {
+        if (p[i] == 0) {
+            if (q[i] < 0) return false;  // parallel to this edge and outside it
+            continue;
+        }
+        const double t = q[i] / p[i];
+        if (p[i] < 0) t0 = std::max(t0, t);
+        else t1 = std::min(t1, t);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
 void text(cairo_t* cr, const std::string& s, double x, double y, double ax, double ay, double size,
           bool bold = false, double angle = 0.0) {
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
@@ -197,16 +221,82 @@ void draw(const Chart& c, const std::string& path) {
     Surface surf(path, c.width, c.height);
     cairo_t* cr = surf.cr();
     const double left = 78, right = 18, top = 44, bottom = 56;
-    const double pw = c.width - left - right, ph = c.height - top - bottom;
-    Range xr = padded(x0, x1), yr = padded(y0, y1);
-    if (c.equal_scale) {
-        const double ux = (xr.hi - xr.lo) / pw, uy = (yr.hi - yr.lo) / ph, u = std::max(ux, uy);
-        const double cx = (xr.lo + xr.hi) / 2, cy = (yr.lo + yr.hi) / 2;
-        xr = {cx - u * pw / 2, cx + u * pw / 2};
-        yr = {cy - u * ph / 2, cy + u * ph / 2};
-    }
+    double pw = c.width - left - right;
+    const double ph = c.height - top - bottom;
+    Range xr{}, yr{};
+    auto scale = [&] {  // the data's ranges for a plot area pw wide
+        xr = padded(x0, x1), yr = padded(y0, y1);
+        if (c.equal_scale) {
+            const double ux = (xr.hi - xr.lo) / pw, uy = (yr.hi - yr.lo) / ph, u = std::max(ux, uy);
+            const double cx = (xr.lo + xr.hi) / 2, cy = (yr.lo + yr.hi) / 2;
+            xr = {cx - u * pw / 2, cx + u * pw / 2};
+            yr = {cy - u * ph / 2, cy + u * ph / 2};
+        }
+    };
+    scale();
     auto X = [&](double x) { return left + (x - xr.lo) / (xr.hi - xr.lo) * pw; };
     auto Y = [&](double y) { return top + ph - (y - yr.lo) / (yr.hi - yr.lo) * ph; };
+
+    // The legend's place: the corner asked for if no line or marker passes under it, else the
+    // first free corner, else beside the plot area, which then narrows (as Legend::Right always
+    // is). A legend never covers the data.
+    std::vector<const Series*> named;
+    for (const auto& s : c.series)
+        if (!s.label.empty()) named.push_back(&s);
+    Box legend{};
+    if (!named.empty()) {
+        cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+        cairo_set_font_size(cr, 11);
+        double wmax = 0;
+        for (const Series* s : named) {
+            cairo_text_extents_t e;
+            cairo_text_extents(cr, s->label.c_str(), &e);
+            wmax = std::max(wmax, e.x_advance);
+        }
+        legend.w = wmax + 42;
+        legend.h = 16.0 * static_cast<double>(named.size()) + 8;
+        using L = Chart::Legend;
+        auto corner = [&](L where) {
+            const bool at_left = where == L::TopLeft || where == L::BottomLeft;
+            const bool at_bottom = where == L::BottomRight || where == L::BottomLeft;
+            return Box{at_left ? left + 8 : left + pw - legend.w - 8, at_bottom ? top + ph - legend.h - 8 : top + 8,
+                       legend.w, legend.h};
+        };
+        // Free: no segment and no marker within reach of the box (half a line, a marker's radius,
+        // and a pixel of antialiasing).
+        auto clear_of_data = [&](const Box& b) {
+            const Box reach{b.x - 4, b.y - 4, b.w + 8, b.h + 8};
+            for (const auto& s : c.series) {
+                const Point* prev = nullptr;
+                for (const auto& p : s.points) {
+                    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+                        prev = nullptr;
+                        continue;
+                    }
+                    const double px = X(p.x), py = Y(p.y);
+                    if (meets(reach, prev ? X(prev->x) : px, prev ? Y(prev->y) : py, px, py)) return false;
+                    prev = &p;
+                }
+            }
+            return true;
+        };
+        bool placed = false;
+        if (c.legend != L::Right) {
+            for (const L where : {c.legend, L::TopRight, L::TopLeft, L::BottomRight, L::BottomLeft}) {
+                legend = corner(where);
+                if (clear_of_data(legend)) {
+                    placed = true;
+                    break;
+                }
+            }
+        }
+        if (!placed) {
+            pw -= legend.w + 10;
+            scale();
+            legend.x = left + pw + 10;
+            legend.y = c.legend == L::Right ? top + (ph - legend.h) / 2 : top;
+        }
+    }
 
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
@@ -252,6 +342,10 @@ void draw(const Chart& c, const std::string& path) {
         const Rgb col = kPalette[i % std::size(kPalette)];
         cairo_set_source_rgb(cr, col.r, col.g, col.b);
         cairo_set_line_width(cr, 1.6);
+        // Round joins and caps: a motor's ringing turns the path back and forth by a step; mitred,
+        // each turn would be drawn as a spike several line widths long.
+        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+        cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
         const double dash[] = {6.0, 4.0};
         cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
         bool pen = false;
@@ -275,25 +369,9 @@ void draw(const Chart& c, const std::string& path) {
     }
     cairo_restore(cr);
 
-    // Legend, top right inside the plot.
-    std::vector<const Series*> named;
-    for (const auto& s : c.series)
-        if (!s.label.empty()) named.push_back(&s);
+    // The legend, where it was placed above.
     if (!named.empty()) {
-        cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-        cairo_set_font_size(cr, 11);
-        double wmax = 0;
-        for (const Series* s : named) {
-            cairo_text_extents_t e;
-            cairo_text_extents(cr, s->label.c_str(), &e);
-            wmax = std::max(wmax, e.x_advance);
-        }
-        const double lh = 16, bw = wmax + 42, bh = lh * named.size() + 8;
-        using L = Chart::Legend;
-        const bool at_left = c.legend == L::TopLeft || c.legend == L::BottomLeft;
-        const bool at_bottom = c.legend == L::BottomRight || c.legend == L::BottomLeft;
-        const double bx = at_left ? left + 8 : left + pw - bw - 8;
-        const double by = c.legend == L::Right ? top + (ph - bh) / 2 : at_bottom ? top + ph - bh - 8 : top + 8;
+        const double lh = 16, bx = legend.x, by = legend.y, bw = legend.w, bh = legend.h;
         cairo_set_source_rgba(cr, 1, 1, 1, 0.9);
         cairo_rectangle(cr, bx, by, bw, bh);
         cairo_fill_preserve(cr);

@@ -6,8 +6,11 @@
 //   c.series.push_back({"rotor", points});
 //   plot::write(c, "docs/img/step.svg");
 //
+// Data lines have round joins and caps. The legend never covers the data: it goes to the corner
+// asked for when no line passes there, else to the first free corner, else beside the plot area.
+//
 // Not done: logarithmic axes, several y axes, text layout beyond cairo's toy font API (labels are
-// not wrapped; very long legends may overlap the data).
+// not wrapped).
 #pragma once
 
 #include <optional>
@@ -38,6 +41,8 @@ struct Chart {
     int width = 720;   // pixels (PNG) or points (SVG)
     int height = 440;
     bool equal_scale = false;  // one unit is the same length on both axes (toolpaths)
+    // Where the legend goes if no data passes there (a corner inside the plot area), or Right:
+    // beside the plot area, always.
     enum class Legend { TopRight, TopLeft, BottomRight, BottomLeft, Right } legend = Legend::TopRight;
 };
 

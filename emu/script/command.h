@@ -59,6 +59,7 @@ enum class Op : std::uint8_t {
 struct Command {
     Op op = Op::Print;
     Location where;
+    std::vector<Location> included_from;  // the `include` lines that brought this line in, innermost first
     std::string line;                   // the source line, for reports
     std::string text;                   // path, display text or message
     std::optional<Value> address;       // load at / run until / break / expect & set mem, word

@@ -665,6 +665,14 @@ std::string ParseError::format() const {
     return fmt::format("{}:{}:{}: error: {}\n {}\n {}^\n", where.file, where.line, where.col, message, line, caret);
 }
 
+std::string included_from(const Command& c) {
+    std::string s;
+    for (const Location& l : c.included_from) s += fmt::format(" (included from {}:{})", l.file, l.line);
+    return s;
+}
+
+std::string place_of(const Command& c) { return fmt::format("{}:{}{}", c.where.file, c.where.line, included_from(c)); }
+
 std::optional<Command> parse_line(std::string_view line, const std::string& file, int line_no,
                                   std::vector<ParseError>& errors) {
     return LineParser(line, file, line_no, errors).parse();
@@ -699,8 +707,11 @@ std::optional<std::pair<std::string, int>> include_of(std::string_view line) {
     return std::pair{std::string(rest), at};
 }
 
+// chain: the canonical paths of the files being read (a cycle test); from: the include lines
+// being read, outermost first.
 void parse_into(std::string_view text, const std::string& file, std::vector<ParseError>& errors,
-                std::vector<Command>& out, std::vector<std::string>& chain, std::vector<std::string>* included) {
+                std::vector<Command>& out, std::vector<std::string>& chain, std::vector<Location>& from,
+                std::vector<std::string>* included) {
     int n = 0;
     std::size_t start = 0;
     while (start <= text.size()) {
@@ -735,13 +746,16 @@ void parse_into(std::string_view text, const std::string& file, std::vector<Pars
                 } else {
                     if (included) included->push_back(path.string());
                     chain.push_back(key);
-                    parse_into(body, path.string(), errors, out, chain, included);
+                    from.push_back({file, n, inc->second});
+                    parse_into(body, path.string(), errors, out, chain, from, included);
+                    from.pop_back();
                     chain.pop_back();
                     for (std::size_t i = first_error; i < errors.size(); ++i)
                         errors[i].message += fmt::format(" (included from {}:{})", file, n);
                 }
             }
         } else if (auto c = parse_line(line, file, n, errors)) {
+            c->included_from.assign(from.rbegin(), from.rend());
             out.push_back(std::move(*c));
         }
         if (end == text.size()) break;
@@ -756,7 +770,8 @@ std::vector<Command> parse_script(std::string_view text, const std::string& file
     std::vector<Command> out;
     std::error_code ec;
     std::vector<std::string> chain{std::filesystem::weakly_canonical(file, ec).string()};
-    parse_into(text, file, errors, out, chain, included);
+    std::vector<Location> from;
+    parse_into(text, file, errors, out, chain, from, included);
     return out;
 }
 

@@ -17,6 +17,12 @@ struct ParseError {
     std::string format() const;  // file:line:col: error: message, the line and a caret
 };
 
+// Where a command stands, for reports: "file:line", then the include lines that brought it in,
+// innermost first, as parse errors name them: "common.alp:8 (included from top.alp:1)".
+std::string place_of(const Command& c);
+// The same chain alone, each " (included from FILE:LINE)": appended to a message about the line.
+std::string included_from(const Command& c);
+
 // One line. An empty or comment-only line gives nullopt and no error.
 std::optional<Command> parse_line(std::string_view line, const std::string& file, int line_no,
                                   std::vector<ParseError>& errors);

@@ -1,10 +1,22 @@
 #include "emu/script/runner.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <exception>
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <map>
+#include <mutex>
+#include <numeric>
+#include <sstream>
+#include <system_error>
+#include <thread>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -25,7 +37,87 @@ SessionOptions session_options(const std::filesystem::path& file, const RunnerOp
     return s;
 }
 
+// Whether files can be made in `dir`: access() first, then a file made and removed, since root
+// passes access() in a folder whose file system refuses new files (/proc, a read-only mount).
+bool can_write_in(const std::filesystem::path& dir) {
+    if (::access(dir.c_str(), W_OK) != 0) return false;
+    static std::atomic<unsigned> probes{0};
+    const std::filesystem::path probe = dir / fmt::format(".alp85-write-test-{}-{}", ::getpid(), probes++);
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0) return false;
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return true;
+}
+
+// Where a script's save, restore, record and plot files go: --out-dir; else the script's folder,
+// unless the script writes files and cannot write there (an installed example under /usr/share,
+// run by a user): then the current folder, and `note` says so.
+std::filesystem::path output_dir(const std::filesystem::path& file, const std::vector<Command>& commands,
+                                 const RunnerOptions& o, std::string* note = nullptr) {
+    if (!o.out_dir.empty()) return o.out_dir;
+    const bool writes = std::any_of(commands.begin(), commands.end(), [](const Command& c) {
+        return c.op == Op::Save || c.op == Op::Record || c.op == Op::Plot;
+    });
+    const std::filesystem::path dir = session_options(file, o).base_dir;
+    if (!writes || can_write_in(dir)) return {};
+    std::error_code ec;
+    const std::filesystem::path here = std::filesystem::current_path(ec);
+    if (ec || std::filesystem::equivalent(here, dir, ec)) return {};  // nowhere better: the write will say why
+    if (note)
+        *note = fmt::format("{}: note: its folder {} is not writable; the files it writes (save, record, plot) go "
+                            "to the current folder, {} (--out-dir DIR chooses another)\n",
+                            file.string(), dir.string(), here.string());
+    return here;
+}
+
+// The files a script writes or reads back (save, restore, record, plot), as its session resolves
+// them: relative to --out-dir, else to the script's folder.
+std::vector<std::string> shared_files(const std::filesystem::path& file, const std::vector<Command>& commands,
+                                      const RunnerOptions& o) {
+    std::vector<std::string> paths;
+    std::filesystem::path dir = output_dir(file, commands, o);
+    if (dir.empty()) dir = session_options(file, o).base_dir;
+    for (const Command& c : commands) {
+        if (c.op != Op::Save && c.op != Op::Restore && c.op != Op::Record && c.op != Op::Plot) continue;
+        std::filesystem::path p(c.text);
+        if (!p.is_absolute()) p = dir / p;
+        std::error_code ec;
+        const std::filesystem::path key = std::filesystem::weakly_canonical(p, ec);
+        paths.push_back((ec ? p.lexically_normal() : key).string());
+    }
+    return paths;
+}
+
 }  // namespace
+
+std::vector<std::vector<std::size_t>> script_groups(const std::vector<std::filesystem::path>& files,
+                                                    const std::vector<std::vector<Command>>& programs,
+                                                    const RunnerOptions& o) {
+    std::vector<std::size_t> leader(files.size());
+    std::iota(leader.begin(), leader.end(), std::size_t{0});
+    auto find = [&](std::size_t i) {
+        while (leader[i] != i) i = leader[i] = leader[leader[i]];
+        return i;
+    };
+    std::map<std::string, std::size_t> first_user;
+    for (std::size_t i = 0; i < files.size(); ++i)
+        for (const std::string& f : shared_files(files[i], programs[i], o)) {
+            const auto [it, fresh] = first_user.emplace(f, i);
+            if (!fresh) {
+                const std::size_t a = find(it->second), b = find(i);
+                leader[std::max(a, b)] = std::min(a, b);  // the earlier script leads
+            }
+        }
+    std::vector<std::vector<std::size_t>> groups;
+    std::map<std::size_t, std::size_t> group_of;  // leader -> index in groups
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        const auto [it, fresh] = group_of.emplace(find(i), groups.size());
+        if (fresh) groups.emplace_back();
+        groups[it->second].push_back(i);
+    }
+    return groups;
+}
 
 bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, std::vector<ParseError>& errors,
              const RunnerOptions& options, std::vector<NamedPath>* inputs) {
@@ -48,7 +140,9 @@ bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, 
     std::vector<std::string> included;
     commands = parse_script(text, file.string(), errors, &included);
     Session checker(session_options(file, options));
-    checker.set_out_dir(options.out_dir);
+    std::string note;
+    checker.set_out_dir(output_dir(file, commands, options, &note));
+    if (options.err) *options.err << note;
     checker.add_input(file, "the script");
     for (const std::string& f : included) checker.add_input(f, "an included script");
     for (const NamedPath& o : options.outputs) checker.add_output(o.path, o.role);
@@ -66,7 +160,7 @@ ScriptResult execute(const std::filesystem::path& file, const std::vector<Comman
     ScriptResult r;
     r.file = file.string();
     Session session(session_options(file, options));
-    session.set_out_dir(options.out_dir);
+    session.set_out_dir(output_dir(file, commands, options));
     session.add_input(file, "the script");
     std::set<std::string> scripts;
     for (const Command& c : commands)
@@ -93,6 +187,80 @@ ScriptResult execute(const std::filesystem::path& file, const std::vector<Comman
     r.tstates = session.machine().now();
     session.set_trace(nullptr);
     return r;
+}
+
+std::vector<ScriptResult> execute_all(const std::vector<std::filesystem::path>& files,
+                                      const std::vector<std::vector<Command>>& programs, const RunnerOptions& options,
+                                      unsigned jobs,
+                                      const std::function<void(const ScriptResult&, const std::string& output)>& report) {
+    std::vector<ScriptResult> results(files.size());
+    if (jobs <= 1 || files.size() <= 1) {
+        for (std::size_t i = 0; i < files.size(); ++i) {
+            results[i] = execute(files[i], programs[i], options);
+            report(results[i], {});
+        }
+        return results;
+    }
+    struct Held {
+        std::ostringstream out, trace;
+        bool done = false;
+        std::exception_ptr error;  // what ended the run instead of a result (out of memory, say)
+    };
+    std::vector<Held> held(files.size());
+    const std::vector<std::vector<std::size_t>> groups = script_groups(files, programs, options);
+    std::mutex m;
+    std::condition_variable finished;
+    std::atomic<std::size_t> next_group{0};
+    auto worker = [&] {
+        for (std::size_t g; (g = next_group++) < groups.size();) {
+            for (const std::size_t i : groups[g]) {
+                RunnerOptions o = options;
+                o.out = &held[i].out;
+                o.trace = options.trace ? &held[i].trace : nullptr;
+                ScriptResult r;
+                std::exception_ptr error;
+                try {
+                    r = execute(files[i], programs[i], o);
+                } catch (...) {
+                    error = std::current_exception();  // rethrown when its turn to be reported comes
+                }
+                const std::lock_guard lock(m);
+                results[i] = std::move(r);
+                held[i].error = error;
+                held[i].done = true;
+                finished.notify_all();
+            }
+        }
+    };
+    std::vector<std::thread> threads;
+    const std::size_t n = std::min<std::size_t>(jobs, groups.size());
+    for (std::size_t t = 0; t < n; ++t) {
+        try {
+            threads.emplace_back(worker);
+        } catch (const std::system_error&) {  // no more threads to be had: run with those there are
+            break;
+        }
+    }
+    if (threads.empty()) worker();
+    auto join = [&] {
+        for (std::thread& t : threads) t.join();
+    };
+    // Report in file order, each script as soon as it and every one before it are done.
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        std::unique_lock lock(m);
+        finished.wait(lock, [&] { return held[i].done; });
+        lock.unlock();
+        if (held[i].error) {
+            join();
+            std::rethrow_exception(held[i].error);
+        }
+        if (options.trace) *options.trace << held[i].trace.str();
+        held[i].trace = {};
+        report(results[i], held[i].out.str());
+        held[i].out = {};
+    }
+    join();
+    return results;
 }
 
 std::string junit_xml(const std::vector<ScriptResult>& results) {

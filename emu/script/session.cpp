@@ -113,15 +113,14 @@ std::optional<std::int64_t> Session::resolve(const Value& v, std::string& error)
 
 Session::Outcome Session::fail(const Command& c, std::string what) const {
     if (c.where.line == 0) return {Status::Failed, std::move(what)};  // a front end's typed call: no script line
-    return {Status::Failed, fmt::format("{}:{}: {}\n  {}\n  {}", c.where.file, c.where.line, rtrim(c.line), what,
-                                        where_now())};
+    return {Status::Failed, fmt::format("{}: {}\n  {}\n  {}", place_of(c), rtrim(c.line), what, where_now())};
 }
 
 Session::Outcome Session::fail_expect(const Command& c, const std::string& expected, const std::string& actual) const {
     debugger_.emit({debug::Event::Kind::ExpectFailed, debugger_.here(debug::StopReason::Condition),
                     fmt::format("expected: {}; actual: {}", expected, actual), origin(c)});
-    return {Status::Failed, fmt::format("{}:{}: expectation failed: {}\n  expected: {}\n  actual:   {}\n  {}",
-                                        c.where.file, c.where.line, rtrim(c.line), expected, actual, where_now())};
+    return {Status::Failed, fmt::format("{}: expectation failed: {}\n  expected: {}\n  actual:   {}\n  {}",
+                                        place_of(c), rtrim(c.line), expected, actual, where_now())};
 }
 
 void Session::add_input(const std::filesystem::path& path, std::string role) {
@@ -164,7 +163,7 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
     std::set<std::string> saved;  // snapshot files an earlier command writes
     bool recorded = false;        // a record command came before
     auto err = [&](const Command& c, int col, std::string msg) {
-        errors.push_back({{c.where.file, c.where.line, col}, std::move(msg), c.line});
+        errors.push_back({{c.where.file, c.where.line, col}, std::move(msg) + included_from(c), c.line});
     };
     auto col_of = [](const Command& c, const std::string& text) {
         const auto p = c.line.find(text);

@@ -1,5 +1,5 @@
 # Runs one command and checks its exit status and its output (stdout and stderr together).
-#   cmake -DCMD="prog;arg;..." -DSTATUS=n|nonzero [-DMATCH=regex] [-DMATCH2=regex] -P run_check.cmake
+#   cmake -DCMD="prog;arg;..." -DSTATUS=n|nonzero [-DMATCH=regex] [-DMATCH2=regex] [-DNOMATCH=regex] -P run_check.cmake
 # With -DTWICE=1 the command runs twice and both outputs must be identical (determinism).
 execute_process(COMMAND ${CMD} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(all "${out}${err}")
@@ -15,6 +15,9 @@ foreach(m MATCH MATCH2)
     message(FATAL_ERROR "output does not match '${${m}}':\n${all}")
   endif()
 endforeach()
+if(DEFINED NOMATCH AND all MATCHES "${NOMATCH}")
+  message(FATAL_ERROR "output matches '${NOMATCH}', which it must not:\n${all}")
+endif()
 if(TWICE)
   execute_process(COMMAND ${CMD} RESULT_VARIABLE rc2 OUTPUT_VARIABLE out2 ERROR_VARIABLE err2)
   # Only the counters must agree; wall time and rate differ between runs.

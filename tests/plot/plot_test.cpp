@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -103,6 +105,139 @@ TEST(Plot, TheTickAtZeroIsNotNegative) {
         ASSERT_FALSE(t.empty());
         EXPECT_EQ(t.front(), 0.0);
         EXPECT_FALSE(std::signbit(t.front())) << "from " << lo;
+    }
+}
+
+// The drawn paths of an SVG as cairo writes them (<path style="..." d="M x y L x y ... Z"/>),
+// outside <defs> (the glyphs): their style and their points (a curve by its end point).
+struct SvgPath {
+    std::string style;
+    std::vector<std::vector<plot::Point>> parts;  // one per M
+};
+
+std::vector<SvgPath> svg_paths(const std::string& doc) {
+    std::vector<SvgPath> out;
+    const std::string body = doc.substr(doc.find("</defs>"));
+    static const std::regex path_re(R"re(<path style="([^"]*)" d="([^"]*)")re");
+    for (auto it = std::sregex_iterator(body.begin(), body.end(), path_re); it != std::sregex_iterator(); ++it) {
+        SvgPath p{(*it)[1].str(), {}};
+        std::istringstream d((*it)[2].str());
+        std::string op;
+        while (d >> op) {
+            const int n = op == "M" || op == "L" ? 1 : op == "C" ? 3 : 0;
+            plot::Point pt;
+            for (int i = 0; i < n; ++i) d >> pt.x >> pt.y;
+            if (op == "M") p.parts.emplace_back();
+            if (n > 0 && !p.parts.empty()) p.parts.back().push_back(pt);
+        }
+        out.push_back(std::move(p));
+    }
+    return out;
+}
+
+struct Rect {
+    double x0, y0, x1, y1;
+};
+
+// The legend's box: the one path filled white at 90 % opacity.
+std::optional<Rect> legend_box(const std::vector<SvgPath>& paths) {
+    for (const auto& p : paths) {
+        if (p.style.find("fill-opacity:0.9;") == std::string::npos || p.parts.empty()) continue;
+        Rect r{1e9, 1e9, -1e9, -1e9};
+        for (const auto& pt : p.parts[0])
+            r = {std::min(r.x0, pt.x), std::min(r.y0, pt.y), std::max(r.x1, pt.x), std::max(r.y1, pt.y)};
+        return r;
+    }
+    return std::nullopt;
+}
+
+// The data's lines: the paths stroked 1.6 wide.
+std::vector<SvgPath> data_lines(const std::vector<SvgPath>& paths) {
+    std::vector<SvgPath> out;
+    for (const auto& p : paths)
+        if (p.style.find("stroke-width:1.6;") != std::string::npos) out.push_back(p);
+    return out;
+}
+
+// How many points of the data's lines, walked a quarter of a unit at a time, lie inside `r`
+// grown by half the line's width (0.8): ink under the legend.
+int points_under(const std::vector<SvgPath>& lines, const Rect& r) {
+    int n = 0;
+    for (const auto& l : lines)
+        for (const auto& part : l.parts)
+            for (std::size_t i = 0; i < part.size(); ++i) {
+                const plot::Point a = part[i], b = i + 1 < part.size() ? part[i + 1] : part[i];
+                const int steps = 1 + static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / 0.25);
+                for (int k = 0; k <= steps; ++k) {
+                    const double x = a.x + (b.x - a.x) * k / steps, y = a.y + (b.y - a.y) * k / steps;
+                    if (x >= r.x0 - 0.8 && x <= r.x1 + 0.8 && y >= r.y0 - 0.8 && y <= r.y1 + 0.8) ++n;
+                }
+            }
+    return n;
+}
+
+// A toolpath with a motor's ringing: the path overshoots each step and swings back (turns of
+// under 90 degrees). Mitred joins would draw each turn as a spike; round joins do not.
+TEST(Plot, DataLinesHaveRoundJoinsAndCaps) {
+    std::vector<plot::Point> ringing;
+    for (int step = 0; step < 20; ++step) {
+        const double x = step * 0.05;
+        for (const double over : {0.0, 0.012, -0.008, 0.004, 0.0}) ringing.push_back({x + over, x * 0.5 + over * 0.8});
+    }
+    const auto p = scratch("ringing.svg");
+    plot::write_toolpath(p.string(), "Ringing", {{"actual", ringing}},
+                         std::pair<plot::Point, plot::Point>{{0, 0}, {0.95, 0.475}});
+    const auto lines = data_lines(svg_paths(slurp(p)));
+    ASSERT_EQ(lines.size(), 2u);  // the path and the ideal line
+    for (const auto& l : lines) {
+        EXPECT_NE(l.style.find("stroke-linejoin:round;"), std::string::npos) << l.style;
+        EXPECT_NE(l.style.find("stroke-linecap:round;"), std::string::npos) << l.style;
+    }
+}
+
+// The legend asked for at the top right (the default) stays there when that corner is empty, and
+// moves when the data pass under it: a line from the bottom left to the top right (the thesis's
+// line ends in that corner), then a path through all four corners (none is free).
+TEST(Plot, TheLegendNeverCoversTheData) {
+    // Empty top right: a falling line (top left to bottom right). The legend keeps its corner,
+    // 8 units in from the plot area's right edge (720 - 18 = 702) and top (44).
+    {
+        const auto p = scratch("falling.svg");
+        plot::write_time_series(p.string(), "Falling", {{"x", {{0, 10}, {1, 0}}}}, "v");
+        const auto paths = svg_paths(slurp(p));
+        const auto box = legend_box(paths);
+        ASSERT_TRUE(box);
+        EXPECT_NEAR(box->x1, 702 - 8, 0.5);
+        EXPECT_NEAR(box->y0, 44 + 8, 0.5);
+        EXPECT_EQ(points_under(data_lines(paths), *box), 0);
+    }
+    // A toolpath and its ideal line from the bottom left to the top right corner: 6.24 by 3.40 mm
+    // has the plot area's own proportions (624 by 340 units), so at equal scale both fill it.
+    {
+        const auto p = scratch("rising.svg");
+        plot::write_toolpath(p.string(), "Rising", {{"actual", {{0, 0}, {6.24, 3.40}}}},
+                             std::pair<plot::Point, plot::Point>{{0, 0}, {6.24, 3.40}});
+        const auto paths = svg_paths(slurp(p));
+        const auto box = legend_box(paths);
+        ASSERT_TRUE(box);
+        EXPECT_EQ(points_under(data_lines(paths), *box), 0) << "legend at " << box->x0 << "," << box->y0;
+        EXPECT_GE(box->x0, 0);
+        EXPECT_LE(box->x1, 720);
+    }
+    // A square's outline and both diagonals: every corner of the plot area has data; the legend
+    // goes beside it, still inside the picture.
+    {
+        const auto p = scratch("corners.svg");
+        plot::write_time_series(p.string(), "Corners",
+                                {{"outline", {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}}},
+                                 {"diagonals", {{0, 0}, {10, 10}, {plot::Point{NAN, NAN}}, {0, 10}, {10, 0}}}},
+                                "y");
+        const auto paths = svg_paths(slurp(p));
+        const auto box = legend_box(paths);
+        ASSERT_TRUE(box);
+        EXPECT_EQ(points_under(data_lines(paths), *box), 0) << "legend at " << box->x0 << "," << box->y0;
+        EXPECT_GE(box->x0, 0);
+        EXPECT_LE(box->x1, 720);
     }
 }
 

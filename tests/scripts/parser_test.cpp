@@ -157,6 +157,9 @@ TEST(ScriptInclude, LinesComeFromTheIncludedFileWithTheirOwnPlaces) {
     EXPECT_EQ(cmds[2].time, 3072u);
     EXPECT_EQ(cmds[3].where.file, top);
     EXPECT_EQ(cmds[3].where.line, 3);
+    // A failure report names an included line by its own place and the include line's.
+    EXPECT_EQ(place_of(cmds[1]), (dir / "sub" / "start.alp").string() + ":2 (included from " + top + ":2)");
+    EXPECT_EQ(place_of(cmds[3]), top + ":3");
 
     errors.clear();
     cmds = parse_script("reset\n  include sub/bad.alp\n", top, errors);

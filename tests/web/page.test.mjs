@@ -63,6 +63,9 @@ try {
   page.on('request', (r) => { if (!r.url().startsWith(`http://127.0.0.1:${port}/`) && !r.url().startsWith('blob:')) foreign.push(r.url()); });
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
+  // Every request answered (a missing /favicon.ico is a 404 and a console error on every load).
+  page.on('response', (r) => { if (r.status() >= 400) errors.push(`${r.status()} ${r.url()}`); });
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(`console: ${m.text()}`); });
   const t0 = Date.now();
   await page.goto(`http://127.0.0.1:${port}/`);
   await page.waitForFunction(() => window.alp85?.ready, { timeout: 30000 });
@@ -158,6 +161,14 @@ async function acceptance(page) {
   await waitDisplay(page, 'H=0750');
   await type(page, ['EXEC']);
   await waitDisplay(page, '  8itti', 30000);
+  // The firmware ends with HLT after Bitti (firmware/thesis/thesis.asm, L35): the board's clock
+  // runs on, the CPU waits, and the status says so.
+  try {
+    await page.waitForFunction(() => /^halted · /.test(document.querySelector('#status').textContent), { timeout: 5000 });
+  } catch {
+    throw new Error(`the status after the HLT reads "${await page.$eval('#status', (e) => e.textContent)}", not "halted · ..."`);
+  }
+  console.log(`status after HLT: ${await page.$eval('#status', (e) => e.textContent)}`);
   const seen = await settledAxes(page);
   // From the thesis line: (X2 - X1, Y2 - Y1) = (300 - 100, 200 - 50) steps of 0.05 mm, and Z's 12;
   // the transducers count what the table did, and nothing is lost at 750 mm/min.
@@ -167,6 +178,8 @@ async function acceptance(page) {
     await page.screenshot({ path: join(process.env.ALP85_DOC_IMAGES, 'web.png') });
     console.log(`screenshot: ${join(process.env.ALP85_DOC_IMAGES, 'web.png')}`);
   }
+  await tableView(page);
+  await pageFurniture(page);
   const snapDir = mkdtempSync(join(tmpdir(), 'alp85-web-snap-'));
   try {
     assert.deepEqual(seen, nativeAxes(snapDir), 'the page against `alp85 script` on the same line');
@@ -178,6 +191,91 @@ async function acceptance(page) {
   await editor(page);
   await master(page);
   await demo(page);
+}
+
+// The X-Y view after the thesis line: numbers at its grid lines that place the tool where the
+// axes say it is, X 200 x 0.05 = 10.00 mm and Y 150 x 0.05 = 7.50 mm (to within two CSS pixels,
+// the tool's rounding and a number's), and a legend whose colours are the lines drawn.
+async function tableView(page) {
+  const v = await page.evaluate(() => {
+    const box = document.querySelector('#table-box').getBoundingClientRect();
+    const nums = (id, horizontal) => [...document.querySelectorAll(`#${id} span`)].map((e) => {
+      const r = e.getBoundingClientRect();
+      return { mm: Number(e.textContent), at: horizontal ? (r.left + r.right) / 2 - box.left : (r.top + r.bottom) / 2 - box.top };
+    });
+    const d = document.querySelector('#tool-dot').getBoundingClientRect();
+    return { x: nums('table-xnums', true), y: nums('table-ynums', false),
+      tool: { x: (d.left + d.right) / 2 - box.left, y: (d.top + d.bottom) / 2 - box.top } };
+  });
+  const place = (nums, px, axis) => {
+    assert.ok(nums.length >= 2, `the X-Y view has ${nums.length} ${axis} numbers`);
+    const steps = nums.slice(1).map((n, i) => n.mm - nums[i].mm);
+    assert.ok(steps.every((s) => Math.abs(s - steps[0]) < 1e-9 && s > 0), `${axis} numbers evenly rising: ${nums.map((n) => n.mm)}`);
+    const [a, b] = [nums[0], nums[nums.length - 1]];
+    const mmPerPx = (b.mm - a.mm) / (b.at - a.at);
+    return { mm: a.mm + (px - a.at) * mmPerPx, px: Math.abs(mmPerPx) };
+  };
+  const x = place(v.x, v.tool.x, 'X'), y = place(v.y, v.tool.y, 'Y');
+  assert.ok(Math.abs(x.mm - 10) <= 2 * x.px, `the X numbers put the tool at ${x.mm.toFixed(3)} mm, not 10.00`);
+  assert.ok(Math.abs(y.mm - 7.5) <= 2 * y.px, `the Y numbers put the tool at ${y.mm.toFixed(3)} mm, not 7.50`);
+  console.log(`X-Y view: numbers ${v.x.map((n) => n.mm)} / ${v.y.map((n) => n.mm)} mm put the tool at (${x.mm.toFixed(2)}, ${y.mm.toFixed(2)}) mm`);
+  const legend = await page.evaluate(() => {
+    const rgb = (c) => c.match(/\d+/g).slice(0, 3).map(Number);
+    const sw = (cls, prop) => rgb(getComputedStyle(document.querySelector(`#table-legend .swatch.${cls}`))[prop]);
+    // how many opaque pixels of a canvas have a colour (within 12 of each channel)
+    const count = (id, [r, g, b]) => {
+      const c = document.querySelector(id);
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4)
+        if (d[i + 3] > 200 && Math.abs(d[i] - r) <= 12 && Math.abs(d[i + 1] - g) <= 12 && Math.abs(d[i + 2] - b) <= 12) n++;
+      return n;
+    };
+    const path = sw('path', 'borderTopColor'), ideal = sw('ideal', 'borderTopColor'), tool = sw('tool', 'backgroundColor');
+    return { texts: [...document.querySelectorAll('#table-legend li')].map((li) => li.textContent),
+      path: count('#table', path), ideal: count('#table-top', ideal),
+      tool: JSON.stringify(tool) === JSON.stringify(rgb(getComputedStyle(document.querySelector('#tool-dot')).backgroundColor)) };
+  });
+  assert.equal(legend.texts.length, 3, `the X-Y view's legend: ${legend.texts}`);
+  assert.match(legend.texts[0], /toolpath/);
+  assert.match(legend.texts[1], /ideal line/);
+  assert.match(legend.texts[2], /tool/);
+  assert.ok(legend.path > 20, `the legend's toolpath colour is on ${legend.path} pixels of the path's canvas`);
+  assert.ok(legend.ideal > 20, `the legend's ideal-line colour is on ${legend.ideal} pixels of the line's canvas`);
+  assert.ok(legend.tool, 'the legend\'s tool is the colour of the tool');
+  console.log(`X-Y view legend: ${legend.texts.join('; ')}`);
+}
+
+// The page's furniture: its icon (the project's SVG, served), the snapshot chooser's text whole,
+// the editor's gutter as tall as its lines.
+async function pageFurniture(page) {
+  const icon = await page.evaluate(async () => {
+    const l = document.querySelector('link[rel~="icon"]');
+    if (!l) return null;
+    const r = await fetch(l.href);
+    return { status: r.status, type: r.headers.get('content-type'), text: await r.text() };
+  });
+  assert.ok(icon, 'the page names no icon (the browser asks for /favicon.ico: a 404)');
+  assert.equal(icon.status, 200, 'the icon is not served');
+  assert.match(icon.type, /^image\/svg\+xml/);
+  assert.match(icon.text, /<svg[^>]*viewBox="0 0 32 32"/);
+  // The chooser: its label's text all shown, the native input's own text nowhere to be cut.
+  const chooser = await page.evaluate(() => {
+    const label = document.querySelector('#open').closest('label');
+    const input = document.querySelector('#open').getBoundingClientRect();
+    return { text: label.textContent.trim(), whole: label.scrollWidth <= label.clientWidth, input: [input.width, input.height] };
+  });
+  assert.ok(chooser.whole, `the snapshot chooser's text "${chooser.text}" is cut`);
+  assert.ok(chooser.input[0] <= 1 && chooser.input[1] <= 1, `the native file input shows (${chooser.input}): its "No file chosen" gets cut`);
+  // The gutter: with the demo's source (more lines than the box shows), its box (and background)
+  // as tall as its numbers, down to the last line.
+  const gutter = await page.evaluate(() => {
+    const g = document.querySelector('#gutter');
+    return { lines: g.textContent.split('\n').length, box: g.clientHeight, content: g.scrollHeight, shown: document.querySelector('.code').clientHeight };
+  });
+  assert.ok(gutter.content > gutter.shown, `the source (${gutter.lines} lines) fits the box: nothing to check`);
+  assert.ok(gutter.box >= gutter.content, `the gutter's background stops at ${gutter.box} of its ${gutter.content} px (${gutter.lines} lines)`);
+  console.log(`icon, chooser "${chooser.text}", gutter ${gutter.lines} lines: ${gutter.box} px of ${gutter.content}`);
 }
 
 // The master program with the G-code box's path (the circle of scripts/master/circle.nc): it asks

@@ -46,7 +46,7 @@ _alp85() {
             --speed) COMPREPLY=($(compgen -W "0.1 1 10 100 max" -- "$cur")) ;;
             -I | --include | --out-dir) _filedir -d ;;
             --keys | --for | --boot | -D | --define | --from | --to | --org | --bin-start | --bin-end | \
-                --fill | --max-tstates | --trace-last | --port | --seconds | --name-length | --click) ;;
+                --fill | --max-tstates | --trace-last | --port | --seconds | --name-length | --click | -j | --jobs) ;;
             *) _filedir ;;
         esac
         return

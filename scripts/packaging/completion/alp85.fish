@@ -63,7 +63,7 @@ for prog in alp85 asm85 pisa-asm
     complete -c $prog -n '__alp85_after_valued --motor' -xa 'ideal physical'
     complete -c $prog -n '__alp85_after_valued --speed' -xa '0.1 1 10 100 max'
     complete -c $prog -n '__alp85_after_valued -I --include --out-dir' -xa '(__fish_complete_directories)'
-    complete -c $prog -n '__alp85_after_valued; and not __alp85_after_valued --firmware --motor --speed --cpu -I --include --out-dir --keys --for --boot -D --define --from --to --org --bin-start --bin-end --fill --max-tstates --trace-last --port --seconds --name-length --click' -F
+    complete -c $prog -n '__alp85_after_valued; and not __alp85_after_valued --firmware --motor --speed --cpu -I --include --out-dir --keys --for --boot -D --define --from --to --org --bin-start --bin-end --fill --max-tstates --trace-last --port --seconds --name-length --click -j --jobs' -F
 end
 complete -c alp85 -n '__alp85_after_valued --firmware' -xa '(__alp85_firmware)'
 complete -c alp85 -n '__alp85_after_valued --cpu' -xa '8080 8085'
