@@ -144,10 +144,10 @@ test('malformed and out-of-order requests get error responses; the session goes 
     await c.refusal();
     c.frame('');
     await c.refusal();
-    c.bytes('Content-Length: twelve\r\n\r\n');
-    assert.match((await c.refusal()).message, /not a number/);
     c.bytes('X-Other: 1\r\n\r\n');
     assert.match((await c.refusal()).message, /without Content-Length/);
+    c.bytes('Content-Length: twelve\r\n\r\n');
+    assert.match((await c.refusal()).message, /not a number/);
     c.frame('\u0000\u0001\u00ff garbage \ud800');
     await c.refusal();
     r = await c.request(undefined, {});
@@ -220,5 +220,42 @@ test('an oversized frame is refused without reading it into memory, and the inpu
     assert.deepEqual(await c.exit, { code: 1, signal: null }); // input ended without a disconnect
   } finally {
     c.proc.kill();
+  }
+});
+
+// One bad frame with a body costs one error response: the adapter drops its body (and any stray
+// bytes) up to the next Content-Length header and reads the frames after it as sent.
+test('after a bad frame with a body the adapter reads the next frames and disconnect ends it', { timeout: 60000 }, async () => {
+  const body = JSON.stringify({ seq: 5, type: 'request', command: 'threads' });
+  const n = Buffer.byteLength(body);
+  const bad = {
+    'no Content-Length': `X-Other: 1\r\n\r\n${body}`,
+    abc: `Content-Length: abc\r\n\r\n${body}`,
+    '-5': `Content-Length: -5\r\n\r\n${body}`,
+    '+2': `Content-Length: +${n}\r\n\r\n${body}`,
+    '1e3': `Content-Length: 1e3\r\n\r\n${body}`,
+    'a tab': `Content-Length:\t${n}\r\n\r\n${body}`,
+    'LF-only header': `Content-Length: ${n}\n\n${body}`,
+    'extra bytes after a body': `Content-Length: ${n}\r\n\r\n${body}}}}`,
+  };
+  for (const [what, wire] of Object.entries(bad)) {
+    const c = new Raw();
+    try {
+      let r = await c.request('initialize', { adapterID: 'alp85' });
+      assert.equal(r.success, true, what);
+      const refused = c.refusal();
+      c.bytes(wire);
+      await refused;
+      r = await c.request('threads', {});
+      assert.equal(r.success, true, what);
+      r = await c.request('threads', {});
+      assert.equal(r.success, true, what);
+      r = await c.request('disconnect', {});
+      assert.equal(r.success, true, what);
+      assert.deepEqual(await c.exit, { code: 0, signal: null }, what);
+      assert.equal(c.messages.filter((m) => m.type === 'response' && m.request_seq === 0).length, 1, `${what}: one error response`);
+    } finally {
+      c.proc.kill();
+    }
   }
 });
