@@ -40,6 +40,8 @@ public:
     Adapter(const Adapter&) = delete;
     Adapter& operator=(const Adapter&) = delete;
 
+    // The requests it answers ("initialize", "launch", ...), for clients that test it.
+    static std::vector<std::string_view> commands();
     // One message body from the client, answered whatever it holds.
     void receive(std::string_view body);
     // A frame whose header could not be read: an error response (request_seq 0).
@@ -57,7 +59,7 @@ private:
 
     // ---- messages (adapter.cpp) --------------------------------------------------------------
     void dispatch(const Json& request);
-    void respond(const Json& request, Json body);
+    void respond(std::int64_t request_seq, std::string_view command, Json body);
     void error_response(std::int64_t request_seq, std::string_view command, const std::string& message);
     void event(std::string_view name, Json body = Json::object());
     void output(std::string_view category, const std::string& text);
