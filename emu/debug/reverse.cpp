@@ -152,6 +152,7 @@ Stop Debugger::reverse_continue() {
         replay(*c, hit.t, nullptr, nullptr);
         Stop s = here(hit.reason);
         s.number = hit.number;
+        s.numbers = hit.numbers;
         s.changes = hit.changes;
         s.data = hit.data;
         s.after = hit.after;

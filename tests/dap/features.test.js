@@ -286,3 +286,35 @@ test('over TCP: paced to the board clock, pause, restart, terminate', async () =
     server.kill();
   }
 });
+
+// Two breakpoints at one address (a source line and a function breakpoint on its label): a stop
+// there names both, going forward and going back (reverseContinue replays the history to the
+// last position where breakpoints stop, and every breakpoint at that position stopped it).
+test('reverseContinue names every breakpoint at the address, as a forward stop does', async () => {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'alp85-dap-'));
+  const src = path.join(dir, 'twice.asm');
+  fs.writeFileSync(src, '        ORG     0800H\nSTART:  LXI     SP,2000H\nLOOP:   CALL    SUB\n        JMP     LOOP\nSUB:    INR     A\n        RET\n        END     START\n');
+  const dc = await started({ program: src, monitor: false, realTime: false, stopOnEntry: true });
+  try {
+    await stopAfter(dc, dc.configurationDoneRequest());
+    const line = (await dc.setBreakpointsRequest({ source: { path: src }, breakpoints: [{ line: 5 }] })).body.breakpoints[0];
+    const fn = (await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'SUB' }] })).body.breakpoints[0];
+    assert.ok(line.verified && fn.verified);
+    const both = [line.id, fn.id].sort((a, b) => a - b);
+    const ids = (stop) => [...(stop.hitBreakpointIds ?? [])].sort((a, b) => a - b);
+    let stop = await stopAfter(dc, dc.continueRequest({ threadId: 1 }));
+    assert.equal(stop.reason, 'breakpoint');
+    assert.deepEqual(ids(stop), both);
+    // The second time round (LOOP calls SUB again): both again; then back to the first.
+    stop = await stopAfter(dc, dc.continueRequest({ threadId: 1 }));
+    assert.deepEqual(ids(stop), both);
+    stop = await stopAfter(dc, dc.reverseContinueRequest({ threadId: 1 }));
+    assert.equal(stop.reason, 'breakpoint');
+    assert.equal((await top(dc)).line, 5);
+    assert.deepEqual(ids(stop), both);
+    await finished(dc);
+  } finally {
+    dc._adapterProcess.kill();
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+});
