@@ -276,10 +276,10 @@ std::optional<std::string> Adapter::begin_console_run(std::string_view line) {
         s = begin_console_step();
         run = run_;
     } else if (*name == "finish") {
-        if (!args.empty()) return std::nullopt;
+        if (!args.empty()) return std::nullopt;  // the console says why at once
         const auto frames = d.backtrace();
-        if (frames.size() > 1)
-            text = fmt::format("Run till exit from {} ({:04X}H)", frames[0].routine.value_or("??"), frames[0].pc);
+        if (frames.size() < 2) throw RequestError("no caller to return to: no return address on the stack");
+        text = fmt::format("Run till exit from {} ({:04X}H)", frames[0].routine.value_or("??"), frames[0].pc);
         s = d.begin_finish();
     } else if (*name == "until" || *name == "advance" || *name == "jump") {
         std::optional<std::uint16_t> to;

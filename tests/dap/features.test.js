@@ -335,9 +335,13 @@ test('the debug console\'s runs go on between messages: pause and disconnect are
     assert.equal(stop.reason, 'step');
     assert.equal((await top(dc)).instructionPointerReference, '0x0806');
 
+    // finish with no CALL on the stack: nothing to run to, an error at once.
+    let r = await dc.evaluateRequest({ expression: 'finish', context: 'repl' }).catch((e) => e);
+    assert.match(String(r.message ?? r), /no caller/);
+
     // run 3000s: 3000 s of board time take seconds of host time; pause 0.5 s in.
     let t0 = Date.now();
-    let r = await dc.evaluateRequest({ expression: 'run 3000s', context: 'repl' });
+    r = await dc.evaluateRequest({ expression: 'run 3000s', context: 'repl' });
     assert.ok(Date.now() - t0 < 1000, `evaluate answered after ${Date.now() - t0} ms`);
     assert.match(r.body.result, /Running for 3000s/);
     await new Promise((res) => setTimeout(res, 500));
