@@ -45,6 +45,12 @@ const std::map<std::string, Adapter::Handler, std::less<>>& Adapter::handlers() 
     return table;
 }
 
+std::vector<std::string_view> Adapter::commands() {
+    std::vector<std::string_view> out;
+    for (const auto& [name, handler] : handlers()) out.push_back(name);
+    return out;
+}
+
 void Adapter::receive(std::string_view body) {
     const Json msg = Json::parse(body, nullptr, /*allow_exceptions=*/false);
     if (msg.is_discarded()) {
@@ -65,12 +71,24 @@ void Adapter::receive(std::string_view body) {
 void Adapter::refuse_frame(const std::string& why) { error_response(0, "", "unreadable message: " + why); }
 
 void Adapter::dispatch(const Json& request) {
-    const std::int64_t seq = request.contains("seq") && request["seq"].is_number_integer() ? request["seq"].get<std::int64_t>() : 0;
+    // The fields every request has, checked before anything reads them: a wrong type is this
+    // request's error response, never an exception out of the adapter.
+    const bool seq_ok = request.contains("seq") && request["seq"].is_number_integer() &&
+                        (!request["seq"].is_number_unsigned() || request["seq"].get<std::uint64_t>() <= INT64_MAX);
+    const std::int64_t seq = seq_ok ? request["seq"].get<std::int64_t>() : 0;
     if (!request.contains("command") || !request["command"].is_string()) {
-        error_response(seq, "", "a request without \"command\"");
+        error_response(seq, "", request.contains("command") ? "\"command\" must be a string" : "a request without \"command\"");
         return;
     }
     const std::string command = request["command"].get<std::string>();
+    if (!seq_ok) {  // its response could not name the request it answers
+        error_response(0, command, "\"seq\" must be an integer (the request's number)");
+        return;
+    }
+    if (request.contains("arguments") && !request["arguments"].is_object() && !request["arguments"].is_null()) {
+        error_response(seq, command, "\"arguments\" must be an object");
+        return;
+    }
     const auto it = handlers().find(command);
     if (it == handlers().end()) {
         error_response(seq, command, fmt::format("unknown request '{}'", command));
@@ -81,7 +99,7 @@ void Adapter::dispatch(const Json& request) {
         return;
     }
     static const Json kNoArgs = Json::object();
-    const Json& args = request.contains("arguments") ? request["arguments"] : kNoArgs;
+    const Json& args = request.contains("arguments") && request["arguments"].is_object() ? request["arguments"] : kNoArgs;
     Json body = Json::object();
     in_request_ = true;
     struct Flush {  // events raised while handling go out after the response
@@ -97,6 +115,8 @@ void Adapter::dispatch(const Json& request) {
         }
     } flush{*this};
     try {
+        check_common(args);
+        if (const auto src = args.find("source"); src != args.end() && src->is_object()) check_common(*src);
         (this->*(it->second))(args, body);
     } catch (const RequestError& e) {
         error_response(seq, command, e.what());
@@ -108,15 +128,15 @@ void Adapter::dispatch(const Json& request) {
         error_response(seq, command, e.what());
         return;
     }
-    respond(request, std::move(body));
+    respond(seq, command, std::move(body));
 }
 
-void Adapter::respond(const Json& request, Json body) {
+void Adapter::respond(std::int64_t request_seq, std::string_view command, Json body) {
     Json r = {{"seq", seq_++},
               {"type", "response"},
-              {"request_seq", request.value("seq", 0)},
+              {"request_seq", request_seq},
               {"success", true},
-              {"command", request.value("command", "")}};
+              {"command", command}};
     if (!body.empty()) r["body"] = std::move(body);
     sink_(r);
 }

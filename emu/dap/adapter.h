@@ -40,6 +40,8 @@ public:
     Adapter(const Adapter&) = delete;
     Adapter& operator=(const Adapter&) = delete;
 
+    // The requests it answers ("initialize", "launch", ...), for clients that test it.
+    static std::vector<std::string_view> commands();
     // One message body from the client, answered whatever it holds.
     void receive(std::string_view body);
     // A frame whose header could not be read: an error response (request_seq 0).
@@ -47,7 +49,7 @@ public:
     // While a run is in progress: runs one slice. Returns how long (ms) the caller may wait for
     // messages before the next slice: 0 to go on at once, more when pacing to real time.
     int advance();
-    bool running() const { return session_ && session_->debugger().running(); }
+    bool running() const { return session_ && (session_->debugger().running() || run_.steps_left > 0); }
     // Called between slices of a long reverse run (Debugger::set_poll): the server reads the
     // messages that came meanwhile there, keeps them for after the run, and on a `pause`
     // calls interrupt(), which ends the run.
@@ -67,7 +69,7 @@ private:
 
     // ---- messages (adapter.cpp) --------------------------------------------------------------
     void dispatch(const Json& request);
-    void respond(const Json& request, Json body);
+    void respond(std::int64_t request_seq, std::string_view command, Json body);
     void error_response(std::int64_t request_seq, std::string_view command, const std::string& message);
     void event(std::string_view name, Json body = Json::object());
     void output(std::string_view category, const std::string& text);
@@ -98,7 +100,9 @@ private:
     void resolve(Breakpoint& b, const std::string& path);
     bool check_options(Breakpoint& b);  // condition and hit condition; false: unverified, says why
     Json breakpoint_json(const Breakpoint& b, const std::string& path) const;
-    void report(const debug::Stop& s, std::string_view step_reason);  // a finished step or reverse run
+    // A finished step or reverse run as a stopped event; `tell`: with the output that says why
+    // (a halt, a runaway), which the console's own report of a stop already holds.
+    void report(const debug::Stop& s, std::string_view step_reason, bool tell = true);
 
     // ---- running (run.cpp) ---------------------------------------------------------------------
     void continue_(const Json& args, Json& body);
@@ -114,6 +118,16 @@ private:
     void stopped(std::string_view reason, const std::string& description = {}, std::vector<int> hit_ids = {},
                  const std::string& text = {});
     void started(std::optional<debug::Stop> s, std::string_view step_reason);
+    // A run (or one step of a console's `step N`) stopped at `s`: the run's end, reported (the
+    // text the console shows for it, for a run begun in the console), or nullopt when `step N`
+    // goes on with its next step.
+    std::optional<std::string> ended(const debug::Stop& s);
+    // A debug console line that runs the machine forward (continue, step, next, stepi, nexti,
+    // finish, until, advance, jump, run TIME) begun as a resumable run, as the continue request's
+    // are: the text to answer with; nullopt when the line is none of these (or one the console
+    // refuses, which it says why at once).
+    std::optional<std::string> begin_console_run(std::string_view line);
+    std::optional<debug::Stop> begin_console_step();  // the next step of `step N`, `next N`, `stepi N`
 
     // ---- state (state.cpp) ---------------------------------------------------------------------
     void threads(const Json& args, Json& body);
@@ -160,7 +174,16 @@ private:
         std::string step_reason = "step";
         std::uint64_t started_at = 0;  // machine time at the start
         double host_start = 0;         // host seconds at the start
+        // Begun in the debug console: as fast as the host can (as `alp85 debug` runs it), its end
+        // told as the console tells it, and the stop's console commands run.
+        bool console = false;
+        bool timed = false;            // run TIME: reaching the time is its end, not a pause
+        enum class Step : std::uint8_t { Line, Over, Instruction } step = Step::Line;
+        int steps_left = 0;            // step N: steps still to begin after the one under way
     } run_;
+    // Stops' console commands that run the machine again, nested (ended -> begin_console_run).
+    static constexpr int kMaxCommandsDepth = 16;
+    int commands_depth_ = 0;
 };
 
 }  // namespace alp85::dap

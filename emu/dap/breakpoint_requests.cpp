@@ -153,7 +153,7 @@ void Adapter::set_breakpoints(const Json& args, Json& body) {
     const Json& src = opt_object(args, "source");
     const std::string path = need_string(src, "path");
     std::vector<Breakpoint> list;
-    for (const Json& spec : opt_array(args, "breakpoints")) {
+    for (const Json& spec : opt_objects(args, "breakpoints")) {
         Breakpoint b;
         b.id = bps_.next_id++;
         b.line = need_line(spec, "line", lines_start_at_1_);
@@ -173,7 +173,7 @@ void Adapter::set_breakpoints(const Json& args, Json& body) {
 void Adapter::set_function_breakpoints(const Json& args, Json& body) {
     std::vector<Breakpoint> list;
     Json out = Json::array();
-    for (const Json& spec : opt_array(args, "breakpoints")) {
+    for (const Json& spec : opt_objects(args, "breakpoints")) {
         Breakpoint b;
         b.id = bps_.next_id++;
         b.name = need_string(spec, "name");
@@ -200,7 +200,7 @@ void Adapter::set_function_breakpoints(const Json& args, Json& body) {
 void Adapter::set_instruction_breakpoints(const Json& args, Json& body) {
     std::vector<Breakpoint> list;
     Json out = Json::array();
-    for (const Json& spec : opt_array(args, "breakpoints")) {
+    for (const Json& spec : opt_objects(args, "breakpoints")) {
         Breakpoint b;
         b.id = bps_.next_id++;
         b.name = need_string(spec, "instructionReference");
@@ -249,7 +249,7 @@ void Adapter::data_breakpoint_info(const Json& args, Json& body) {
 void Adapter::set_data_breakpoints(const Json& args, Json& body) {
     std::vector<DataBreakpoint> list;
     Json out = Json::array();
-    for (const Json& spec : opt_array(args, "breakpoints")) {
+    for (const Json& spec : opt_objects(args, "breakpoints")) {
         DataBreakpoint d;
         d.id = bps_.next_id++;
         d.data_id = need_string(spec, "dataId");

@@ -13,6 +13,9 @@ namespace alp85::dap {
 
 // One framed message taken from the input, or a header block that could not be read (then
 // `error` says why and `body` is empty: the adapter answers with an error response and goes on).
+// After a block that could not be read the reader resynchronises: the bytes up to the next
+// "Content-Length:" header (the refused frame's body, stray bytes) are dropped unread, so one bad
+// frame costs one error response and the frames after it are read as sent.
 struct Frame {
     std::string body;
     std::string error;
@@ -28,11 +31,15 @@ public:
     void feed(std::string_view bytes) { buffer_.append(bytes); }
     // The next complete frame, or nullopt until more bytes arrive.
     std::optional<Frame> next();
-    bool empty() const { return buffer_.empty() && skip_ == 0; }
+    std::size_t buffered() const { return buffer_.size(); }  // bytes kept for frames to come
 
 private:
+    std::optional<Frame> refuse(std::string why);  // the block at the front is unreadable
+    bool resynchronise();
+
     std::string buffer_;
     std::size_t skip_ = 0;  // bytes of a refused body still to drop
+    bool resync_ = false;   // dropping bytes up to the next Content-Length header
 };
 
 std::string frame(std::string_view body);  // "Content-Length: N\r\n\r\n" + body

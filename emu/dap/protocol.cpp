@@ -79,6 +79,51 @@ const Json& opt_object(const Json& args, std::string_view key) {
     return *v;
 }
 
+void check_common(const Json& args) {
+    if (!args.is_object()) return;
+    enum class Type { Integer, Boolean, String, Object, Array };
+    static const std::pair<std::string_view, Type> kTypes[] = {
+        {"threadId", Type::Integer}, {"frameId", Type::Integer}, {"line", Type::Integer}, {"column", Type::Integer},
+        {"endLine", Type::Integer}, {"endColumn", Type::Integer}, {"startFrame", Type::Integer},
+        {"levels", Type::Integer}, {"variablesReference", Type::Integer}, {"targetId", Type::Integer},
+        {"sourceReference", Type::Integer}, {"offset", Type::Integer}, {"count", Type::Integer},
+        {"instructionOffset", Type::Integer}, {"instructionCount", Type::Integer}, {"start", Type::Integer},
+        {"singleThread", Type::Boolean}, {"restart", Type::Boolean}, {"terminateDebuggee", Type::Boolean},
+        {"suspendDebuggee", Type::Boolean}, {"sourceModified", Type::Boolean}, {"resolveSymbols", Type::Boolean},
+        {"allowPartial", Type::Boolean}, {"linesStartAt1", Type::Boolean}, {"columnsStartAt1", Type::Boolean},
+        {"noDebug", Type::Boolean}, {"adapterID", Type::String}, {"clientID", Type::String},
+        {"clientName", Type::String}, {"locale", Type::String}, {"pathFormat", Type::String},
+        {"granularity", Type::String}, {"context", Type::String}, {"expression", Type::String},
+        {"name", Type::String}, {"value", Type::String}, {"path", Type::String}, {"memoryReference", Type::String},
+        {"data", Type::String}, {"condition", Type::String}, {"hitCondition", Type::String},
+        {"logMessage", Type::String}, {"instructionReference", Type::String}, {"dataId", Type::String},
+        {"accessType", Type::String}, {"source", Type::Object}, {"format", Type::Object},
+        {"breakpoints", Type::Array}, {"lines", Type::Array}, {"filters", Type::Array},
+        {"filterOptions", Type::Array}, {"exceptionOptions", Type::Array},
+    };
+    for (const auto& [key, type] : kTypes) {
+        switch (type) {
+            case Type::Integer: opt_int(args, key); break;
+            case Type::Boolean: opt_bool(args, key); break;
+            case Type::String: opt_string(args, key); break;
+            case Type::Object: opt_object(args, key); break;
+            case Type::Array: opt_array(args, key); break;
+        }
+    }
+    // initialize's capabilities of the client: supportsVariableType, supportsMemoryReferences, ...
+    for (const auto& [key, value] : args.items())
+        if (key.starts_with("supports") && !value.is_null() && !value.is_boolean()) wrong(key, "true or false");
+}
+
+const Json& opt_objects(const Json& args, std::string_view key) {
+    const Json& list = opt_array(args, key);
+    for (const Json& item : list) {
+        if (!item.is_object()) throw RequestError(fmt::format("argument '{}' must hold objects", key));
+        check_common(item);
+    }
+    return list;
+}
+
 std::string hex4(std::uint16_t v) { return fmt::format("0x{:04X}", v); }
 
 }  // namespace alp85::dap

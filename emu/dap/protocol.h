@@ -33,6 +33,14 @@ int need_line(const Json& args, std::string_view key, bool from_1);
 const Json& opt_array(const Json& args, std::string_view key);
 const Json& opt_object(const Json& args, std::string_view key);
 
+// The arguments DAP gives one type in every request and object that has them (threadId, frameId,
+// source, breakpoints, granularity, singleThread, supports..., ...): one of another type is a
+// RequestError naming it, also where the adapter has no use for it (threadId: there is one thread).
+// For `args` and the objects inside it the handlers read (a source, each breakpoint).
+void check_common(const Json& args);
+// args[key] as an array of objects, each checked as above (empty when absent).
+const Json& opt_objects(const Json& args, std::string_view key);
+
 std::string hex4(std::uint16_t v);  // "0x1B32": DAP's addresses and memory references
 
 }  // namespace alp85::dap

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "emu/dap/adapter.h"
+#include "emu/script/parser.h"
+#include "emu/util/text.h"
 
 namespace alp85::dap {
 namespace {
@@ -37,7 +39,7 @@ std::string changes_text(const debug::Stop& s) {
 
 void Adapter::require_stopped() {
     session();
-    if (session_->debugger().running()) throw RequestError("the program is running: pause it first");
+    if (running()) throw RequestError("the program is running: pause it first");
 }
 
 void Adapter::stopped(std::string_view reason, const std::string& description, std::vector<int> hit_ids,
@@ -51,6 +53,8 @@ void Adapter::stopped(std::string_view reason, const std::string& description, s
 
 // A run begun: reported now when it already ended, else resumed by advance().
 void Adapter::started(std::optional<debug::Stop> s, std::string_view step_reason) {
+    run_.console = false;
+    run_.steps_left = 0;
     if (s) {
         report(*s, step_reason);
         return;
@@ -61,7 +65,7 @@ void Adapter::started(std::optional<debug::Stop> s, std::string_view step_reason
 }
 
 // How a run ended, as a stopped event.
-void Adapter::report(const debug::Stop& s, std::string_view step_reason) {
+void Adapter::report(const debug::Stop& s, std::string_view step_reason, bool tell) {
     std::vector<int> ids;
     for (const int n : s.numbers.empty() ? std::vector<int>{s.number} : s.numbers)
         if (const auto it = engine_to_dap_.find(n); it != engine_to_dap_.end() &&
@@ -72,21 +76,21 @@ void Adapter::report(const debug::Stop& s, std::string_view step_reason) {
         case debug::StopReason::Watchpoint: stopped("data breakpoint", changes_text(s), ids); return;
         case debug::StopReason::Error: stopped("exception", s.message, {}, s.message); return;
         case debug::StopReason::Runaway:
-            output("stderr", s.message);
+            if (tell) output("stderr", s.message);
             stopped("exception", "runaway", {}, s.message);
             return;
         case debug::StopReason::Halted:
-            output("console", s.message);
+            if (tell) output("console", s.message);
             stopped("halted", s.message, {}, s.message);
             return;
         case debug::StopReason::Interrupted:
         case debug::StopReason::Paused: stopped("pause"); return;
         case debug::StopReason::Deadline:
-            if (!s.message.empty()) output("console", s.message);
+            if (tell && !s.message.empty()) output("console", s.message);
             stopped("pause", s.message);
             return;
         case debug::StopReason::HistoryStart:
-            output("console", s.message);
+            if (tell) output("console", s.message);
             stopped(step_reason, s.message);
             return;
         default: stopped(step_reason); return;
@@ -102,9 +106,10 @@ void Adapter::continue_(const Json&, Json& body) {
 
 void Adapter::pause(const Json&, Json&) {
     session();
-    debug::Debugger& d = session_->debugger();
-    if (!d.running()) return;  // already stopped: DAP asks for no error
-    report(d.pause(), "pause");
+    if (!running()) return;  // already stopped: DAP asks for no error
+    run_.steps_left = 0;  // step N: no more steps
+    const std::optional<std::string> text = ended(session_->debugger().pause());
+    if (text && !text->empty()) output("console", *text);
 }
 
 void Adapter::step_in(const Json& args, Json&) {
@@ -165,17 +170,178 @@ void Adapter::goto_(const Json& args, Json&) {
     stopped("goto");
 }
 
-int Adapter::advance() {
-    if (!session_ || !session_->debugger().running()) return -1;
-    Machine& m = machine();
-    debug::Budget budget;
-    if (config_.real_time) budget.tstates = kPacedSlice;
-    else budget.seconds = kUnpacedSeconds;
-    if (const auto s = session_->debugger().resume(budget)) {
-        report(*s, run_.step_reason);
-        return 0;
+std::optional<std::string> Adapter::ended(const debug::Stop& s) {
+    if (run_.steps_left > 0 && (s.reason == debug::StopReason::Step || s.reason == debug::StopReason::Finished))
+        return std::nullopt;
+    run_.steps_left = 0;
+    if (!run_.console) {
+        report(s, run_.step_reason);
+        return std::string();
     }
-    if (!config_.real_time) return 0;
+    run_.console = false;
+    if (run_.timed && s.reason == debug::StopReason::Deadline) {  // run TIME: done, as the console says nothing
+        stopped("step", "after the console command");
+        return std::string();
+    }
+    std::string text = shell_->console().describe(s);
+    // The stop's console commands (commands ... end), as the console runs them: one that runs
+    // the machine ends the list and is the next run, which reports its own stop.
+    bool again = false;
+    // A run that ends at once runs its stop's commands in turn: a bound on the nesting keeps a
+    // chain of them (a watch whose commands step into the next hit) from taking the stack.
+    if (commands_depth_ < kMaxCommandsDepth) {
+        ++commands_depth_;
+        for (const std::string& line : session_->debugger().commands_for(s)) {
+            try {
+                if (const auto begun = begin_console_run(line)) {
+                    text += *begun;
+                    again = true;
+                    break;
+                }
+            } catch (const RequestError& e) {
+                text += std::string(e.what()) + '\n';
+                continue;
+            }
+            capturing_ = true;
+            text += shell_->execute(line);
+            capturing_ = false;
+            captured_.clear();
+        }
+        --commands_depth_;
+    }
+    if (!again) report(s, "step", /*tell=*/false);
+    while (text.starts_with('\n')) text.erase(0, 1);
+    while (text.ends_with('\n')) text.pop_back();
+    return text;
+}
+
+std::optional<debug::Stop> Adapter::begin_console_step() {
+    debug::Debugger& d = session_->debugger();
+    --run_.steps_left;
+    switch (run_.step) {
+        case Run::Step::Line: return d.begin_step();
+        case Run::Step::Over: return d.begin_next();
+        case Run::Step::Instruction: return d.stepi();
+    }
+    return d.stepi();
+}
+
+namespace {
+
+// The first word of a console line, as the console splits it (at a blank or '/').
+std::string_view first_word(std::string_view s) {
+    std::size_t i = 0;
+    while (i < s.size() && s[i] != ' ' && s[i] != '\t' && s[i] != '/') ++i;
+    return s.substr(0, i);
+}
+
+}  // namespace
+
+std::optional<std::string> Adapter::begin_console_run(std::string_view line) {
+    debug::Console& console = shell_->console();
+    if (console.prompt() == ">") return std::nullopt;  // reading a breakpoint's commands: a line to keep
+    const std::string_view t = trim_blanks(line);
+    const std::string_view word = first_word(t);
+    const auto name = console.command_name(word);
+    if (!name) return std::nullopt;
+    const std::string_view args = trim_blanks(t.substr(word.size()));
+    // N of continue N, step N, ...: read as the console reads it; nullopt when it is no count
+    // (the console then says why).
+    const auto count = [&]() -> std::optional<int> {
+        if (args.empty()) return 1;
+        const auto n = parse_int(first_word(args));
+        if (!n || *n <= 0 || *n > 1'000'000) return std::nullopt;
+        return static_cast<int>(*n);
+    };
+    debug::Debugger& d = session_->debugger();
+    std::optional<debug::Stop> s;
+    std::string text;
+    Run run;
+    run.console = true;
+    if (*name == "continue") {
+        const auto n = count();
+        if (!n) return std::nullopt;
+        // gdb: continue N passes the breakpoint here N-1 more times.
+        if (!args.empty())
+            for (const debug::Breakpoint& b : d.breakpoints())
+                if (b.address == machine().cpu().regs().pc) d.set_ignore(b.number, static_cast<unsigned>(*n - 1));
+        text = "Continuing.";
+        s = d.begin_continue(~std::uint64_t{0});  // as the continue request: until a stop or a pause
+    } else if (*name == "step" || *name == "next" || *name == "nexti" || *name == "stepi") {
+        const auto n = count();
+        if (!n) return std::nullopt;
+        run.step = *name == "step" ? Run::Step::Line : *name == "stepi" ? Run::Step::Instruction : Run::Step::Over;
+        run.steps_left = *n;
+        run_ = run;
+        s = begin_console_step();
+        run = run_;
+    } else if (*name == "finish") {
+        if (!args.empty()) return std::nullopt;  // the console says why at once
+        const auto frames = d.backtrace();
+        if (frames.size() < 2) throw RequestError("no caller to return to: no return address on the stack");
+        text = fmt::format("Run till exit from {} ({:04X}H)", frames[0].routine.value_or("??"), frames[0].pc);
+        s = d.begin_finish();
+    } else if (*name == "until" || *name == "advance" || *name == "jump") {
+        std::optional<std::uint16_t> to;
+        if (!args.empty()) {
+            const auto loc = d.locate(args);
+            if (!loc.error.empty()) return std::nullopt;
+            to = loc.addresses.front();
+        } else if (*name != "until") {
+            return std::nullopt;
+        }
+        if (*name == "until") {
+            s = d.begin_until(to);
+        } else if (*name == "advance") {
+            s = d.begin_advance(*to);
+        } else {
+            machine().cpu().regs().pc = *to;
+            d.state_changed();  // the timeline changes here: history after now is another run's
+            const auto routine = d.program().routine_at(*to);
+            text = fmt::format("Continuing at {:04X}H{}.", *to, routine ? fmt::format(" ({})", *routine) : "");
+            s = d.begin_continue(~std::uint64_t{0});
+        }
+    } else if (*name == "run") {
+        std::string_view time = args;
+        if (to_upper(first_word(time)) == "FOR") time = trim_blanks(time.substr(3));
+        if (to_upper(first_word(time)) == "UNTIL") return std::nullopt;  // the command language's run until
+        const auto tstates = script::parse_time(time);
+        if (!tstates)
+            throw RequestError(fmt::format("bad time '{}' (a number with a unit: t, us, ms or s): run [for] TIME", time));
+        run.timed = true;
+        text = fmt::format("Running for {}.", time);
+        s = d.begin_continue(*tstates, /*stop_at_halt=*/false);  // as the console's run: HLT does not end it
+    } else {
+        return std::nullopt;
+    }
+    run.started_at = machine().now();
+    run.host_start = host_seconds();
+    run_ = run;
+    if (s) {
+        if (const auto told = ended(*s); told && !told->empty()) text += (text.empty() ? "" : "\n") + *told;
+    }
+    return text.empty() ? std::string("Running.") : text;
+}
+
+int Adapter::advance() {
+    if (!running()) return -1;
+    Machine& m = machine();
+    debug::Debugger& d = session_->debugger();
+    const bool paced = config_.real_time && !run_.console;  // the console's runs go as fast as they can
+    debug::Budget budget;
+    if (paced) budget.tstates = kPacedSlice;
+    else budget.seconds = kUnpacedSeconds;
+    const double slice_start = host_seconds();
+    for (;;) {
+        const std::optional<debug::Stop> s = d.running() ? d.resume(budget) : begin_console_step();
+        if (!s) break;  // the slice is over, or a step that lasts has begun
+        if (const auto text = ended(*s)) {
+            if (!text->empty()) output("console", *text);
+            return 0;
+        }
+        if (host_seconds() - slice_start >= kUnpacedSeconds) return 0;  // step N: the next steps in the next slice
+    }
+    if (!paced) return 0;
     // Paced: the board's 3.072 MHz against the host's clock since the run began.
     const double ahead = static_cast<double>(m.now() - run_.started_at) / board::kCpuHz -
                          (host_seconds() - run_.host_start);

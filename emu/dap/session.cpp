@@ -137,6 +137,8 @@ void Adapter::disconnect(const Json&, Json&) {
 
 void Adapter::terminate(const Json&, Json&) {
     if (session_) session_->debugger().pause();
+    run_.steps_left = 0;  // a console's step N ends too
+    run_.console = false;
     event("terminated");
 }
 

@@ -127,6 +127,11 @@ void Adapter::evaluate(const Json& args, Json& body) {
             return;
         }
     if (running()) throw RequestError("the program is running: pause it before a console command");
+    // A run (continue, step, run 3000s, ...) goes on between messages, as the continue request's.
+    if (auto text = begin_console_run(expression)) {
+        body = {{"result", *text}, {"variablesReference", 0}};
+        return;
+    }
     const std::uint64_t before = machine().now();
     const std::uint16_t pc = machine().cpu().regs().pc;
     const int errors = shell_->console().errors();

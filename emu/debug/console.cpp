@@ -138,6 +138,13 @@ const Console::CommandDef* Console::find_command(std::string_view word, std::str
     return found;
 }
 
+std::optional<std::string_view> Console::command_name(std::string_view word) const {
+    std::string err;
+    const CommandDef* c = find_command(word, err);
+    if (!c) return std::nullopt;
+    return c->name;
+}
+
 std::string Console::error(int col, std::string message) {
     ++errors_;
     const std::string where = origin_file_.empty() ? fmt::format("column {}", col)

@@ -58,6 +58,10 @@ public:
     std::vector<std::string> complete(std::string_view word, bool first_word, std::string_view command = {}) const;
     // What `alp85 debug` says when it starts at a terminal (as gdb's banner).
     std::string banner() const;
+    // The command a word names: its name for the name itself, an alias or a unique prefix ("c",
+    // "cont" -> "continue"); nullopt for none (or an ambiguous prefix). For front ends that run
+    // some commands their own way (DAP begins the runs as resumable ones).
+    std::optional<std::string_view> command_name(std::string_view word) const;
     // The stop as the console reports it (header, source line, displays); no commands run.
     std::string describe(const Stop& s);
     // What `info WHAT` shows (registers, a part by its name, axis, breakpoints, ...), for panes.

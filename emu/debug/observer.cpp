@@ -111,7 +111,7 @@ bool Debugger::Observer::check_breakpoint(const I8085& cpu) {
             }
         }
         if (hits) {  // re-execution: a position, nothing counted (a log point is no stop)
-            if (b.log_message.empty()) hits->push_back({t, StopReason::Breakpoint, b.number, {}, {}, {}, {b.number}});
+            if (b.log_message.empty()) stopping.push_back(b.number);
             continue;
         }
         if (b.ignore > 0) {
@@ -128,6 +128,10 @@ bool Debugger::Observer::check_breakpoint(const I8085& cpu) {
         stopping.push_back(b.number);
     }
     if (stopping.empty()) return false;
+    if (hits) {  // one position for all the breakpoints here, as a forward run's stop names them all
+        hits->push_back({t, StopReason::Breakpoint, stopping.front(), {}, {}, {}, stopping});
+        return false;
+    }
     stop_hit = Hit{t, StopReason::Breakpoint, stopping.front(), {}, {}, {}, stopping};
     return true;
 }

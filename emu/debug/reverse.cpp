@@ -230,6 +230,7 @@ Stop Debugger::reverse_continue() {
         if (!replay(*c, hit.t, nullptr, nullptr)) return interrupted_reverse();
         Stop s = here(hit.reason);
         s.number = hit.number;
+        s.numbers = hit.numbers;
         s.changes = hit.changes;
         s.data = hit.data;
         s.after = hit.after;

@@ -320,3 +320,99 @@ test('over TCP: paced to the board clock, pause, restart, terminate', async () =
     server.kill();
   }
 });
+
+// Two breakpoints at one address (a source line and a function breakpoint on its label): a stop
+// there names both, going forward and going back (reverseContinue replays the history to the
+// last position where breakpoints stop, and every breakpoint at that position stopped it).
+test('reverseContinue names every breakpoint at the address, as a forward stop does', async () => {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'alp85-dap-'));
+  const src = path.join(dir, 'twice.asm');
+  fs.writeFileSync(src, '        ORG     0800H\nSTART:  LXI     SP,2000H\nLOOP:   CALL    SUB\n        JMP     LOOP\nSUB:    INR     A\n        RET\n        END     START\n');
+  const dc = await started({ program: src, monitor: false, realTime: false, stopOnEntry: true });
+  try {
+    await stopAfter(dc, dc.configurationDoneRequest());
+    const line = (await dc.setBreakpointsRequest({ source: { path: src }, breakpoints: [{ line: 5 }] })).body.breakpoints[0];
+    const fn = (await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'SUB' }] })).body.breakpoints[0];
+    assert.ok(line.verified && fn.verified);
+    const both = [line.id, fn.id].sort((a, b) => a - b);
+    const ids = (stop) => [...(stop.hitBreakpointIds ?? [])].sort((a, b) => a - b);
+    let stop = await stopAfter(dc, dc.continueRequest({ threadId: 1 }));
+    assert.equal(stop.reason, 'breakpoint');
+    assert.deepEqual(ids(stop), both);
+    // The second time round (LOOP calls SUB again): both again; then back to the first.
+    stop = await stopAfter(dc, dc.continueRequest({ threadId: 1 }));
+    assert.deepEqual(ids(stop), both);
+    stop = await stopAfter(dc, dc.reverseContinueRequest({ threadId: 1 }));
+    assert.equal(stop.reason, 'breakpoint');
+    assert.equal((await top(dc)).line, 5);
+    assert.deepEqual(ids(stop), both);
+    await finished(dc);
+  } finally {
+    dc._adapterProcess.kill();
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+// A run typed in the debug console is a resumable run, as the continue request's: the evaluate is
+// answered at once, pause stops it within a slice (20 ms of host time), the machine's state can
+// not be asked for while it runs, and disconnect ends the session during one.
+test('the debug console\'s runs go on between messages: pause and disconnect are answered at once', async () => {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'alp85-dap-'));
+  const src = path.join(dir, 'spin.asm');
+  // 0800H MVI A,1 (2 bytes), 0802H MVI B,2, 0804H MVI C,3, 0806H HERE: JMP HERE.
+  fs.writeFileSync(src, '        ORG     0800H\nSTART:  MVI     A,1\n        MVI     B,2\n        MVI     C,3\nHERE:   JMP     HERE\n        END     START\n');
+  const dc = await started({ program: src, monitor: false, realTime: false, stopOnEntry: true });
+  try {
+    await stopAfter(dc, dc.configurationDoneRequest());
+    // stepi 3: three instructions, PC at HERE (0806H); told in the answer, with a stopped event.
+    let stop = await stopAfter(dc, dc.evaluateRequest({ expression: 'stepi 3', context: 'repl' }));
+    assert.equal(stop.reason, 'step');
+    assert.equal((await top(dc)).instructionPointerReference, '0x0806');
+
+    // finish with no CALL on the stack: nothing to run to, an error at once.
+    let r = await dc.evaluateRequest({ expression: 'finish', context: 'repl' }).catch((e) => e);
+    assert.match(String(r.message ?? r), /no caller/);
+
+    // run 3000s: 3000 s of board time take seconds of host time; pause 0.5 s in.
+    let t0 = Date.now();
+    r = await dc.evaluateRequest({ expression: 'run 3000s', context: 'repl' });
+    assert.ok(Date.now() - t0 < 1000, `evaluate answered after ${Date.now() - t0} ms`);
+    assert.match(r.body.result, /Running for 3000s/);
+    await new Promise((res) => setTimeout(res, 500));
+    r = await dc.customRequest('stackTrace', { threadId: 1 }).catch((e) => e);
+    assert.match(String(r.message ?? r), /running/);
+    t0 = Date.now();
+    stop = await stopAfter(dc, dc.pauseRequest({ threadId: 1 }));
+    const ms = Date.now() - t0;
+    assert.equal(stop.reason, 'pause');
+    assert.ok(ms < 1000, `pause answered after ${ms} ms`);
+    assert.equal((await top(dc)).instructionPointerReference, '0x0806');
+
+    // run 10ms ends by itself: 10 ms = 30720 T-states at 3.072 MHz, reported as a step.
+    stop = await stopAfter(dc, dc.evaluateRequest({ expression: 'run 10ms', context: 'repl' }));
+    assert.equal(stop.reason, 'step');
+
+    // continue typed in the console: a breakpoint at HERE ends it (the console's description
+    // is its output).
+    await dc.setBreakpointsRequest({ source: { path: src }, breakpoints: [{ line: 5 }] });
+    stop = await stopAfter(dc, dc.evaluateRequest({ expression: 'continue', context: 'repl' }));
+    assert.equal(stop.reason, 'breakpoint');
+    await dc.setBreakpointsRequest({ source: { path: src }, breakpoints: [] });
+    r = await dc.evaluateRequest({ expression: 'run for 1s', context: 'repl' });
+    assert.match(r.body.result, /Running for 1s/);
+    r = await dc.evaluateRequest({ expression: 'run 5 lightyears', context: 'repl' }).catch((e) => e);
+    assert.match(String(r.message ?? r), /running|bad time/);
+
+    // run 100000s, then disconnect: answered, and the adapter ends at once.
+    await dc.pauseRequest({ threadId: 1 });
+    r = await dc.evaluateRequest({ expression: 'run 100000s', context: 'repl' });
+    assert.match(r.body.result, /Running/);
+    t0 = Date.now();
+    await dc.disconnectRequest({});
+    assert.deepEqual(await dc.exited, { code: 0, signal: null });
+    assert.ok(Date.now() - t0 < 2000, `disconnect took ${Date.now() - t0} ms`);
+  } finally {
+    dc._adapterProcess.kill();
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+});

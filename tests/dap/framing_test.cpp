@@ -2,6 +2,9 @@
 // (the DAP specification's "Base Protocol"; RFC 4648's test vectors).
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "emu/dap/base64.h"
 #include "emu/dap/breakpoints.h"
 #include "emu/debug/debugger.h"
@@ -45,18 +48,71 @@ TEST(Framing, LengthIsInBytesNotCharacters) {
 
 TEST(Framing, BadHeadersAreReportedAndTheStreamGoesOn) {
     FrameReader r;
-    r.feed("Content-Length: 1x\r\n\r\n");
+    r.feed("X: y\r\n\r\n");
     auto f = r.next();
     ASSERT_TRUE(f);
-    EXPECT_NE(f->error.find("not a number"), std::string::npos);
-    r.feed("X: y\r\n\r\n");
+    EXPECT_NE(f->error.find("without Content-Length"), std::string::npos);
+    r.feed("Content-Length: 1x\r\n\r\n");
     f = r.next();
     ASSERT_TRUE(f);
-    EXPECT_NE(f->error.find("without Content-Length"), std::string::npos);
+    EXPECT_NE(f->error.find("not a number"), std::string::npos);
     r.feed(frame("{}"));
     f = r.next();
     ASSERT_TRUE(f);
     EXPECT_EQ(f->body, "{}");
+}
+
+// Everything the reader makes of `wire`: bodies as they are, errors as "!".
+std::vector<std::string> frames_of(const std::string& wire, bool byte_by_byte) {
+    FrameReader r;
+    std::vector<std::string> out;
+    auto take = [&] {
+        while (auto f = r.next()) out.push_back(f->error.empty() ? f->body : "!");
+    };
+    if (byte_by_byte) {
+        for (const char c : wire) {
+            r.feed(std::string(1, c));
+            take();
+        }
+    } else {
+        r.feed(wire);
+        take();
+    }
+    return out;
+}
+
+// A bad frame that has a body: one error, and the frames after it read as sent - the reader
+// drops the refused frame's body and anything else up to the next Content-Length header (the
+// DAP specification's "Base Protocol": a header block of "Content-Length: N" lines ended by
+// CR LF, a blank line, then N bytes). The body holds no "Content-Length:" of its own.
+TEST(Framing, AfterABadFrameWithABodyTheNextFramesAreReadAsSent) {
+    const std::string body = R"({"seq": 7, "type": "request", "command": "threads"})";
+    const std::string next1 = R"({"seq": 8, "type": "request", "command": "threads"})";
+    const std::string next2 = R"({"seq": 9, "type": "request", "command": "disconnect"})";
+    const std::string n = std::to_string(body.size());
+    const std::pair<const char*, std::string> bad[] = {
+        {"no Content-Length", "Content-Type: application/vscode-jsonrpc\r\n\r\n" + body},
+        {"abc", "Content-Length: abc\r\n\r\n" + body},
+        {"-5", "Content-Length: -5\r\n\r\n" + body},
+        {"+2", "Content-Length: +" + n + "\r\n\r\n" + body},
+        {"1e3", "Content-Length: 1e3\r\n\r\n" + body},
+        {"a tab", "Content-Length:\t" + n + "\r\n\r\n" + body},
+        {"a number and text", "Content-Length: " + n + " bytes\r\n\r\n" + body},
+        {"LF-only header", "Content-Length: " + n + "\n\n" + body},
+        {"CR LF then LF", "Content-Length: " + n + "\r\n\n" + body},
+        {"extra bytes after a body", frame(body) + "}}garbage"},
+        {"a lower-case header and extra bytes", "content-length: 2\r\n\r\n{}" + body},
+    };
+    for (const auto& [what, wire] : bad) {
+        for (const bool pieces : {false, true}) {
+            SCOPED_TRACE(std::string(what) + (pieces ? ", fed byte by byte" : ", fed at once"));
+            const auto got = frames_of(wire + frame(next1) + frame(next2), pieces);
+            std::vector<std::string> want = {"!", next1, next2};
+            if (std::string_view(what) == "extra bytes after a body") want = {body, "!", next1, next2};
+            if (std::string_view(what) == "a lower-case header and extra bytes") want = {"{}", "!", next1, next2};
+            EXPECT_EQ(got, want);
+        }
+    }
 }
 
 TEST(Framing, AnOversizedBodyIsSkippedNotKept) {
@@ -80,7 +136,17 @@ TEST(Framing, AHeaderThatNeverEndsIsDropped) {
     const auto f = r.next();
     ASSERT_TRUE(f);
     EXPECT_FALSE(f->error.empty());
-    EXPECT_TRUE(r.empty());
+    // What is kept is at most a "Content-Length:" cut short (15 bytes less one), however much comes.
+    EXPECT_LT(r.buffered(), 15u);
+    for (int i = 0; i < 100; ++i) {
+        r.feed(std::string(1000, 'a'));
+        EXPECT_FALSE(r.next());
+    }
+    EXPECT_LT(r.buffered(), 15u);
+    r.feed(frame("{}"));
+    const auto g = r.next();
+    ASSERT_TRUE(g);
+    EXPECT_EQ(g->body, "{}");
 }
 
 TEST(Base64, Rfc4648Vectors) {

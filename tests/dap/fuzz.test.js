@@ -144,10 +144,10 @@ test('malformed and out-of-order requests get error responses; the session goes 
     await c.refusal();
     c.frame('');
     await c.refusal();
-    c.bytes('Content-Length: twelve\r\n\r\n');
-    assert.match((await c.refusal()).message, /not a number/);
     c.bytes('X-Other: 1\r\n\r\n');
     assert.match((await c.refusal()).message, /without Content-Length/);
+    c.bytes('Content-Length: twelve\r\n\r\n');
+    assert.match((await c.refusal()).message, /not a number/);
     c.frame('\u0000\u0001\u00ff garbage \ud800');
     await c.refusal();
     r = await c.request(undefined, {});
@@ -220,5 +220,133 @@ test('an oversized frame is refused without reading it into memory, and the inpu
     assert.deepEqual(await c.exit, { code: 1, signal: null }); // input ended without a disconnect
   } finally {
     c.proc.kill();
+  }
+});
+
+// Every field of a request with a type of its own, given another: an error response each, and the
+// adapter goes on. A seq that is not an integer cannot be echoed: its response has request_seq 0.
+test('a request whose seq, command, arguments or argument has the wrong type gets an error response', { timeout: 60000 }, async () => {
+  const c = new Raw();
+  const nextResponse = () => c.until((m) => m.type === 'response', 'a response');
+  try {
+    const badSeqs = ['abc', null, '5', [], {}, true, 1.5, [1], undefined];
+    for (const command of ['initialize', 'threads', 'disconnect']) {
+      for (const seq of badSeqs) {
+        const r = nextResponse();
+        c.frame(JSON.stringify(seq === undefined ? { type: 'request', command } : { seq, type: 'request', command, arguments: {} }));
+        const m = await r;
+        assert.equal(m.success, false, `seq ${JSON.stringify(seq)}`);
+        assert.equal(m.request_seq, 0);
+        assert.match(m.message, /"seq" must be an integer/);
+      }
+    }
+    // An integer too large for a signed 64-bit number (2^64 - 1) cannot be echoed either.
+    {
+      const r = nextResponse();
+      c.frame('{"seq": 18446744073709551615, "type": "request", "command": "threads"}');
+      const m = await r;
+      assert.equal(m.request_seq, 0);
+      assert.match(m.message, /"seq" must be an integer/);
+    }
+    for (const command of [5, null, true, [], {}, ['threads']]) {
+      const r = nextResponse();
+      c.frame(JSON.stringify({ seq: 77, type: 'request', command }));
+      const m = await r;
+      assert.equal(m.success, false);
+      assert.equal(m.request_seq, 77);
+    }
+    for (const args of ['x', 5, true, [], [1, 2]]) {
+      const r = await c.request('threads', args);
+      assert.equal(r.success, false, JSON.stringify(args));
+      assert.match(r.message, /"arguments" must be an object/);
+    }
+    let r = await c.request('initialize', { adapterID: 'alp85' });
+    assert.equal(r.success, true);
+    r = await c.request('launch', { program: THESIS, defines: { FIXED: 1 }, realTime: false, stopOnEntry: true });
+    assert.equal(r.success, true);
+    r = await c.request('configurationDone', {});
+    assert.equal(r.success, true);
+    // Arguments of the wrong type, read or not by the adapter (there is one thread, but a threadId
+    // must be an integer all the same).
+    const wrong = [
+      ['setBreakpoints', { source: { path: THESIS }, breakpoints: 'line 5' }, /'breakpoints' must be an array/],
+      ['setBreakpoints', { source: { path: THESIS }, breakpoints: [5] }, /'breakpoints' must hold objects/],
+      ['setBreakpoints', { source: 'thesis.asm', breakpoints: [] }, /'source' must be an object/],
+      ['setBreakpoints', { source: { path: 5 }, breakpoints: [] }, /'path' must be a string/],
+      ['setBreakpoints', { source: { path: THESIS, sourceReference: 'x' }, breakpoints: [] }, /'sourceReference'/],
+      ['setBreakpoints', { source: { path: THESIS }, breakpoints: [{ line: 700, column: 'x' }] }, /'column'/],
+      ['setBreakpoints', { source: { path: THESIS }, breakpoints: [{ line: 700, condition: 5 }] }, /'condition'/],
+      ['setFunctionBreakpoints', { breakpoints: { name: 'OUT' } }, /'breakpoints' must be an array/],
+      ['setInstructionBreakpoints', { breakpoints: [null] }, /'breakpoints' must hold objects/],
+      ['setDataBreakpoints', { breakpoints: [{ dataId: 7 }] }, /'dataId'/],
+      ['setExceptionBreakpoints', { filters: 'runaway' }, /'filters' must be an array/],
+      ['next', { threadId: '1' }, /'threadId' must be an integer/],
+      ['stepIn', { threadId: 1, granularity: 3 }, /'granularity'/],
+      ['stepBack', { threadId: 1, singleThread: 'yes' }, /'singleThread'/],
+      ['stackTrace', { threadId: [] }, /'threadId'/],
+      ['stackTrace', { threadId: 1, levels: '20' }, /'levels'/],
+      ['scopes', { frameId: '1' }, /'frameId'/],
+      ['variables', { variablesReference: {} }, /'variablesReference'/],
+      ['evaluate', { expression: ['A'] }, /'expression'/],
+      ['evaluate', { expression: 'A', context: 1 }, /'context'/],
+      ['evaluate', { expression: 'A', frameId: 'top' }, /'frameId'/],
+      ['readMemory', { memoryReference: 4096, count: 4 }, /'memoryReference'/],
+      ['readMemory', { memoryReference: '0x1000', count: '4' }, /'count'/],
+      ['disassemble', { memoryReference: '0x0800', instructionCount: 2, resolveSymbols: 'no' }, /'resolveSymbols'/],
+      ['gotoTargets', { source: { path: THESIS }, line: '700' }, /'line'/],
+      ['goto', { threadId: 1, targetId: '0x801' }, /'targetId'/],
+      ['disconnect', { restart: 'no' }, /'restart'/],
+      ['disconnect', { terminateDebuggee: 1 }, /'terminateDebuggee'/],
+    ];
+    for (const [command, args, message] of wrong) {
+      r = await c.request(command, args);
+      assert.equal(r.success, false, `${command} ${JSON.stringify(args)}`);
+      assert.match(r.message, message, `${command} ${JSON.stringify(args)}`);
+    }
+    // Still alive: a request answered, then disconnect ends the session as it should.
+    r = await c.request('threads', {});
+    assert.equal(r.success, true);
+    r = await c.request('disconnect', {});
+    assert.equal(r.success, true);
+    assert.deepEqual(await c.exit, { code: 0, signal: null });
+  } finally {
+    c.proc.kill();
+  }
+});
+
+// One bad frame with a body costs one error response: the adapter drops its body (and any stray
+// bytes) up to the next Content-Length header and reads the frames after it as sent.
+test('after a bad frame with a body the adapter reads the next frames and disconnect ends it', { timeout: 60000 }, async () => {
+  const body = JSON.stringify({ seq: 5, type: 'request', command: 'threads' });
+  const n = Buffer.byteLength(body);
+  const bad = {
+    'no Content-Length': `X-Other: 1\r\n\r\n${body}`,
+    abc: `Content-Length: abc\r\n\r\n${body}`,
+    '-5': `Content-Length: -5\r\n\r\n${body}`,
+    '+2': `Content-Length: +${n}\r\n\r\n${body}`,
+    '1e3': `Content-Length: 1e3\r\n\r\n${body}`,
+    'a tab': `Content-Length:\t${n}\r\n\r\n${body}`,
+    'LF-only header': `Content-Length: ${n}\n\n${body}`,
+    'extra bytes after a body': `Content-Length: ${n}\r\n\r\n${body}}}}`,
+  };
+  for (const [what, wire] of Object.entries(bad)) {
+    const c = new Raw();
+    try {
+      let r = await c.request('initialize', { adapterID: 'alp85' });
+      assert.equal(r.success, true, what);
+      const refused = c.refusal();
+      c.bytes(wire);
+      await refused;
+      r = await c.request('threads', {});
+      assert.equal(r.success, true, what);
+      r = await c.request('threads', {});
+      assert.equal(r.success, true, what);
+      r = await c.request('disconnect', {});
+      assert.equal(r.success, true, what);
+      assert.deepEqual(await c.exit, { code: 0, signal: null }, what);
+      assert.equal(c.messages.filter((m) => m.type === 'response' && m.request_seq === 0).length, 1, `${what}: one error response`);
+    } finally {
+      c.proc.kill();
+    }
   }
 });
