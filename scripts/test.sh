@@ -26,7 +26,8 @@ configure() {  # build dir, extra cmake args...
   cmake -S . -B "$dir" -G Ninja -DALP85_WERROR=ON -DCMAKE_UNITY_BUILD=ON "$@" >/dev/null
 }
 
-echo "== release build of what ships, and its tests (build/)"
+phase() { echo "== $* (at ${SECONDS} s)"; }
+phase "release build of what ships, and its tests (build/)"
 configure build -DCMAKE_BUILD_TYPE=Release -DALP85_DOC_IMAGES=ON
 if [ $fast -eq 1 ]; then
   cmake --build build -j "$jobs"
@@ -34,11 +35,14 @@ if [ $fast -eq 1 ]; then
   exit 0
 fi
 cmake --build build -j "$jobs" --target shipped gui_pixels
+phase "release tests"
 (cd build && ctest --output-on-failure -j "$jobs" -L release)
 
-echo "== ASan + UBSan build and every other test (build-asan/)"
+phase "ASan + UBSan build and every other test (build-asan/)"
 # fontconfig's process-lifetime caches are not leaks of ours (tests/lsan.supp)
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 configure build-asan -DCMAKE_BUILD_TYPE=Release -DALP85_SANITIZE=ON -DALP85_BENCH=OFF
 cmake --build build-asan -j "$jobs"
+phase "ASan + UBSan tests"
 (cd build-asan && ctest --output-on-failure -j "$jobs")
+phase "done"
