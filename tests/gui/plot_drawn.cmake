@@ -2,20 +2,11 @@
 # 200 x 150 steps), not "nothing recorded to plot". The file is a PNG of the chart's default size,
 # 720 x 440 pixels (emu/plot/plot.h), read from its IHDR chunk (bytes 16-23, big-endian).
 #   cmake -DXVFB_RUN=... -DALP85=... -DWORK=dir -DSCRIPT=thesis_line.alp -P plot_drawn.cmake
-if(NOT XVFB_RUN)
-  message("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh does) to run the GUI tests")
-  return()
-endif()
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
-execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24" ${ALP85} gui --debug --speed max --script ${SCRIPT}
-                        --debug-command toolpath --debug-command click:controls.plot --debug-command frames:3
-                        --screenshot ${WORK}/shot.png
-                WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
-message("${out}")
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "alp85 gui exited with ${rc}: ${err}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/window.cmake)
+window_test_begin()
+window_run(1400x900x24 --debug --speed max --script ${SCRIPT}
+           --debug-command toolpath --debug-command click:controls.plot --debug-command frames:3
+           --screenshot ${WORK}/shot.png)
 if(NOT out MATCHES "toolpath: [1-9][0-9]* points")
   message(FATAL_ERROR "no toolpath was drawn to plot")
 endif()

@@ -3,18 +3,9 @@
 # clocks' rounding), and frames were drawn all along it, at least 30 a second (half of the 60
 # the frame clock aims at, for a loaded host).
 #   cmake -DXVFB_RUN=... -DALP85=... -DWORK=dir -DSCRIPT=thesis_line.alp -P real_time.cmake
-if(NOT XVFB_RUN)
-  message("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh does) to run the GUI tests")
-  return()
-endif()
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
-execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24" ${ALP85} gui --stats --script ${SCRIPT} --screenshot ${WORK}/shot.png
-                WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
-message("${out}")
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "alp85 gui exited with ${rc}: ${err}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/window.cmake)
+window_test_begin()
+window_run(1400x900x24 --stats --script ${SCRIPT} --screenshot ${WORK}/shot.png)
 if(NOT out MATCHES "PASS [^\n]*\\(([0-9]+) T-states\\) simulated")
   message(FATAL_ERROR "the script did not pass")
 endif()

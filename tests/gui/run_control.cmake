@@ -3,28 +3,17 @@
 # recorded, and a refused Restore leaves the drawn toolpath. Every button is clicked with
 # synthesized mouse events where it was drawn.
 #   cmake -DXVFB_RUN=... -DALP85=... -DWORK=dir -DSCRIPT=debug_enter.alp -P run_control.cmake
-if(NOT XVFB_RUN)
-  message("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh does) to run the GUI tests")
-  return()
-endif()
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include(${CMAKE_CURRENT_LIST_DIR}/window.cmake)
+window_test_begin()
 set(hooks
   "break OUT" "keydown EXEC"
   click:debug.continue frames:90 click:debug.continue frames:60 "info breakpoints"
   delete click:debug.continue frames:20 click:debug.continue frames:3 status
   click:controls.run frames:5 click:controls.record frames:40 toolpath
   click:controls.restore frames:2 toolpath click:controls.plot frames:3 status)
-set(args --debug --script ${SCRIPT})
-foreach(h IN LISTS hooks)
-  list(APPEND args --debug-command "${h}")
-endforeach()
-execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24" ${ALP85} gui ${args} --screenshot ${WORK}/shot.png
-                WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
-message("${out}")
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "alp85 gui exited with ${rc}: ${err}")
-endif()
+debug_commands(commands ${hooks})
+set(args --debug --script ${SCRIPT} ${commands})
+window_run(1400x900x24 ${args} --screenshot ${WORK}/shot.png)
 # Continue, Continue: two stops at OUT, the second on its next hit.
 string(REGEX MATCHALL "Breakpoint 1, OUT" hits "${out}")
 list(LENGTH hits n)

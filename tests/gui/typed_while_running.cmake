@@ -3,26 +3,15 @@
 # the step runs. The run is Continue with the thesis firmware waiting in its keyboard loop, so that
 # no breakpoint set here is reached.
 #   cmake -DXVFB_RUN=... -DALP85=... -DWORK=dir -DSCRIPT=debug_enter.alp -P typed_while_running.cmake
-if(NOT XVFB_RUN)
-  message("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh does) to run the GUI tests")
-  return()
-endif()
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include(${CMAKE_CURRENT_LIST_DIR}/window.cmake)
+window_test_begin()
 set(hooks
   click:debug.continue frames:5 status
   step "break OUT" "watch word[YAC]" "display word[XAC]" "info breakpoints" frames:2 status
   click:debug.continue frames:3 status step)
-set(args --debug --speed max --script ${SCRIPT})
-foreach(h IN LISTS hooks)
-  list(APPEND args --debug-command "${h}")
-endforeach()
-execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1400x900x24" ${ALP85} gui ${args} --screenshot ${WORK}/shot.png
-                WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
-message("${out}")
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "alp85 gui exited with ${rc}: ${err}")
-endif()
+debug_commands(commands ${hooks})
+set(args --debug --speed max --script ${SCRIPT} ${commands})
+window_run(1400x900x24 ${args} --screenshot ${WORK}/shot.png)
 string(REGEX MATCHALL "status: [a-z]+" statuses "${out}")
 if(NOT statuses STREQUAL "status: running;status: running;status: stopped")
   message(FATAL_ERROR "running, still running after the lines typed, stopped after Pause: got ${statuses}")

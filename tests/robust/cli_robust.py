@@ -14,52 +14,8 @@ import subprocess
 import sys
 import time
 
-BIN, WORK, CASE = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
-ALP85 = os.path.join(BIN, "alp85")
-ASM85 = os.path.join(BIN, "asm85")
-PISA_ASM = os.path.join(BIN, "pisa-asm")
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-failures = []
-
-
-def check(cond, what):
-    if not cond:
-        failures.append(what)
-        print("FAIL:", what)
-
-
-def run(args, cwd, stdin=None, env=None, timeout=120):
-    e = dict(os.environ)
-    e.pop("DISPLAY", None)  # gui: the checks come before any window
-    e.pop("WAYLAND_DISPLAY", None)
-    if env:
-        e.update(env)
-    p = subprocess.run(args, cwd=cwd, input=stdin, capture_output=True, text=True, env=e, timeout=timeout)
-    return p.returncode, p.stdout, p.stderr
-
-
-def fresh(name):
-    d = os.path.join(WORK, name)
-    shutil.rmtree(d, ignore_errors=True)
-    os.makedirs(d)
-    return d
-
-
-def write(d, name, text, mode="w"):
-    with open(os.path.join(d, name), mode) as f:
-        f.write(text)
-    return os.path.join(d, name)
-
-
-def snapshot(d):
-    """Every file in d with its bytes: what must not change."""
-    out = {}
-    for n in sorted(os.listdir(d)):
-        p = os.path.join(d, n)
-        if os.path.isfile(p) and not os.path.islink(p):
-            with open(p, "rb") as f:
-                out[n] = f.read()
-    return out
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from robust_harness import ALP85, ASM85, PISA_ASM, ROOT, check, fresh, run, run_case, snapshot, write  # noqa: E402
 
 
 PROGRAM = "\tORG 0800H\nSTART:\tMVI A,5\nLOOP:\tDCR A\n\tJNZ LOOP\n\tHLT\n\tEND START\n"  # 3E 05 3D C2 02 08 76
@@ -384,9 +340,5 @@ def max_time():
         check("--max-time" in out and "1h" in out, f"{cmd} --help does not give --max-time's default:\n{out}")
 
 
-{"determinism": determinism, "debug_commands": debug_commands, "max_time": max_time, "debug_expressions": debug_expressions, "same_path": same_path, "signals": signals, "bad_input": bad_input, "messages": messages, "disasm": disasm,
- "debug_interrupt": debug_interrupt}[CASE]()
-if failures:
-    print(f"{len(failures)} failure(s)")
-    sys.exit(1)
-print("ok")
+run_case({"determinism": determinism, "debug_commands": debug_commands, "max_time": max_time, "debug_expressions": debug_expressions, "same_path": same_path, "signals": signals, "bad_input": bad_input, "messages": messages, "disasm": disasm,
+ "debug_interrupt": debug_interrupt})

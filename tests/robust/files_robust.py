@@ -11,58 +11,13 @@ import json
 import os
 import resource
 import shutil
-import stat
 import subprocess
 import sys
 import threading
 import time
 
-BIN, WORK, CASE = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
-ALP85 = os.path.join(BIN, "alp85")
-ASM85 = os.path.join(BIN, "asm85")
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-failures = []
-
-
-def check(cond, what):
-    if not cond:
-        failures.append(what)
-        print("FAIL:", what)
-
-
-def run(args, cwd, stdin=None, timeout=60):
-    e = dict(os.environ)
-    e.pop("DISPLAY", None)  # gui: the checks come before any window
-    e.pop("WAYLAND_DISPLAY", None)
-    try:
-        p = subprocess.run(args, cwd=cwd, input=stdin, capture_output=True, text=True, env=e, timeout=timeout,
-                           errors="replace")
-    except subprocess.TimeoutExpired:
-        return None, "", f"timed out after {timeout} s"
-    return p.returncode, p.stdout, p.stderr
-
-
-def fresh(name):
-    d = os.path.join(WORK, name)
-    shutil.rmtree(d, ignore_errors=True)
-    os.makedirs(d)
-    return d
-
-
-def write(d, name, text, mode="w"):
-    with open(os.path.join(d, name), mode) as f:
-        f.write(text)
-    return os.path.join(d, name)
-
-
-def snapshot(d):
-    out = {}
-    for n in sorted(os.listdir(d)):
-        p = os.path.join(d, n)
-        if os.path.isfile(p) and not os.path.islink(p):
-            with open(p, "rb") as f:
-                out[n] = f.read()
-    return out
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from robust_harness import ALP85, ASM85, ROOT, check, fresh, run, run_case, snapshot, write  # noqa: E402
 
 
 # 3E 05 3D C2 02 08 76: a countdown that halts
@@ -377,9 +332,5 @@ def arguments():
             check(rc == 2 and "deeper than 16" in err, f"17 levels of include: exit {rc}: {err.strip()[:300]}")
 
 
-{"script_outputs": script_outputs, "dap_outputs": dap_outputs, "gui_outputs": gui_outputs, "unbounded": unbounded, "debug_script": debug_script,
- "fs_errors": fs_errors, "record_cap": record_cap, "arguments": arguments}[CASE]()
-if failures:
-    print(f"{len(failures)} failure(s)")
-    sys.exit(1)
-print("ok")
+run_case({"script_outputs": script_outputs, "dap_outputs": dap_outputs, "gui_outputs": gui_outputs, "unbounded": unbounded, "debug_script": debug_script,
+ "fs_errors": fs_errors, "record_cap": record_cap, "arguments": arguments})
