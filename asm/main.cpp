@@ -72,13 +72,6 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : kUsageError;  // --help is no error; not CLI11's codes (105, 106)
     }
-    // `-o ''` is a mistake (an unset variable), not a request for the default name.
-    for (const char* name : {"-o", "--bin", "--lst", "--map"})
-        if (app.count(name) > 0 && app.get_option(name)->as<std::string>().empty()) {
-            std::fprintf(stderr, "asm85: error: %s needs a file name; nothing written\n", name);
-            return kUsageError;
-        }
-
     // An output option given an empty name names no file: refused, not taken for "the default"
     // (-o '' would write SOURCE.hex) or "no output" (--lst '').
     const std::pair<const CLI::Option*, const std::string*> given[] = {
