@@ -222,7 +222,7 @@ void draw(const Chart& c, const std::string& path) {
     cairo_t* cr = surf.cr();
     const double left = 78, right = 18, top = 44, bottom = 56;
     double pw = c.width - left - right;
-    const double ph = c.height - top - bottom;
+    double ph = c.height - top - bottom;
     Range xr{}, yr{};
     auto scale = [&] {  // the data's ranges for a plot area pw wide
         xr = padded(x0, x1), yr = padded(y0, y1);
@@ -238,8 +238,10 @@ void draw(const Chart& c, const std::string& path) {
     auto Y = [&](double y) { return top + ph - (y - yr.lo) / (yr.hi - yr.lo) * ph; };
 
     // The legend's place: the corner asked for if no line or marker passes under it, else the
-    // first free corner, else beside the plot area, which then narrows (as Legend::Right always
-    // is). A legend never covers the data.
+    // first free corner, else outside the plot area: beside it, which then narrows (as
+    // Legend::Right always is), or, for a legend wider than a third of the area (long labels,
+    // which would squeeze the data into a strip), below the axis label, the area then shorter.
+    // A legend never covers the data.
     std::vector<const Series*> named;
     for (const auto& s : c.series)
         if (!s.label.empty()) named.push_back(&s);
@@ -290,11 +292,16 @@ void draw(const Chart& c, const std::string& path) {
                 }
             }
         }
-        if (!placed) {
+        if (!placed && (c.legend == L::Right || legend.w <= pw / 3)) {
             pw -= legend.w + 10;
             scale();
             legend.x = left + pw + 10;
             legend.y = c.legend == L::Right ? top + (ph - legend.h) / 2 : top;
+        } else if (!placed) {
+            ph -= legend.h + 8;
+            scale();
+            legend.x = std::max(8.0, left + (pw - legend.w) / 2);
+            legend.y = top + ph + bottom;
         }
     }
 
@@ -330,7 +337,7 @@ void draw(const Chart& c, const std::string& path) {
     cairo_rectangle(cr, left, top, pw, ph);
     cairo_stroke(cr);
     text(cr, c.title, c.width / 2.0, 12, 0.5, 0.0, 15, true);
-    text(cr, c.x_label, left + pw / 2, c.height - 8, 0.5, 1.0, 12);
+    text(cr, c.x_label, left + pw / 2, top + ph + bottom - 8, 0.5, 1.0, 12);  // under the ticks, above a legend below
     text(cr, c.y_label, 14, top + ph / 2, 0.5, 0.0, 12, false, -std::numbers::pi / 2);
 
     // Data, clipped to the plot area.

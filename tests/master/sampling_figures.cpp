@@ -119,10 +119,11 @@ int main(int argc, char** argv) {
             p10.points.push_back({f, (std::stod(cells[cl]) - std::stod(cells[cp])) / 6144});
             d10.points.push_back({f, std::stod(cells[cd]) / 6144});
         }
-        // an unnamed point at 0: the rate's axis from 0, the legend between the DDA and the sampling
+        // an unnamed point at 0: the rate's axis from 0
         const Series zero{"", {{d10.points.empty() ? 0.0 : d10.points.front().x, 0.0}}, false, false};
         f10.series = {l10, r10, j10, p10, d10, zero};
-        f10.legend = Chart::Legend::Right;  // beside the plot: the DDA runs along the bottom
+        // The legend where the plot puts it: a corner the lines leave free, else (its labels are
+        // long) below the axis label, so that the curves keep the picture's width.
         both(f10, out, "fig10");
     } catch (const std::exception& e) {
         std::fprintf(stderr, "sampling_figures: %s\n", e.what());

@@ -239,6 +239,31 @@ TEST(Plot, TheLegendNeverCoversTheData) {
         EXPECT_GE(box->x0, 0);
         EXPECT_LE(box->x1, 720);
     }
+    // The same with labels as long as Fig. 10's, wider than a third of the plot area: beside it
+    // they would squeeze the data into a strip, so the legend goes below, under the axis label,
+    // and the data keep the picture's width (the plot area spans x 78 to 702 of 720).
+    {
+        const auto p = scratch("corners-long.svg");
+        plot::write_time_series(p.string(), "Corners",
+                                {{"the square's outline, corner to corner and back to where it began", {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}}},
+                                 {"both of its diagonals, one after the other, lifted in between", {{0, 0}, {10, 10}, {plot::Point{NAN, NAN}}, {0, 10}, {10, 0}}}},
+                                "y");
+        const auto paths = svg_paths(slurp(p));
+        const auto box = legend_box(paths);
+        ASSERT_TRUE(box);
+        const auto lines = data_lines(paths);
+        EXPECT_EQ(points_under(lines, *box), 0) << "legend at " << box->x0 << "," << box->y0;
+        double lowest = 0, x_min = 720, x_max = 0;
+        for (const auto& l : lines)
+            for (const auto& part : l.parts)
+                for (const auto& pt : part) lowest = std::max(lowest, pt.y), x_min = std::min(x_min, pt.x), x_max = std::max(x_max, pt.x);
+        EXPECT_GT(box->y0, lowest + 20);  // below the data and the tick labels under them
+        EXPECT_LE(box->y1, 440);
+        EXPECT_GE(box->x0, 0);
+        EXPECT_LE(box->x1, 720);
+        EXPECT_LT(x_min, 110);  // the data still span the plot area (padded 4 % each side); beside, x_max would be ~290
+        EXPECT_GT(x_max, 670);
+    }
 }
 
 TEST(Plot, Errors) {
