@@ -61,7 +61,7 @@ cmake --build "$wasm_build"
 mkdir -p "$out"
 cp "$wasm_build/site/alp85.js" "$wasm_build/site/alp85.wasm" "$out/"
 cp web/index.html web/style.css web/main.js web/walkthrough.js web/favicon.svg "$out/"
-echo "web: build/web/ ready ($(du -k "$out/alp85.wasm" | cut -f1) KB of WebAssembly)"
+echo "web: $out ready ($(du -k "$out/alp85.wasm" | cut -f1) KB of WebAssembly)"
 
 if [ $serve -eq 1 ]; then
   echo "web: http://127.0.0.1:$port/  (Ctrl-C ends it)"
