@@ -2,7 +2,7 @@
 # Builds ALP85 (release) and its Debian package, build/alp85_<version>-1_<arch>.deb (CPack;
 # scripts/packaging/CMakeLists.txt, docs/install.md). Install it with
 #   sudo apt install ./build/alp85_*.deb
-# Run scripts/setup.sh once before (help2man for the man pages, dpkg-dev for the dependencies).
+# Run scripts/setup.sh --tests once before (help2man for the man pages, dpkg-dev for the dependencies).
 #   scripts/package.sh [--lintian]     --lintian: also check the package with lintian
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -24,7 +24,7 @@ while [ $# -gt 0 ]; do
 done
 
 if ! command -v emcmake >/dev/null 2>&1; then
-  echo "scripts/web.sh: emscripten is not installed; run scripts/setup.sh" >&2
+  echo "scripts/web.sh: emscripten is not installed; run scripts/setup.sh --tests" >&2
   exit 1
 fi
 # Debian's emscripten finds Debian's node-acorn only here.

@@ -2,7 +2,7 @@
 #   cmake -DXVFB_RUN=... -DALP85=... -DPIXELS=... -DSHOT=out.png -DGUI_ARGS="a;b" -DPIXEL_ARGS="c;d" -P run_gui_test.cmake
 # Prints "SKIP: xvfb-run is missing" (the test's SKIP_REGULAR_EXPRESSION) when there is no xvfb-run.
 if(NOT XVFB_RUN)
-  message("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh does) to run the GUI tests")
+  message("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh --tests does) to run the GUI tests")
   return()
 endif()
 file(REMOVE "${SHOT}")

@@ -39,7 +39,7 @@ def start_xvfb():
 
 def main():
     if not shutil.which("Xvfb"):
-        print("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh does) to run the GUI tests")
+        print("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh --tests does) to run the GUI tests")
         return 0
     xvfb, display = start_xvfb()
     try:

@@ -7,7 +7,7 @@
 # Macros, so that window_test_begin's return() ends the calling script.
 macro(window_test_begin)
   if(NOT XVFB_RUN)
-    message("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh does) to run the GUI tests")
+    message("SKIP: xvfb-run is missing: install xvfb (scripts/setup.sh --tests does) to run the GUI tests")
     return()
   endif()
   file(REMOVE_RECURSE "${WORK}")

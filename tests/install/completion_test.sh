@@ -23,7 +23,7 @@ if [ -f /usr/share/bash-completion/bash_completion ]; then
   echo "bash: gui -- offers $(wc -l <<<"$got") options, no test hook"
   checked=$((checked + 1))
 else
-  echo "bash not checked: bash-completion is not installed (scripts/setup.sh installs it)"
+  echo "bash not checked: bash-completion is not installed (scripts/setup.sh --tests installs it)"
 fi
 
 if command -v fish >/dev/null; then
@@ -38,6 +38,6 @@ if command -v fish >/dev/null; then
   echo "fish: gui -- offers $(wc -l <<<"$got") options, no test hook"
   checked=$((checked + 1))
 else
-  echo "fish not checked: fish is not installed (scripts/setup.sh installs it)"
+  echo "fish not checked: fish is not installed (scripts/setup.sh --tests installs it)"
 fi
 [ "$checked" -gt 0 ] || echo "SKIP: neither bash-completion nor fish is installed"

@@ -156,11 +156,11 @@ if [ -f /usr/share/bash-completion/bash_completion ]; then
   grep -qx -- --cpu <<<"$(complete_words asm85 --c)" || fail "completion: asm85 --cpu"
   [ "$(complete_words asm85 --cpu 8085 | sort | tr '\n' ' ')" = "8085 8085u " ] || fail "completion: asm85 --cpu 8085"
 else
-  fail "bash-completion is not installed (scripts/setup.sh installs it)"
+  fail "bash-completion is not installed (scripts/setup.sh --tests installs it)"
 fi
 
 step "fish completion"
-command -v fish >/dev/null || fail "fish is not installed (scripts/setup.sh installs it)"
+command -v fish >/dev/null || fail "fish is not installed (scripts/setup.sh --tests installs it)"
 fish_words() {  # the words fish would offer for the command line "$1" (alp85.fish loaded as fish does)
   (cd completion && fish --no-config -c "set fish_complete_path $usr/share/fish/vendor_completions.d; complete -C '$1'" | cut -f1 | sort | tr '\n' ' ')
 }

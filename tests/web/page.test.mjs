@@ -22,9 +22,9 @@ let puppeteer;
 try {
   puppeteer = (await import('puppeteer-core')).default;
 } catch {
-  fail('puppeteer-core is not installed in tests/web: run scripts/setup.sh');
+  fail('puppeteer-core is not installed in tests/web: run scripts/setup.sh --tests');
 }
-if (!existsSync(CHROMIUM)) fail(`no browser at ${CHROMIUM}: run scripts/setup.sh (it installs chromium)`);
+if (!existsSync(CHROMIUM)) fail(`no browser at ${CHROMIUM}: run scripts/setup.sh --tests (it installs chromium)`);
 if (!site || !existsSync(join(site, 'alp85.wasm'))) fail(`no built page in ${site}: run scripts/web.sh --build`);
 if (!alp85 || !existsSync(alp85)) fail('ALP85 must name the native alp85');
 
