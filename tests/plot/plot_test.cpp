@@ -159,6 +159,17 @@ std::vector<SvgPath> data_lines(const std::vector<SvgPath>& paths) {
     return out;
 }
 
+// A square's outline and both its diagonals, so that every corner of the plot area has data,
+// under the two labels given; the file written.
+std::filesystem::path corners(const char* file, const std::string& outline, const std::string& diagonals) {
+    const auto p = scratch(file);
+    plot::write_time_series(p.string(), "Corners",
+                            {{outline, {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}}},
+                             {diagonals, {{0, 0}, {10, 10}, {plot::Point{NAN, NAN}}, {0, 10}, {10, 0}}}},
+                            "y");
+    return p;
+}
+
 // How many points of the data's lines, walked a quarter of a unit at a time, lie inside `r`
 // grown by half the line's width (0.8): ink under the legend.
 int points_under(const std::vector<SvgPath>& lines, const Rect& r) {
@@ -227,12 +238,7 @@ TEST(Plot, TheLegendNeverCoversTheData) {
     // A square's outline and both diagonals: every corner of the plot area has data; the legend
     // goes beside it, still inside the picture.
     {
-        const auto p = scratch("corners.svg");
-        plot::write_time_series(p.string(), "Corners",
-                                {{"outline", {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}}},
-                                 {"diagonals", {{0, 0}, {10, 10}, {plot::Point{NAN, NAN}}, {0, 10}, {10, 0}}}},
-                                "y");
-        const auto paths = svg_paths(slurp(p));
+        const auto paths = svg_paths(slurp(corners("corners.svg", "outline", "diagonals")));
         const auto box = legend_box(paths);
         ASSERT_TRUE(box);
         EXPECT_EQ(points_under(data_lines(paths), *box), 0) << "legend at " << box->x0 << "," << box->y0;
@@ -243,12 +249,9 @@ TEST(Plot, TheLegendNeverCoversTheData) {
     // they would squeeze the data into a strip, so the legend goes below, under the axis label,
     // and the data keep the picture's width (the plot area spans x 78 to 702 of 720).
     {
-        const auto p = scratch("corners-long.svg");
-        plot::write_time_series(p.string(), "Corners",
-                                {{"the square's outline, corner to corner and back to where it began", {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}}},
-                                 {"both of its diagonals, one after the other, lifted in between", {{0, 0}, {10, 10}, {plot::Point{NAN, NAN}}, {0, 10}, {10, 0}}}},
-                                "y");
-        const auto paths = svg_paths(slurp(p));
+        const auto paths = svg_paths(slurp(corners("corners-long.svg",
+                                                   "the square's outline, corner to corner and back to where it began",
+                                                   "both of its diagonals, one after the other, lifted in between")));
         const auto box = legend_box(paths);
         ASSERT_TRUE(box);
         const auto lines = data_lines(paths);
