@@ -9,12 +9,7 @@ checked=0
 
 if [ -f /usr/share/bash-completion/bash_completion ]; then
   complete_words() {  # the words bash would offer for the command line "$*"
-    bash -c '
-      source /usr/share/bash-completion/bash_completion
-      source "$1"; shift
-      COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); COMP_LINE="$*"; COMP_POINT=${#COMP_LINE}
-      _alp85
-      printf "%s\n" "${COMPREPLY[@]}"' _ "$src/scripts/packaging/completion/alp85.bash" "$@"
+    bash "$(dirname "$0")/complete_words.sh" "$src/scripts/packaging/completion/alp85.bash" "$@"
   }
   got=$(complete_words "$alp85" gui --)
   grep -qx -- --screenshot <<<"$got" || fail "bash: gui -- does not offer --screenshot: $got"

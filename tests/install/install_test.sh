@@ -135,12 +135,7 @@ done
 step "bash completion"
 if [ -f /usr/share/bash-completion/bash_completion ]; then
   complete_words() {  # the words bash would offer for the command line "$*"
-    bash -c '
-      source /usr/share/bash-completion/bash_completion
-      source "$1"; shift
-      COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); COMP_LINE="$*"; COMP_POINT=${#COMP_LINE}
-      _alp85
-      printf "%s\n" "${COMPREPLY[@]}"' _ "$usr/share/bash-completion/completions/alp85" "$@"
+    bash "$(dirname "$0")/complete_words.sh" "$usr/share/bash-completion/completions/alp85" "$@"
   }
   grep -qx script <<<"$(complete_words alp85 "")" || fail "completion: no command script"
   grep -qx -- --firmware <<<"$(complete_words alp85 run --f)" || fail "completion: no run --firmware"
