@@ -83,3 +83,61 @@ struct Description {
 std::string summary(const std::vector<Field>& fields);
 
 }  // namespace alp85::periph
+
+namespace alp85::periph {
+
+// What a part shows a logic analyzer: the levels on its pins and the quantities an oscilloscope
+// would measure (Part::pins). The names and their order are the part's and never change, so a
+// recorder reads the names once (naming()) and afterwards only the values, with no allocation:
+// levels() is called with the same names in the same order every time.
+class Pins {
+public:
+    enum class Kind : std::uint8_t {
+        Logic,  // a digital pin: '0', '1' or 'z' (not driven: an input, or a port line set as input)
+        Real,   // a quantity: a winding current in A, a rotor angle in degrees
+    };
+    struct Pin {
+        std::string scope;  // the part: "8155", "X" (an axis of the machine tool)
+        std::string name;   // "PA0", "TIMER_OUT", "PULSE" (no spaces: a VCD identifier)
+        Kind kind = Kind::Logic;
+        bool exact = true;  // its changes are seen at their T-state; false: at the sample clock
+    };
+
+    // The first call of a part's pins() lists the names; later ones only give values.
+    bool naming() const { return naming_; }
+    void set_naming(bool on) {
+        naming_ = on;
+        at_ = 0;
+    }
+    void scope(std::string_view s) { scope_ = s; }
+    void logic(std::string_view name, bool level, bool exact = true) { put(name, Kind::Logic, level ? '1' : '0', 0, exact); }
+    void undriven(std::string_view name, bool exact = true) { put(name, Kind::Logic, 'z', 0, exact); }
+    void real(std::string_view name, double value, bool exact = false) { put(name, Kind::Real, 0, value, exact); }
+
+    const std::vector<Pin>& list() const { return pins_; }
+    const std::vector<char>& levels() const { return levels_; }  // per pin: '0', '1', 'z' (Real: unused)
+    const std::vector<double>& reals() const { return reals_; }  // per pin (Logic: unused)
+    std::size_t size() const { return pins_.size(); }
+
+private:
+    void put(std::string_view name, Kind kind, char level, double value, bool exact) {
+        if (naming_) {
+            pins_.push_back({std::string(scope_), std::string(name), kind, exact});
+            levels_.push_back(level);
+            reals_.push_back(value);
+            return;
+        }
+        levels_[at_] = level;
+        reals_[at_] = value;
+        ++at_;
+    }
+
+    bool naming_ = true;
+    std::size_t at_ = 0;
+    std::string_view scope_;
+    std::vector<Pin> pins_;
+    std::vector<char> levels_;
+    std::vector<double> reals_;
+};
+
+}  // namespace alp85::periph

@@ -293,6 +293,25 @@ std::uint16_t I8155::peek_counter(std::uint64_t now) const {
     return s_.held_value;
 }
 
+void I8155::pins(Pins& p, std::uint64_t now) const {
+    (void)now;  // every pin changes at a write or a timer event, which the board is told of
+    static constexpr std::string_view kNames[3][8] = {{"PA0", "PA1", "PA2", "PA3", "PA4", "PA5", "PA6", "PA7"},
+                                                      {"PB0", "PB1", "PB2", "PB3", "PB4", "PB5", "PB6", "PB7"},
+                                                      {"PC0", "PC1", "PC2", "PC3", "PC4", "PC5", "", ""}};
+    p.scope("8155");
+    for (int i = 0; i < 3; ++i) {
+        const auto port = static_cast<Port>(i);
+        const std::uint8_t mask = port_output_mask(port), out = port_output(port);
+        for (int b = 0; b < (i == 2 ? 6 : 8); ++b) {
+            if (mask >> b & 1)
+                p.logic(kNames[i][b], out >> b & 1);
+            else
+                p.undriven(kNames[i][b]);
+        }
+    }
+    p.logic("TIMER_OUT", s_.timer_out);
+}
+
 void I8155::describe(Description& d) const {
     // Port C's modes as the data sheet's command register table names them (bits 3-2: 00 ALT1,
     // 11 ALT2, 01 ALT3, 10 ALT4) and its port control assignment says what the pins do.

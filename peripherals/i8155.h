@@ -124,6 +124,9 @@ public:
     // Part
     std::string_view name() const override { return "8155"; }
     void describe(Description& d) const override;
+    // PA0-7, PB0-7, PC0-5 (an input pin: 'z', this chip does not drive it) and TIMER OUT. TIMER IN
+    // is CLK OUT, one pulse per T-state: the recording's time base, not a pin of its own.
+    void pins(Pins& p, std::uint64_t now) const override;
     std::string_view tag() const override { return "8155"; }
     std::uint8_t state_version() const override { return 2; }
     void reset(std::uint64_t now) override;

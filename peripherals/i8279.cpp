@@ -95,6 +95,29 @@ std::uint8_t I8279::digit_output(unsigned position) const {
     return v;
 }
 
+bool I8279::blanking(std::uint64_t now) const {
+    return clk_at(std::max(now, s_.origin_t)) % kClocksPerDigit >= kClocksPerDigit - kBlankClocks;
+}
+
+void I8279::pins(Pins& p, std::uint64_t now) const {
+    p.scope("8279");
+    const std::uint8_t sl = scan_lines(now);
+    p.logic("SL0", sl & 1);
+    p.logic("SL1", sl & 2);
+    p.logic("SL2", sl & 4);
+    p.logic("SL3", sl & 8);
+    p.logic("BD", !blanking(now));
+    p.logic("IRQ", s_.irq);
+}
+
+std::uint64_t I8279::next_pin_change(std::uint64_t now) const {
+    // The next internal clock edge at which the scan moves on (a new digit) or blanking starts.
+    const std::uint64_t t = std::max(now, s_.origin_t);
+    const std::uint64_t c = clk_at(t), in_digit = c % kClocksPerDigit, blank_at = kClocksPerDigit - kBlankClocks;
+    const std::uint64_t next_clk = c - in_digit + (in_digit < blank_at ? blank_at : kClocksPerDigit);
+    return s_.origin_t + (next_clk - s_.origin_clk) * s_.prescaler;
+}
+
 void I8279::describe(Description& d) const {
     // The keyboard/display mode set command 000DDKKK (data sheet): DD display, KKK keyboard.
     static constexpr const char* kDisplay[] = {"8 digits, left entry", "16 digits, left entry", "8 digits, right entry",

@@ -130,6 +130,13 @@ public:
     // Part
     std::string_view name() const override { return "8279"; }
     void describe(Description& d) const override;
+    // SL0-3 (scan_lines), BD and IRQ. BD (blank display, active low) follows this model's digit
+    // time: low for its last kBlankClocks internal clocks (the 160 us blanking of the 640 us digit
+    // time at 100 kHz), high for the first 48; the segment outputs themselves are not pins here.
+    void pins(Pins& p, std::uint64_t now) const override;
+    std::uint64_t next_pin_change(std::uint64_t now) const override;
+    static constexpr unsigned kBlankClocks = 16;
+    bool blanking(std::uint64_t now) const;
     std::string_view tag() const override { return "8279"; }
     std::uint8_t state_version() const override { return 2; }
     void reset(std::uint64_t now) override;

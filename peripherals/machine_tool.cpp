@@ -210,6 +210,36 @@ MachineTool::Sense MachineTool::sense(Axis axis, std::uint64_t t) {
 
 std::int64_t MachineTool::commanded_steps(Axis axis) const { return s_.axes[idx(axis)].sequencer.count; }
 
+void MachineTool::pins(Pins& p, std::uint64_t now) const {
+    (void)now;  // the tool's views are at now(): the board advances it before reading
+    static constexpr std::string_view kAxis[kAxes] = {"X", "Y", "Z"};
+    for (int a = 0; a < kAxes; ++a) {
+        p.scope(kAxis[a]);
+        const AxisState& s = s_.axes[a];
+        p.logic("PULSE", s.sequencer.pulse);
+        p.logic("DIR", s.sequencer.direction);
+        const std::uint8_t ph = Sequencer::phases(s.sequencer);
+        p.logic("A", ph & Sequencer::kA);
+        p.logic("nA", ph & Sequencer::kAbar);
+        p.logic("B", ph & Sequencer::kB);
+        p.logic("nB", ph & Sequencer::kBbar);
+        // What sense() would give now, without its advance.
+        Transducer::State tr = s.transducer;
+        const bool physical = s_.model == MotorModel::Physical;
+        const StepperMotor::State m = physical ? motor_view(a) : s.motor;
+        if (physical && s_.feedback == Feedback::Scale) ax_[a].transducer.update(tr, position_mm(a, m));
+        const auto o = ax_[a].transducer.outputs(tr);
+        p.logic("COUNT", o.count, false);
+        p.logic("CDIR", o.direction, false);
+        p.real("IA", physical ? m.i[0] : 0.0);
+        p.real("InA", physical ? m.i[1] : 0.0);
+        p.real("IB", physical ? m.i[2] : 0.0);
+        p.real("InB", physical ? m.i[3] : 0.0);
+        p.real("ANGLE", physical ? m.theta * 180.0 / std::numbers::pi
+                                 : static_cast<double>(s.ideal_steps) * 360.0 / (4.0 * p_.axes[a].motor.rotor_teeth));
+    }
+}
+
 void MachineTool::describe(Description& d) const {
     d.title = "machine tool (3 axes: sequencer, stepping motor, table, transducer)";
     d.add(Field::note("motors", s_.model == MotorModel::Ideal ? "ideal" : "physical"));

@@ -106,6 +106,12 @@ public:
     // Part
     std::string_view name() const override { return "machine tool"; }
     void describe(Description& d) const override;
+    // Per axis (scope "X", "Y", "Z"): PULSE and DIR (the sequencer's inputs), A, nA, B, nB (its
+    // phase drives, 1 = transistor on), COUNT and CDIR (the transducer's outputs to port B), and as
+    // quantities the four half-winding currents IA, InA, IB, InB (A) and the rotor angle ANGLE
+    // (degrees from power-on), all at now(). The transducer's outputs and the quantities move with
+    // the physics between the board's accesses: a recorder samples them.
+    void pins(Pins& p, std::uint64_t now) const override;
     std::string_view tag() const override { return "TOOL"; }
     std::uint8_t state_version() const override { return 2; }
     void reset(std::uint64_t now) override { advance(now); }

@@ -33,6 +33,13 @@ public:
     // Its registers, fields and their meanings for every debugger front end (description.h);
     // a part without registers leaves it empty. Never changes the part.
     virtual void describe(Description& d) const { (void)d; }
+    // Its pins' levels at `now` (not before now(): a lazy part computes what it can, the others
+    // show their state at now()) for a logic analyzer (description.h, Pins); a part without pins
+    // of interest gives none. Never changes the part.
+    virtual void pins(Pins& p, std::uint64_t now) const { (void)p, (void)now; }
+    // The next T-state after `now` at which a pin changes by itself without the CPU or a callback
+    // telling the board (the 8279's scan lines): a recorder wakes there. kNever: none.
+    virtual std::uint64_t next_pin_change(std::uint64_t now) const { (void)now; return kNever; }
     // The snapshot section that holds this part's state: exactly four characters, and the
     // version of that state's layout (bump it when the field list changes).
     virtual std::string_view tag() const = 0;

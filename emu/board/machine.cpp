@@ -122,7 +122,10 @@ void Machine::wire() {
             case board::Device::Kdc8279: chip_ports_.push_back(std::make_unique<ChipPorts<periph::I8279>>(kdc_, cpu_, r)); break;
             case board::Device::Rio8155:
                 chip_ports_.push_back(
-                    std::make_unique<ChipPorts<periph::I8155>>(rio_, cpu_, r, [this](std::uint64_t t) { drive_tool(t); }));
+                    std::make_unique<ChipPorts<periph::I8155>>(rio_, cpu_, r, [this](std::uint64_t t) {
+                        drive_tool(t);
+                        probe_look(t);
+                    }));
                 break;
         }
         bus_.map_io(r.first, r.last, *chip_ports_.back());
@@ -131,9 +134,9 @@ void Machine::wire() {
     for (const board::Wire& w : board::kInterruptWiring) {
         const board::CpuPin pin = w.pin;
         switch (w.source) {
-            case board::Source::Irq8279: kdc_.on_irq([this, pin](bool level, std::uint64_t) { drive(pin, level); }); break;
+            case board::Source::Irq8279: kdc_.on_irq([this, pin](bool level, std::uint64_t t) { drive(pin, level, t); }); break;
             case board::Source::TimerOut8155:
-                rio_.on_timer_out([this, pin](bool level, std::uint64_t) { drive(pin, level); });
+                rio_.on_timer_out([this, pin](bool level, std::uint64_t t) { drive(pin, level, t); });
                 break;
             case board::Source::VectIntrKey:
             case board::Source::ResetKey: break;
@@ -216,7 +219,7 @@ void Machine::sample(std::uint64_t t) {
     }
 }
 
-void Machine::drive(board::CpuPin pin, bool level) {
+void Machine::drive(board::CpuPin pin, bool level, std::uint64_t t) {
     switch (pin) {
         case board::CpuPin::Rst55: cpu_.set_rst55(level); break;
         case board::CpuPin::Trap: cpu_.set_trap(level); break;
@@ -225,6 +228,40 @@ void Machine::drive(board::CpuPin pin, bool level) {
             if (level) reset();
             break;
     }
+    probe_look(t);
+}
+
+void Machine::set_probe(PinProbe* probe) {
+    probe_ = probe;
+    // SIM changes SOD inside an instruction: seen at that instruction's first T-state.
+    if (probe)
+        cpu_.on_sod = [this](bool) { probe_look(cpu_.tstates()); };
+    else
+        cpu_.on_sod = nullptr;
+}
+
+void Machine::probe_clock(std::uint64_t t) {
+    while (probe_) {
+        const std::uint64_t at = probe_->next();
+        if (at > t) return;
+        for (periph::Part* p : parts_) p->advance(std::max(at, p->now()));
+        if (sampler_paused_) return;  // a debugger re-running the past: looked at the first time
+        probe_->look(at);
+        if (probe_->next() <= at) return;  // a probe must move on; never spin here
+    }
+}
+
+void Machine::cpu_pins(periph::Pins& p) const {
+    p.scope("8085");
+    p.logic("SOD", cpu_.sod());
+    p.logic("SID", cpu_.sid(), false);
+    p.logic("TRAP", cpu_.trap_pin());
+    p.logic("RST7_5", cpu_.rst75_pin());
+    p.logic("RST6_5", cpu_.rst65_pin());
+    p.logic("RST5_5", cpu_.rst55_pin());
+    p.logic("INTR", cpu_.intr_pin());
+    p.logic("INTA", true);
+    p.logic("HLT", cpu_.halted(), false);
 }
 
 void Machine::attach(periph::Part& part, IoDevice* io, std::uint8_t first, std::uint8_t last) {
@@ -321,8 +358,8 @@ void Machine::apply(const InputEvent& e) {
             kdc_.inputs_changed(t);
             break;
         }
-        case InputKind::VectIntr: drive(board::pin_of(board::Source::VectIntrKey), e.level); break;
-        case InputKind::Reset: drive(board::pin_of(board::Source::ResetKey), e.level); break;
+        case InputKind::VectIntr: drive(board::pin_of(board::Source::VectIntrKey), e.level, std::max(e.at, now())); break;
+        case InputKind::Reset: drive(board::pin_of(board::Source::ResetKey), e.level, std::max(e.at, now())); break;
     }
 }
 
@@ -347,6 +384,7 @@ Machine::RunEnd Machine::run_until(std::uint64_t until, const std::function<bool
         const std::uint64_t t = now();
         deliver_inputs(t);
         if (next_sample_ <= t) sample(t);
+        if (probe_) probe_clock(t);
         sync_parts(t);
         if (condition && condition()) return RunEnd::Condition;
         if (t >= until) return RunEnd::Deadline;

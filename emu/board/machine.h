@@ -57,6 +57,20 @@ public:
     virtual bool at_fence(const I8085& cpu) { return before_instruction(cpu); }
 };
 
+// A logic analyzer on the board's pins (Machine::set_probe). While none is installed the board
+// pays nothing for it: no call, and no look at the probe in the instruction loop.
+class PinProbe {
+public:
+    virtual ~PinProbe() = default;
+    // Pins may have changed at T-state t: a write to the 8155 (its ports, the sequencers' inputs
+    // and the phase drives follow at once), TIMER OUT, the 8279's IRQ, an interrupt line, SOD; or
+    // the probe's own clock reached t (next()), with every part advanced to t.
+    virtual void look(std::uint64_t t) = 0;
+    // The next T-state the probe wants to look at by itself (kNever: none): its sample clock, a
+    // part's next_pin_change.
+    virtual std::uint64_t next() const = 0;
+};
+
 class Machine {
 public:
     struct Options {
@@ -173,7 +187,14 @@ public:
     // Calls fn(t) at every multiple of `period` T-states while set (a recorder's sampling clock);
     // the batches end there. period 0 removes it.
     void set_sampler(std::uint64_t period, std::function<void(std::uint64_t t)> fn);
-    // While paused the sampler is not called (a debugger re-executing the past: those samples
+    // Installs a logic analyzer (nullptr removes it; it must outlive its installation); see PinProbe.
+    void set_probe(PinProbe* probe);
+    PinProbe* probe() const { return probe_; }
+    // The 8085's pins a logic analyzer shows (scope "8085"): SOD, SID, TRAP, RST7_5, RST6_5,
+    // RST5_5, INTR, INTA (active low: high, INTR is not wired on this board), HLT (the halt state,
+    // seen at instruction boundaries: sampled).
+    void cpu_pins(periph::Pins& p) const;
+    // While paused the sampler (and the probe) is not called (a debugger re-executing the past: those samples
     // were taken the first time).
     void pause_sampler(bool paused) { sampler_paused_ = paused; }
 
@@ -190,7 +211,7 @@ private:
     class Hooks;
 
     void wire();
-    void drive(board::CpuPin pin, bool level);
+    void drive(board::CpuPin pin, bool level, std::uint64_t t);
     void deliver_inputs(std::uint64_t now);
     void apply(const InputEvent& e);
     void sync_parts(std::uint64_t now) {
@@ -198,8 +219,13 @@ private:
     }
     std::uint64_t next_part_event() const {
         std::uint64_t next = next_sample_;
+        if (probe_) next = std::min(next, probe_->next());
         for (const periph::Part* p : parts_) next = std::min(next, p->next_event());
         return next;
+    }
+    void probe_clock(std::uint64_t t);
+    void probe_look(std::uint64_t t) {
+        if (probe_ && !sampler_paused_) probe_->look(t);
     }
     void drive_tool(std::uint64_t t);          // port A's pins to the sequencers
     std::uint8_t sense_tool(std::uint64_t t);  // the transducers to port B's pins
@@ -225,6 +251,7 @@ private:
     std::uint64_t next_sample_ = periph::Part::kNever;
     std::function<void(std::uint64_t)> sampler_;
     bool sampler_paused_ = false;
+    PinProbe* probe_ = nullptr;
     std::vector<periph::Part*> parts_;
 
     std::vector<std::unique_ptr<IoDevice>> chip_ports_;  // the chips' I/O decoding (board::kIoMap)

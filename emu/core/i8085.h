@@ -102,6 +102,13 @@ public:
     bool rst75_latched() const { return rst75_latch_; }
     bool trap_latched() const { return trap_latch_; }
     bool sod() const { return sod_; }
+    // The input pins' levels as last driven (a logic analyzer's view; the latches are above).
+    bool trap_pin() const { return trap_pin_; }
+    bool rst75_pin() const { return rst75_pin_; }
+    bool rst65_pin() const { return rst65_pin_; }
+    bool rst55_pin() const { return rst55_pin_; }
+    bool intr_pin() const { return intr_pin_; }
+    bool sid() const { return sid_; }
     bool hlda() const { return hlda_; }
     // What RIM would load into A now (without RIM's side effect on the TRAP-saved IE).
     std::uint8_t rim_value() const;

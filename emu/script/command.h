@@ -81,6 +81,8 @@ struct Command {
     double within = 0;                  // expect axis ... mm V within D
     std::int64_t integer = 0;           // steps, counts, lost steps
     std::uint64_t period = 0;           // record ... every T
+    bool signals = false;               // record signals FILE.vcd: the pins as a VCD (else the tool as CSV)
+    std::vector<Value> pins;            // record signals FILE.vcd PIN...: the pins chosen (text, col)
     std::optional<std::array<double, 4>> ideal_line;  // plot toolpath ... from X,Y to X,Y (mm)
 };
 
@@ -90,5 +92,6 @@ inline constexpr std::uint64_t kDefaultGap = kKeyGap;      // 30 ms
 inline constexpr std::uint64_t kDefaultUntil = 30'720'000;  // 10 s
 inline constexpr std::uint64_t kDefaultWait = 15'360'000;   // 5 s
 inline constexpr std::uint64_t kDefaultRecordPeriod = 768;  // 0.25 ms: a 400 steps/s axis, ten samples a step
+inline constexpr std::uint64_t kDefaultSignalPeriod = 96;   // 31.25 us: record signals' sample clock
 
 }  // namespace alp85::script

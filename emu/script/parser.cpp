@@ -382,8 +382,24 @@ private:
             return true;
         }
         c.op = Op::Record;
-        if (!string_operand(c.text, "a CSV file name (or 'stop')")) return false;
-        c.period = kDefaultRecordPeriod;
+        // record signals FILE.vcd [PIN...] [every T]; a CSV file named "signals" is `record "signals"`.
+        if (at_word("SIGNALS") && pos_ + 1 < tokens_.size()) {
+            ++pos_;
+            c.signals = true;
+            if (!string_operand(c.text, "a VCD file name")) return false;
+            c.period = kDefaultSignalPeriod;
+            while (more() && !at_word("EVERY")) {
+                if (peek().quoted) return fail(peek(), fmt::format("a pin name is a word, not a string: {}", peek().text)), false;
+                Value v;
+                v.text = peek().text;
+                v.col = peek().col;
+                c.pins.push_back(std::move(v));
+                ++pos_;
+            }
+        } else {
+            if (!string_operand(c.text, "a CSV file name, 'signals FILE.vcd' or 'stop'")) return false;
+            c.period = kDefaultRecordPeriod;
+        }
         if (at_word("EVERY")) {
             ++pos_;
             if (!time(c.period, "a sampling period")) return false;

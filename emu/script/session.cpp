@@ -233,7 +233,15 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 }
                 break;
             }
-            case Op::Record: recorded = true; break;
+            case Op::Record:
+                if (!c.signals) {
+                    recorded = true;
+                    break;
+                }
+                for (const Value& v : c.pins)
+                    if (const std::string why = debug::SignalRecorder::check_selection(*machine_, {v.text}); !why.empty())
+                        err(c, v.col, why);
+                break;
             case Op::Plot:
                 if (!recorded) err(c, c.where.col, "nothing recorded to plot: a 'record FILE.csv' must come first");
                 break;
@@ -531,9 +539,27 @@ Session::Outcome Session::write_recording() {
     return {};
 }
 
-Session::Outcome Session::finish() {
-    if (recorder_.recording()) return write_recording();
+Session::Outcome Session::write_signals() {
+    if (const std::string why = output_problem(signals_.path(), "record"); !why.empty()) {
+        signals_.abandon();
+        return fail(signals_command_, why);
+    }
+    try {
+        signals_.stop();
+    } catch (const std::exception& x) {
+        return fail(signals_command_, x.what());
+    }
     return {};
+}
+
+Session::Outcome Session::finish() {
+    Outcome o;
+    if (signals_.recording()) o = write_signals();
+    if (recorder_.recording()) {
+        const Outcome csv = write_recording();
+        if (o.status == Status::Ok) o = csv;
+    }
+    return o;
 }
 
 Session::Outcome Session::tool_command(const Command& c) {
@@ -594,6 +620,22 @@ Session::Outcome Session::tool_command(const Command& c) {
                                        compare_text(c.compare), c.integer, format_time(c.time), whole_steps(tool, axis)));
         }
         case Op::Record:
+            if (c.signals) {
+                if (signals_.recording()) {
+                    if (Outcome o = write_signals(); o.status != Status::Ok) return o;
+                }
+                const auto path = resolve_output(c.text);
+                if (const std::string why = output_problem(path, "record"); !why.empty()) return fail(c, why);
+                std::vector<std::string> pins;
+                for (const Value& v : c.pins) pins.push_back(v.text);
+                try {
+                    signals_.start(m, path, pins, c.period);
+                } catch (const std::exception& x) {
+                    return fail(c, x.what());
+                }
+                signals_command_ = c;
+                return {};
+            }
             if (recorder_.recording()) {
                 if (Outcome o = write_recording(); o.status != Status::Ok) return o;
             }
@@ -602,9 +644,18 @@ Session::Outcome Session::tool_command(const Command& c) {
             record_command_ = c;
             recorder_.start(m, c.period);
             return {};
-        case Op::RecordStop:
-            if (!recorder_.recording()) return fail(c, "no recording to stop (record FILE.csv starts one)");
-            return write_recording();
+        case Op::RecordStop: {
+            // Ends every recording running: the tool's CSV and the pins' VCD.
+            if (!recorder_.recording() && !signals_.recording())
+                return fail(c, "no recording to stop (record FILE.csv or record signals FILE.vcd starts one)");
+            Outcome o;
+            if (signals_.recording()) o = write_signals();
+            if (recorder_.recording()) {
+                const Outcome csv = write_recording();
+                if (o.status == Status::Ok) o = csv;
+            }
+            return o;
+        }
         case Op::Plot: {
             const auto& samples = recorder_.samples();
             if (samples.size() < 2) return fail(c, "nothing recorded to plot (record FILE.csv first, then run)");
@@ -682,6 +733,15 @@ Session::Outcome Session::record(const std::filesystem::path& csv, std::uint64_t
     c.period = period;
     return execute(c);
 }
+Session::Outcome Session::record_signals(const std::filesystem::path& vcd, const std::vector<std::string>& pins,
+                                         std::uint64_t period) {
+    Command c = typed(Op::Record, vcd.string());
+    c.signals = true;
+    c.period = period;
+    for (const std::string& p : pins) c.pins.push_back({{}, 0, 0, p});
+    return execute(c);
+}
+
 Session::Outcome Session::record_stop() { return execute(typed(Op::RecordStop)); }
 
 Session::Outcome Session::plot_toolpath(const std::filesystem::path& out) {

@@ -16,6 +16,7 @@
 #include "emu/program/image_loader.h"
 #include "emu/board/machine.h"
 #include "emu/debug/debugger.h"
+#include "emu/debug/signal_record.h"
 #include "emu/debug/tool_record.h"
 #include "emu/script/command.h"
 #include "emu/script/parser.h"
@@ -76,6 +77,9 @@ public:
     Outcome save(const std::filesystem::path& path);
     Outcome restore(const std::filesystem::path& path);
     Outcome record(const std::filesystem::path& csv, std::uint64_t period);
+    // record signals FILE.vcd [PIN...] [every T] (docs/signals.md): the pins as a VCD until record_stop.
+    Outcome record_signals(const std::filesystem::path& vcd, const std::vector<std::string>& pins,
+                           std::uint64_t period = kDefaultSignalPeriod);
     Outcome record_stop();
     Outcome plot_toolpath(const std::filesystem::path& out);
     Outcome set_motor(periph::MachineTool::MotorModel model);
@@ -147,6 +151,7 @@ private:
     Outcome expect(const Command& c);
     Outcome tool_command(const Command& c);
     Outcome write_recording();
+    Outcome write_signals();
     debug::Stop run_paced(std::uint64_t until, const std::function<bool()>& condition, const debug::Origin& o);
     std::string axes_text() const;
     std::uint16_t read_reg(Reg r) const;
@@ -158,6 +163,8 @@ private:
     std::filesystem::path out_dir_;
     std::optional<std::uint64_t> mark_;  // `mark`: the time `print time` also counts from
     debug::ToolRecorder recorder_;
+    debug::SignalRecorder signals_;
+    Command signals_command_;
     std::function<void(std::uint64_t)> pace_;
     std::uint64_t pace_slice_ = 0;
     std::filesystem::path record_path_;

@@ -1,0 +1,46 @@
+# Runs a script that records signals, then reads each VCD it wrote with sigrok-cli (Debian's
+# sigrok-cli, scripts/setup.sh --tests) and with vcd_pulses.py:
+#   -DALP85= -DSCRIPT= -DOUT= -DSIGROK= -DPYTHON= -DPULSES=vcd_pulses.py
+#   -DVCDS=a.vcd;b.vcd           the files the script writes (in OUT), all read by sigrok-cli
+#   -DCHECKS=a.vcd:PA0:3155:11;...   pin PIN of a.vcd: at least N high pulses, each T T-states long,
+#                                 in the file and in sigrok-cli's rewrite of it
+if(NOT SIGROK)
+  message(FATAL_ERROR "sigrok-cli is missing: scripts/setup.sh --tests installs it")
+endif()
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+execute_process(COMMAND ${ALP85} script ${SCRIPT} --out-dir ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "alp85 script ${SCRIPT}: exit ${rc}\n${out}${err}")
+endif()
+foreach(vcd ${VCDS})
+  if(NOT EXISTS ${OUT}/${vcd})
+    message(FATAL_ERROR "${SCRIPT} wrote no ${vcd}")
+  endif()
+  # sigrok 0.5 says what it could not read only in its debug log (it stops at the first line it
+  # cannot parse and still exits 0): read at log level 5 and refuse any such message.
+  # (downsample=32: a 32 ns grid, a tenth of a T-state, so widths still round to the exact T-states)
+  execute_process(COMMAND ${SIGROK} -l 5 -I vcd:downsample=32 -i ${OUT}/${vcd} -O vcd -o ${OUT}/${vcd}.sigrok.vcd
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "sigrok-cli could not read ${vcd}: exit ${rc}\n${err}")
+  endif()
+  string(REGEX MATCHALL "[^\n]*(Unexpected|[Ee]rror|[Ff]ailed|[Ii]nvalid)[^\n]*" bad "${out}${err}")
+  if(bad)
+    message(FATAL_ERROR "sigrok-cli reading ${vcd}:\n${bad}")
+  endif()
+endforeach()
+foreach(check ${CHECKS})
+  string(REPLACE ":" ";" f ${check})
+  list(GET f 0 vcd)
+  list(GET f 1 pin)
+  list(GET f 2 width)
+  list(GET f 3 count)
+  foreach(file ${OUT}/${vcd} ${OUT}/${vcd}.sigrok.vcd)
+    execute_process(COMMAND ${PYTHON} ${PULSES} ${file} ${pin} --expect ${width} --count ${count}
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "${err}")
+    endif()
+  endforeach()
+endforeach()
