@@ -1,4 +1,4 @@
-// alp85 run [PROGRAM...] [--keys "R 7 0800 EXEC"] [--boot TIME] [--for TIME] [--no-monitor]:
+// alp85 run [PROGRAM...] [--keys "R 7 0800 EXEC"] [--boot TIME] [--for TIME] [--no-monitor] [--vcd FILE]:
 // the board, headless. It boots the monitor, shows the display after RESET, types the keys, runs,
 // and shows the display again. Built on the command language's Session, like every front end:
 // the arguments become Commands directly (no script text is made, so a path may hold any
@@ -72,7 +72,8 @@ void add_print(std::vector<Command>& commands, std::string text) {
 void add_run_command(CLI::App& app, int& status) {
     struct Args {
         std::vector<std::string> programs, firmware;
-        std::string keys, boot = "500ms", run_for = "1s", motor = "physical";
+        std::string keys, boot = "500ms", run_for = "1s", motor = "physical", vcd;
+        std::vector<std::string> pins;
         bool no_monitor = false, text = false;
     };
     auto args = std::make_shared<Args>();
@@ -89,6 +90,11 @@ void add_run_command(CLI::App& app, int& status) {
                     "file as the positional arguments take it; may be repeated");
     add_motor_option(cmd, args->motor);
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
+    auto* vcd = cmd->add_option("--vcd", args->vcd,
+                                "Record the board's pins from RESET to the end as a VCD file (GTKWave, PulseView; "
+                                "docs/signals.md)");
+    cmd->add_option("--pins", args->pins, "The pins --vcd records (default all), e.g. --pins PA0 X.PULSE 8279")
+        ->needs(vcd);
     cmd->footer(
         "Addresses are read as in scripts: 0800H or 0x800 is hex, 2048 decimal; a bare number with a\n"
         "leading zero (0800) is refused as ambiguous.\n"
@@ -96,6 +102,7 @@ void add_run_command(CLI::App& app, int& status) {
         "  alp85 run                                          # the monitor's sign-on\n"
         "  alp85 run firmware/demo/hello85.asm --keys \"R 7 0800 EXEC\"\n"
         "  alp85 run --firmware thesis-fixed --keys \"R 7 0800 EXEC 0012\"   # the thesis's Z prompt, Z = 12\n"
+        "  alp85 run --firmware thesis-fixed --keys \"R 7 0800 EXEC\" --vcd pins.vcd --pins 8155 8279\n"
         "Exit status: 0 success, 1 a program could not be placed or run, 2 a usage error or a bad\n"
         "argument (a program that is missing or does not assemble, a bad time or key).");
     cmd->callback([args, &status] {
@@ -144,6 +151,14 @@ void add_run_command(CLI::App& app, int& status) {
             }
             commands.push_back(std::move(c));
         }
+        if (!args->vcd.empty()) {
+            Command record = command(Op::Record, args->vcd);
+            record.signals = true;
+            record.text = args->vcd;
+            record.period = script::kDefaultSignalPeriod;
+            for (const std::string& p : args->pins) record.pins.push_back({{}, 0, column_of(p), p});
+            commands.push_back(std::move(record));
+        }
         commands.push_back(command(Op::Reset));
         Command boot = command(Op::Run, args->boot);
         if (const auto t = time_argument(args->boot, "--boot", errors)) boot.time = *t;
@@ -177,6 +192,12 @@ void add_run_command(CLI::App& app, int& status) {
                 return;
             }
         }
+        if (!args->vcd.empty())
+            if (const auto o = session.execute(command(Op::RecordStop)); o.status != script::Session::Status::Ok) {
+                std::cerr << o.message << '\n';
+                status = 1;
+                return;
+            }
         std::cout << fmt::format("{} simulated, PC={:04X}H\n", script::Session::format_time(session.machine().now()),
                                  session.machine().cpu().regs().pc);
         // Where the machine tool's tables are, after the display.

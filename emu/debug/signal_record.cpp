@@ -64,10 +64,13 @@ std::string SignalRecorder::check_selection(const Machine& machine, const std::v
     const std::vector<PinName> all = pin_names(machine);
     for (const std::string& w : selection) {
         if (std::none_of(all.begin(), all.end(), [&](const PinName& p) { return selects(w, p.scope, p.name); })) {
+            std::vector<std::string> seen;
             std::string scopes;
-            for (const PinName& p : all)
-                if (scopes.find(p.scope + ",") == std::string::npos && scopes.find(p.scope + ")") == std::string::npos)
-                    scopes += (scopes.empty() ? "" : ", ") + p.scope;
+            for (const PinName& p : all) {
+                if (std::find(seen.begin(), seen.end(), p.scope) != seen.end()) continue;
+                seen.push_back(p.scope);
+                scopes += (scopes.empty() ? "" : ", ") + p.scope;
+            }
             return fmt::format("no pin '{}' on the board (a pin such as PA0, 8155.PA0 or X.PULSE, or a whole part: {}; "
                                "docs/signals.md lists them)",
                                w, scopes);
