@@ -75,5 +75,6 @@ void add_pisa_command(CLI::App& app, int& status);
 void add_gui_command(CLI::App& app, int& status);
 void add_debug_command(CLI::App& app, int& status);
 void add_dap_command(CLI::App& app, int& status);
+void add_timing_command(CLI::App& app, int& status);
 
 }  // namespace alp85::cli

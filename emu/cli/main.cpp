@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     alp85::cli::add_gui_command(app, status);
     alp85::cli::add_debug_command(app, status);
     alp85::cli::add_dap_command(app, status);
+    alp85::cli::add_timing_command(app, status);
 
     alp85::cli::set_command_line(argc, argv);
     // CLI11 would say only "A subcommand is required": name the word that is not a command.

@@ -145,6 +145,7 @@ private:
     std::string cmd_jump(std::string_view a, int col);
     std::string cmd_info(std::string_view a, int col);
     std::string cmd_history(std::string_view a, int col);
+    std::string cmd_timing(std::string_view a, int col);
     std::string cmd_echo(std::string_view a, int col);
     std::string cmd_output(std::string_view a, int col);
     std::string cmd_expect(std::string_view a, int col);

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "emu/board/board_map.h"
+#include "emu/debug/bus_cycles.h"
 #include "emu/debug/console.h"
 #include "emu/util/text.h"
 
@@ -606,6 +607,16 @@ std::string Console::cmd_info(std::string_view a, int col) {
     for (const periph::Part* p : d_.machine().parts()) parts += fmt::format("{}, ", p->name());
     return error(col, what.empty() ? fmt::format("info what? registers, breakpoints, watchpoints, displays, display, {}axis, line, symbol, history", parts)
                                    : fmt::format("no 'info {}' (registers, breakpoints, watchpoints, displays, display, {}axis, line, symbol, history)", a, parts));
+}
+
+std::string Console::cmd_timing(std::string_view a, int col) {
+    if (!a.empty()) return error(col, "timing takes no argument: it shows the next instruction's machine cycles");
+    const Machine& m = d_.machine();
+    if (m.cpu().variant() != Variant::I8085) return error(col, "timing draws the 8085's machine cycles (this session runs an 8080)");
+    const Registers& r = m.cpu().regs();
+    const auto dis = disassemble(m.bus(), r.pc, m.cpu().variant(), &d_.program());
+    return fmt::format("{}\t{}\n", hex4h(r.pc), dis.text) +
+           cycles_text(instruction_cycles(r, [&m](std::uint16_t addr) { return m.peek(addr); }));
 }
 
 std::string Console::cmd_history(std::string_view a, int col) {

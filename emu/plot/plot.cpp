@@ -182,17 +182,18 @@ std::vector<double> ticks(double lo, double hi, int target) {
 
 namespace {
 void draw(const Chart& c, const std::string& path);
-}  // namespace
+void draw_timing(const TimingDiagram& d, const std::string& path);
 
-// The chart is drawn to a temporary file beside `path` and renamed over it when complete, so a
+// The picture is drawn to a temporary file beside `path` and renamed over it when complete, so a
 // failed plot never leaves a half-written file (nor removes an older one).
-void write(const Chart& c, const std::string& path) {
+template <class Draw>
+void write_whole(const std::string& path, Draw draw) {
     if (!ALP85_PLOT_CAIRO) throw PlotError("plot: " + path + ": this build draws no charts (no cairo)");
     const std::filesystem::path target(path);
     std::filesystem::path tmp = target;
     tmp.replace_filename("." + target.stem().string() + ".partial" + target.extension().string());
     try {
-        draw(c, tmp.string());
+        draw(tmp.string());
         std::filesystem::rename(tmp, target);
     } catch (const PlotError& e) {
         std::error_code ec;
@@ -205,6 +206,16 @@ void write(const Chart& c, const std::string& path) {
         std::filesystem::remove(tmp, ec);
         throw PlotError("plot: cannot write " + path + ": " + e.code().message());
     }
+}
+}  // namespace
+
+void write(const Chart& c, const std::string& path) {
+    write_whole(path, [&](const std::string& tmp) { draw(c, tmp); });
+}
+
+void write_timing(const TimingDiagram& d, const std::string& path) {
+    if (d.waves.empty() || d.length <= 0) throw PlotError("plot: " + path + ": an empty timing diagram");
+    write_whole(path, [&](const std::string& tmp) { draw_timing(d, tmp); });
 }
 
 namespace {
@@ -407,8 +418,106 @@ void draw(const Chart& c, const std::string& path) {
     surf.finish();
     if (svg) add_svg_title(path, c.title);
 }
+
+// Rows of waveforms under a row of cycle names and one of T-state names, in the manner of Intel's
+// data sheet figures: a wire high, low, floating (a line midway) or unspecified (hatched); a bus
+// as a band that crosses where its value changes, the value written inside.
+void draw_timing(const TimingDiagram& d, const std::string& path) {
+    constexpr double kLeft = 90, kRight = 20, kTop = 64, kRow = 30, kHigh = 18, kBottom = 18;
+    const double unit = std::clamp(900.0 / d.length, 14.0, 60.0);
+    const int w = static_cast<int>(kLeft + d.length * unit + kRight);
+    const int h = static_cast<int>(kTop + kRow * static_cast<double>(d.waves.size()) + kBottom);
+    Surface surf(path, w, h);
+    cairo_t* cr = surf.cr();
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    auto x_of = [&](double t) { return kLeft + t * unit; };
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    text(cr, d.title, 8, 6, 0, 0, 13, true);
+    // machine cycles and T-states, with a faint line at every T-state boundary
+    for (const TimingDiagram::Span& s : d.spans) {
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, s.label, (x_of(s.from) + x_of(s.to)) / 2, 28, 0.5, 0.5, 11, true);
+        cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+        cairo_set_line_width(cr, 1.2);
+        cairo_move_to(cr, x_of(s.from), 20);
+        cairo_line_to(cr, x_of(s.from), h - kBottom);
+        cairo_stroke(cr);
+    }
+    for (const TimingDiagram::Tick& t : d.ticks) {
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, t.label, x_of(t.at + 0.5), 48, 0.5, 0.5, 10);
+        cairo_set_source_rgb(cr, 0.85, 0.85, 0.85);
+        cairo_set_line_width(cr, 0.6);
+        cairo_move_to(cr, x_of(t.at), kTop - 6);
+        cairo_line_to(cr, x_of(t.at), h - kBottom);
+        cairo_stroke(cr);
+    }
+    for (std::size_t i = 0; i < d.waves.size(); ++i) {
+        const TimingDiagram::Wave& wv = d.waves[i];
+        const double top = kTop + kRow * static_cast<double>(i) + (kRow - kHigh) / 2, bottom = top + kHigh, mid = (top + bottom) / 2;
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, wv.name, 8, mid, 0, 0.5, 11);
+        for (const TimingDiagram::Segment& s : wv.segments) {
+            const double x0 = x_of(s.from), x1 = x_of(s.to), slant = std::min(3.0, (x1 - x0) / 4);
+            cairo_set_line_width(cr, 1.4);
+            cairo_set_source_rgb(cr, 0.05, 0.2, 0.6);
+            if (s.level == 'x') {  // unspecified: hatched
+                cairo_save(cr);
+                cairo_rectangle(cr, x0, top, x1 - x0, kHigh);
+                cairo_clip(cr);
+                cairo_set_line_width(cr, 0.6);
+                for (double x = x0 - kHigh; x < x1; x += 5) {
+                    cairo_move_to(cr, x, bottom);
+                    cairo_line_to(cr, x + kHigh, top);
+                }
+                cairo_stroke(cr);
+                cairo_restore(cr);
+                continue;
+            }
+            if (s.level == 'z') {  // floating
+                cairo_move_to(cr, x0, mid);
+                cairo_line_to(cr, x1, mid);
+                cairo_stroke(cr);
+                continue;
+            }
+            if (wv.bus) {  // a valid value: a band crossing at both ends
+                cairo_move_to(cr, x0, mid);
+                cairo_line_to(cr, x0 + slant, top);
+                cairo_line_to(cr, x1 - slant, top);
+                cairo_line_to(cr, x1, mid);
+                cairo_line_to(cr, x1 - slant, bottom);
+                cairo_line_to(cr, x0 + slant, bottom);
+                cairo_close_path(cr);
+                cairo_stroke(cr);
+                cairo_set_source_rgb(cr, 0, 0, 0);
+                text(cr, s.text, (x0 + x1) / 2, mid, 0.5, 0.5, 10);
+                continue;
+            }
+            const double y = s.level == '1' ? top : bottom;
+            cairo_move_to(cr, x0, y);
+            cairo_line_to(cr, x1, y);
+            cairo_stroke(cr);
+        }
+        // edges between wire segments
+        if (!wv.bus)
+            for (std::size_t k = 1; k < wv.segments.size(); ++k) {
+                const char a = wv.segments[k - 1].level, b = wv.segments[k].level;
+                if (a == b || a == 'x' || b == 'x') continue;
+                const double x = x_of(wv.segments[k].from);
+                auto y_of = [&](char l) { return l == '1' ? top : l == '0' ? bottom : mid; };
+                cairo_move_to(cr, x, y_of(a));
+                cairo_line_to(cr, x, y_of(b));
+                cairo_stroke(cr);
+            }
+    }
+    const bool svg = surf.svg();
+    surf.finish();
+    if (svg) add_svg_title(path, d.title);
+}
 #else
 void draw(const Chart&, const std::string&) {}
+void draw_timing(const TimingDiagram&, const std::string&) {}
 #endif
 }  // namespace
 

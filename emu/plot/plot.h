@@ -64,6 +64,36 @@ void write_time_series(const std::string& path, const std::string& title, const 
                        const std::string& y_label, const std::string& t_label = "t (s)",
                        Chart::Legend legend = Chart::Legend::TopRight);
 
+// A timing diagram (the 8085's bus cycles, `alp85 timing`): named rows of waveforms against time
+// in whole units (T-states), under a row of spans (machine cycles) and one of ticks (T1, T2...).
+struct TimingDiagram {
+    struct Segment {
+        double from = 0, to = 0;  // time units
+        char level = '0';         // a wire: '0', '1'; a bus: 'v' (text holds the value); both: 'z', 'x'
+        std::string text;
+    };
+    struct Wave {
+        std::string name;  // "ALE", "AD7-AD0"
+        bool bus = false;
+        std::vector<Segment> segments;
+    };
+    struct Span {
+        double from = 0, to = 0;
+        std::string label;  // "M1 opcode fetch"
+    };
+    struct Tick {
+        double at = 0;      // start of the unit labelled
+        std::string label;  // "T1"
+    };
+    std::string title;
+    double length = 0;
+    std::vector<Span> spans;
+    std::vector<Tick> ticks;
+    std::vector<Wave> waves;
+};
+// Draws it to `path` (.svg or .png), whole or not at all. Throws PlotError.
+void write_timing(const TimingDiagram& d, const std::string& path);
+
 // The tick positions chosen for [lo, hi] (1-2-5 steps, about `target` of them): for tests.
 std::vector<double> ticks(double lo, double hi, int target = 6);
 
