@@ -1,0 +1,3 @@
+load timing.asm
+set $pc = 0800H
+timing
