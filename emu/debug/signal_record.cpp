@@ -204,7 +204,9 @@ void SignalRecorder::read(Source& s, std::uint64_t t) {
 
 void SignalRecorder::look(std::uint64_t t) {
     if (!machine_) return;
-    t = std::max(t, last_t_);  // the file never goes back in time
+    // The file never goes back in time: a debugger that took the machine back re-runs what was
+    // recorded the first time (and a new timeline from there shows from where the first ended).
+    if (t < last_t_) return;
     last_t_ = t;
     for (Source& s : sources_) read(s, t);
     if (sampled_ && t >= next_sample_) next_sample_ = (t / period_ + 1) * period_;

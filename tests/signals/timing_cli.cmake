@@ -63,3 +63,15 @@ foreach(vcd sta.vcd ack.vcd)
     message(FATAL_ERROR "sigrok-cli reading ${vcd}: ${rc}\n${bad}")
   endif()
 endforeach()
+
+# The diagrams of docs/signals.md, written by the command once its output was checked above
+# (-DDOC_IMG=docs/img when ALP85_DOC_IMAGES is on).
+if(DOC_IMG)
+  foreach(pair "MVI A,32H|mvi" "STA 2050H|sta" "CALL 0900H|call")
+    string(REPLACE "|" ";" p "${pair}")
+    list(GET p 0 instruction)
+    list(GET p 1 name)
+    expect_output(doc 0 ${ALP85} timing "${instruction}" --svg ${DOC_IMG}/timing-${name}.svg PATTERNS "T-states")
+  endforeach()
+  expect_output(doc 0 ${ALP85} timing --interrupt rst7.5 --svg ${DOC_IMG}/timing-rst75.svg PATTERNS "12 T-states")
+endif()
