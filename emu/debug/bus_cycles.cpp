@@ -63,7 +63,7 @@ bool condition_taken(std::uint8_t opcode, std::uint8_t f) {
 
 namespace {
 
-std::uint8_t reg8(const Registers& r, int code) {
+std::uint8_t reg_value(const Registers& r, int code) {
     switch (code) {
         case 0: return r.b;
         case 1: return r.c;
@@ -75,7 +75,7 @@ std::uint8_t reg8(const Registers& r, int code) {
     }
 }
 
-std::uint16_t pair(const Registers& r, int code) {  // B, D, H, SP (PSW is PUSH's own)
+std::uint16_t pair_value(const Registers& r, int code) {  // B, D, H, SP (PSW is PUSH's own)
     switch (code) {
         case 0: return r.bc();
         case 1: return r.de();
@@ -119,7 +119,7 @@ std::vector<Access> accesses(const Registers& r, const Peek& peek, std::uint8_t 
     const std::string_view m = info.mnemonic;
     if (m == "MOV") {
         if (src == 6) return {read(hl, "from M (HL)")};
-        if (dst == 6) return {write(hl, reg8(r, src), "to M (HL)")};
+        if (dst == 6) return {write(hl, reg_value(r, src), "to M (HL)")};
         return {};
     }
     if (m == "MVI") return dst == 6 ? std::vector<Access>{read(at(pc + 1), "operand"), write(hl, b1, "to M (HL)")} : operands(1);
@@ -130,8 +130,8 @@ std::vector<Access> accesses(const Registers& r, const Peek& peek, std::uint8_t 
     }
     if (info.operands == "M") return {read(hl, "M (HL)")};  // ADD M ... CMP M
     if (m == "LXI" || m == "JMP" || m == "LDHI" || m == "LDSI") return operands(m == "LXI" || m == "JMP" ? 2 : 1);
-    if (m == "STAX") return {write(pair(r, rp), r.a, "A")};
-    if (m == "LDAX") return {read(pair(r, rp), "to A")};
+    if (m == "STAX") return {write(pair_value(r, rp), r.a, "A")};
+    if (m == "LDAX") return {read(pair_value(r, rp), "to A")};
     if (m == "STA") return join(operands(2), {write(a16, r.a, "A")});
     if (m == "LDA") return join(operands(2), {read(a16, "to A")});
     if (m == "SHLD") return join(operands(2), {write(a16, r.l, "L"), write(at(a16 + 1), r.h, "H")});
@@ -139,7 +139,7 @@ std::vector<Access> accesses(const Registers& r, const Peek& peek, std::uint8_t 
     if (m == "SHLX") return {write(r.de(), r.l, "L"), write(at(r.de() + 1), r.h, "H")};
     if (m == "LHLX") return {read(r.de(), "to L"), read(at(r.de() + 1), "to H")};
     if (m == "PUSH")
-        return rp == 3 ? push(static_cast<std::uint16_t>(r.a << 8 | r.f), "A", "flags") : push(pair(r, rp), "high byte", "low byte");
+        return rp == 3 ? push(static_cast<std::uint16_t>(r.a << 8 | r.f), "A", "flags") : push(pair_value(r, rp), "high byte", "low byte");
     if (m == "POP" || m == "RET" || (info.flow == isa::Flow::ReturnIf && taken))
         return {read(sp, m == "POP" ? "low byte" : "return address, low"), read(at(sp + 1), m == "POP" ? "high byte" : "return address, high")};
     if (m == "XTHL")
