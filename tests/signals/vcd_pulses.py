@@ -6,7 +6,8 @@
 PIN is a variable's name ("PA0") or scope.name ("i8155.PA0", X.PULSE). The file may be alp85's
 or sigrok-cli's (-O vcd) rewrite of it: times are read with the file's $timescale and turned into
 T-states by the clock (a T-state is 325.52 ns, so rounding a difference of nanoseconds gives the
-T-states exactly). Prints one width per line; with --expect, exits 1 unless every pulse is T
+T-states exactly). A pulse is a rising edge to the next falling one (the level the recording
+starts with is no edge). Prints one width per line; with --expect, exits 1 unless every pulse is T
 T-states long, and with --count unless there are at least N of them.
 """
 import argparse
@@ -67,7 +68,10 @@ def main():
     for t, level in changes:
         if level == last:
             continue
+        first = last is None  # the level the recording starts with is no edge
         last = level
+        if first:
+            continue
         if level == "1":
             rose = t
         elif rose is not None:
