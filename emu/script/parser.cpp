@@ -383,7 +383,7 @@ private:
         }
         c.op = Op::Record;
         // record signals FILE.vcd [PIN...] [every T]; a CSV file named "signals" is `record "signals"`.
-        if (at_word("SIGNALS") && pos_ + 1 < tokens_.size()) {
+        if (at_word("SIGNALS")) {
             ++pos_;
             c.signals = true;
             if (!string_operand(c.text, "a VCD file name")) return false;

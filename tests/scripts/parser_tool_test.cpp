@@ -91,6 +91,24 @@ TEST(ScriptTool, RecordAndPlot) {
     EXPECT_EQ(error_of("record x.csv every 0t").message, "a sampling period is not zero");
 }
 
+// record signals FILE.vcd [PIN...] [every T] (docs/signals.md): the pins as written, with their
+// columns for the session's check; "signals" quoted is a CSV file of that name.
+TEST(ScriptTool, RecordSignals) {
+    const Command r = one("record signals pins.vcd PA0 x.pulse 8279 every 48t");
+    EXPECT_EQ(r.op, Op::Record);
+    EXPECT_TRUE(r.signals);
+    EXPECT_EQ(r.text, "pins.vcd");
+    ASSERT_EQ(r.pins.size(), 3u);
+    EXPECT_EQ(r.pins[1].text, "x.pulse");
+    EXPECT_EQ(r.pins[1].col, 29);  // "record signals pins.vcd PA0 " is 28 characters
+    EXPECT_EQ(r.period, 48u);
+    EXPECT_EQ(one("record signals pins.vcd").period, kDefaultSignalPeriod);
+    EXPECT_TRUE(one("record signals pins.vcd").pins.empty());
+    EXPECT_FALSE(one("record \"signals\"").signals);
+    EXPECT_EQ(error_of("record signals").message, "expected a VCD file name");
+    EXPECT_EQ(error_of("record signals p.vcd \"PA0\"").message, "a pin name is a word, not a string: PA0");
+}
+
 TEST(ScriptTool, PrintAxesTimeMarkAndFirmware) {
     EXPECT_EQ(one("print axes").op, Op::PrintAxes);
     EXPECT_EQ(one("print time").op, Op::PrintTime);
