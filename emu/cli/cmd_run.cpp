@@ -105,7 +105,11 @@ void add_run_command(CLI::App& app, int& status) {
         "  alp85 run --firmware thesis-fixed --keys \"R 7 0800 EXEC\" --vcd pins.vcd --pins 8155 8279\n"
         "Exit status: 0 success, 1 a program could not be placed or run, 2 a usage error or a bad\n"
         "argument (a program that is missing or does not assemble, a bad time or key).");
-    cmd->callback([args, &status] {
+    cmd->callback([args, cmd, &status] {
+        if (refuse_empty_outputs("run", *cmd, {"--vcd"})) {
+            status = kUsageError;
+            return;
+        }
         // One way to name firmware, as in gui, debug and dap: a built-in name among the programs
         // loads that firmware, a file given to --firmware loads as a program.
         std::vector<std::string> builtins, files;

@@ -30,6 +30,9 @@ if(NOT now STREQUAL "        ORG 0800H\nL:      JMP L\n")
   message(FATAL_ERROR "the program was changed:\n${now}")
 endif()
 
+# --vcd '' (an unset shell variable) is no request for no file
+expect_refusal("--vcd ''" 2 "--vcd" ${ALP85} run --vcd "")
+
 # a script that fails while recording: the recording up to the failure is written whole, as a
 # CSV recording is (docs/scripting.md), with its end
 file(WRITE ${DIR}/fails.alp "record signals fails.vcd 8155\nrun 1ms\nexpect reg A 99H\nrecord stop\n")
