@@ -298,7 +298,7 @@ public:
         }
         pause();
         const auto o = session_.restore(file);
-        path_.clear();
+        if (o.status == script::Session::Status::Ok) path_.restored();  // a refused snapshot leaves the drawing
         after_load();
         start();
         return o.status == script::Session::Status::Ok ? std::string() : o.message;

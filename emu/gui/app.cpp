@@ -598,7 +598,7 @@ void App::act(const Action& a) {
         case K::LoadSnapshot:
             if (done(session_.restore(absolute(a.arg)))) {  // a refused snapshot leaves the drawing as it was
                 ui_.add_log("restored " + absolute(a.arg));
-                path_.clear();
+                path_.restored();
                 pacer_.rebase(machine().now(), host);
             }
             break;
@@ -676,7 +676,7 @@ void App::drive_debug_hooks() {
         const std::string& line = o_.debug_commands[command_pos_++];
         // Hooks beside command lines: "click:NAME" clicks a named button (controls.run,
         // debug.continue, debug.step, ...), "frames:N" lets N frames pass, "status" prints whether
-        // the board runs and its time, "toolpath" how many points the drawn path has, "clickrow:N"
+        // the board runs and its time, "toolpath" how many points the drawn path has and its ideal line, "clickrow:N"
         // clicks source row N as shown, "source" prints the file and first line the pane shows,
         // "where:NAME" a button's centre in screen coordinates.
         if (line.starts_with("click:")) {
@@ -724,7 +724,11 @@ void App::drive_debug_hooks() {
             return;
         }
         if (line == "toolpath") {
-            std::cout << fmt::format("[gui] toolpath: {} points\n", path_.points().size()) << std::flush;
+            const auto l = path_.ideal(machine());
+            std::cout << fmt::format("[gui] toolpath: {} points, {}\n", path_.points().size(),
+                                     l ? fmt::format("ideal line from {:g},{:g} to {:g},{:g} mm", l->from.x, l->from.y, l->to.x, l->to.y)
+                                       : std::string("no ideal line"))
+                      << std::flush;
             return;
         }
         if (line == "status") {

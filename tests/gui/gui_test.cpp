@@ -170,7 +170,7 @@ TEST(Toolpath, TheIdealLineStartsWhereTheTableStoodWhenTheMoveBegan) {
     EXPECT_EQ(path.points().size(), 2u);
 }
 
-// A path cleared (a restored snapshot at the feed prompt, then EXEC at once): the first step comes
+// A path cleared (a reset or a new workpiece at the feed prompt, then EXEC at once): the first step comes
 // well within kIdle of the first sample, and still begins the move; the line stays where the move
 // began while the table goes on.
 TEST(Toolpath, AMoveBegunRightAfterAClearStartsWhereTheTableStood) {
@@ -196,6 +196,50 @@ TEST(Toolpath, AMoveBegunRightAfterAClearStartsWhereTheTableStood) {
             EXPECT_DOUBLE_EQ(line->to.y, 7.5);                                   // (200 - 50) steps
         }
     }
+}
+
+// A snapshot taken at Bitti (the thesis line X1,Y1 = 0,0 to X2,Y2 = 200,150 steps, done): the table
+// stands at 10, 7.5 mm. The line it ran is not known after the restore, and the one from where the
+// table stands, (10, 7.5) to (20, 15), was never commanded: no line until the next move begins, and
+// the workpiece where the finished move puts it: X2, Y2 steps before where the table stands.
+TEST(Toolpath, ARestoredSnapshotDrawsNoLineUntilTheNextMoveBegins) {
+    Machine m;
+    Toolpath path;
+    path.set_variables(0x1B00);
+    for (auto [a, v] : {std::pair{0x1B00, 0}, {0x1B03, 0}, {0x1B06, 200}, {0x1B09, 150}}) {
+        m.poke(static_cast<std::uint16_t>(a), static_cast<std::uint8_t>(v & 0xFF));
+        m.poke(static_cast<std::uint16_t>(a + 1), static_cast<std::uint8_t>(v >> 8));
+    }
+    ASSERT_TRUE(path.ideal(m));  // the line as a reset leaves it: from where the table stands
+    path.restored();
+    EXPECT_FALSE(path.ideal(m));
+    // This machine's sequencers stand at 0 steps: the finished move began 200, 150 steps before.
+    const Bounds w = path.workpiece(m);
+    EXPECT_DOUBLE_EQ(w.x0, -200 * 0.05);
+    EXPECT_DOUBLE_EQ(w.y0, -150 * 0.05);
+    debug::ToolSample s;
+    s.t = 1000;
+    s.axes[0].commanded = 200, s.axes[1].commanded = 150;  // where Bitti left the table
+    path.observe(s, m);
+    EXPECT_FALSE(path.ideal(m));
+    // The middle of a move restored: steps 3 ms apart, never kIdle standing: still no line.
+    for (int step = 1; step <= 20; ++step) {
+        s.t += board::tstates_from_ms(3);
+        s.axes[0].commanded = 200 + step;
+        path.observe(s, m);
+        EXPECT_FALSE(path.ideal(m)) << "step " << step;
+    }
+    // The table stands for kIdle, then the next move begins: its line starts where the table stood.
+    s.t += Toolpath::kIdle;
+    s.axes[0].commanded = 221;
+    path.observe(s, m);
+    const auto line = path.ideal(m);
+    ASSERT_TRUE(line);
+    EXPECT_TRUE(line->started);
+    EXPECT_DOUBLE_EQ(line->from.x, 220 * 0.05);
+    EXPECT_DOUBLE_EQ(line->from.y, 150 * 0.05);
+    EXPECT_DOUBLE_EQ(line->to.x, 220 * 0.05 + 10);   // (200 - 0) steps
+    EXPECT_DOUBLE_EQ(line->to.y, 150 * 0.05 + 7.5);  // (150 - 0) steps
 }
 
 // The window on a 1366x768 laptop: the largest size that leaves room for a title bar and a panel,
