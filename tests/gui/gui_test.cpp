@@ -53,6 +53,21 @@ TEST(FrameClock, DeadlinesAreAbsoluteAndAnOverrunSkipsAhead) {
     EXPECT_EQ(c.next(t0 + 100ms), t0 + FrameClock::kPeriod * 6);  // frames 3-5 were missed
 }
 
+// Calm frames (no input): every second deadline of the 60 Hz grid, 30 a second; an event ends the
+// wait and the grid goes on from the next sixtieth.
+TEST(FrameClock, CalmFramesKeepEverySecondDeadlineAndAnEventResumesTheGrid) {
+    const HostClock::time_point t0{};
+    const auto p = FrameClock::kPeriod;
+    FrameClock c(t0);
+    EXPECT_EQ(c.next(t0 + 5ms, 2), t0 + p * 2);
+    EXPECT_EQ(c.next(t0 + p * 2 + 1ms, 2), t0 + p * 4);
+    EXPECT_EQ(c.next(t0 + p * 4 + 1ms, 2), t0 + p * 6);
+    EXPECT_EQ(c.resume(t0 + p * 4 + 20ms), t0 + p * 6);  // 86.7 ms: the deadline after it is frame 6 (100 ms)
+    EXPECT_EQ(c.next(t0 + p * 6 + 1ms), t0 + p * 7);      // at 60 a second again
+    EXPECT_EQ(c.next(t0 + p * 7 + 1ms, 2), t0 + p * 8);
+    EXPECT_EQ(c.next(t0 + 201ms, 2), t0 + p * 14);         // overran past frame 12 (200 ms): 13 is odd
+}
+
 TEST(Layout, EveryButtonIsFoundAtItsCentreAndTheyDoNotOverlap) {
     EXPECT_EQ(pad_keys().size(), 26u);
     for (const PadKey& k : pad_keys()) {
