@@ -28,17 +28,12 @@ struct Value {
     std::string text;    // as written, for messages
 };
 
+// A key as the script names it: the board's button (emu/board/key_press.h schedules it).
 struct KeyRef {
-    enum class Kind : std::uint8_t { Matrix, Reset, Vect };
-    Kind kind = Kind::Matrix;
-    periph::Key key = periph::Key::K0;
+    Button kind = Button::Matrix;
+    periph::Key key = periph::Key::K0;  // for Matrix
     std::string name;
 };
-
-// The board's button a key stands for (emu/board/key_press.h schedules it).
-inline Button button_of(const KeyRef& k) {
-    return k.kind == KeyRef::Kind::Matrix ? Button::Matrix : k.kind == KeyRef::Kind::Reset ? Button::Reset : Button::Vect;
-}
 
 enum class Compare : std::uint8_t { Lt, Le, Eq, Ge, Gt };
 

@@ -859,9 +859,9 @@ std::optional<std::uint64_t> parse_time(std::string_view text) {
 
 std::optional<KeyRef> parse_key(std::string_view text) {
     const std::string u = to_upper(text);
-    if (u == "RESET") return KeyRef{KeyRef::Kind::Reset, periph::Key::K0, u};
-    if (u == "VECT" || u == "VECTINTR" || u == "VECT_INTR") return KeyRef{KeyRef::Kind::Vect, periph::Key::K0, "VECT"};
-    if (const auto k = periph::Keypad::find(u)) return KeyRef{KeyRef::Kind::Matrix, *k, u};
+    if (u == "RESET") return KeyRef{Button::Reset, periph::Key::K0, u};
+    if (u == "VECT" || u == "VECTINTR" || u == "VECT_INTR") return KeyRef{Button::Vect, periph::Key::K0, "VECT"};
+    if (const auto k = periph::Keypad::find(u)) return KeyRef{Button::Matrix, *k, u};
     return std::nullopt;
 }
 

@@ -320,9 +320,7 @@ debug::Stop Session::run_paced(std::uint64_t until, const std::function<bool()>&
 
 Session::Outcome Session::press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap) {
     Machine& m = *machine_;
-    const Button button = key.kind == KeyRef::Kind::Matrix ? Button::Matrix
-                          : key.kind == KeyRef::Kind::Reset ? Button::Reset
-                                                            : Button::Vect;
+    const Button button = key.kind;
     if (button == Button::Reset) time_origin_ = m.now();
     run_paced(schedule_press(m, button, key.key, hold, gap), {}, origin(c));
     return {};
@@ -707,8 +705,8 @@ Session::Outcome Session::run_command(const Command& c) {
         case Op::KeyUp: {
             const bool down = c.op == Op::KeyDown;
             const KeyRef& k = c.keys[0];
-            if (k.kind == KeyRef::Kind::Matrix) m.key_at(k.key, down, m.now());
-            else if (k.kind == KeyRef::Kind::Vect) m.vect_intr_at(down, m.now());
+            if (k.kind == Button::Matrix) m.key_at(k.key, down, m.now());
+            else if (k.kind == Button::Vect) m.vect_intr_at(down, m.now());
             else {
                 m.reset_key_at(down, m.now());
                 if (down) time_origin_ = m.now();

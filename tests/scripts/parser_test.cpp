@@ -47,8 +47,8 @@ TEST(ScriptKeys, MatrixKeysAndTheTwoOutsideIt) {
     EXPECT_EQ(parse_key("a")->key, periph::Key::KA);
     EXPECT_EQ(parse_key("7")->key, periph::Key::K7);
     EXPECT_EQ(parse_key("R")->key, periph::Key::R);
-    EXPECT_EQ(parse_key("reset")->kind, KeyRef::Kind::Reset);
-    EXPECT_EQ(parse_key("VECT")->kind, KeyRef::Kind::Vect);
+    EXPECT_EQ(parse_key("reset")->kind, Button::Reset);
+    EXPECT_EQ(parse_key("VECT")->kind, Button::Vect);
     EXPECT_FALSE(parse_key("Q"));
 }
 
