@@ -78,8 +78,8 @@ TEST(Layout, EveryButtonIsFoundAtItsCentreAndTheyDoNotOverlap) {
         EXPECT_EQ(hit->col, k.col);
     }
     EXPECT_EQ(find_pad_key("exec")->key, periph::Key::Exec);
-    EXPECT_EQ(find_pad_key("RESET")->pad, Pad::Reset);
-    EXPECT_EQ(find_pad_key("VECT")->pad, Pad::Vect);
+    EXPECT_EQ(find_pad_key("RESET")->pad, Button::Reset);
+    EXPECT_EQ(find_pad_key("VECT")->pad, Button::Vect);
     EXPECT_FALSE(key_at(kKeyX0 + kKeyW + 1, kKeyY0 + 1));  // the gap between two buttons
 }
 
