@@ -16,7 +16,7 @@ MachineTool::Params MachineTool::default_params() {
     return p;
 }
 
-MachineTool::MachineTool(const Params& p) : p_(p) {
+MachineTool::MachineTool(double clock_hz, const Params& p) : p_(p) {
     for (int a = 0; a < kAxes; ++a) {
         const AxisParams& ap = p.axes[a];
         AxisParts& x = ax_[a];
@@ -29,7 +29,7 @@ MachineTool::MachineTool(const Params& p) : p_(p) {
         load.coulomb = x.table.reflected_friction();
         load.theta_lo = x.table.low_stop_mm() / x.mm_per_rad;
         load.theta_hi = x.table.high_stop_mm() / x.mm_per_rad;
-        x.motor.configure(ap.motor, load);
+        x.motor.configure(ap.motor, load, clock_hz);
         x.step_mm = ap.table.lead_mm_per_rev / (4.0 * ap.motor.rotor_teeth);
         x.lo_steps = static_cast<std::int64_t>(std::ceil(x.table.low_stop_mm() / x.step_mm - 1e-9));
         x.hi_steps = static_cast<std::int64_t>(std::floor(x.table.high_stop_mm() / x.step_mm + 1e-9));

@@ -7,12 +7,13 @@
 //   COUNT, DIRECTION out         -> sense(axis, t)
 // RESET: the tool has no reset input (the sequencers are not on RESET OUT); reset() only catches up.
 //
-// Time: T-states of the 3.072 MHz CPU clock. The tool changes nothing the CPU sees unless the CPU
-// reads it, so next_event() is kNever; it integrates lazily in advance(). The physical model runs on
-// a fixed grid anchored at each phase change (stepper_motor.h), and a reading between grid points
-// is computed from a copy: results depend only on the drive inputs and their T-states, never on
-// when or how often the board calls advance() or sense(). Settled rotors are not integrated: with
-// all three settled, advance() is three flag tests.
+// Time: T-states of the clock its builder gives (the ALP 85's CPU clock, 3.072 MHz). The tool
+// changes nothing the CPU sees unless the CPU reads it, so next_event() is kNever; it integrates
+// lazily in advance(). The physical model runs on a fixed grid anchored at each phase change
+// (stepper_motor.h), and a reading between grid points is computed from a copy: results depend
+// only on the drive inputs and their T-states, never on when or how often the board calls
+// advance() or sense(). Settled rotors are not integrated: with all three settled, advance() is
+// three flag tests.
 //
 // Snapshot: tag "TOOL"; the model, and per axis the sequencer, motor, transducer and table state
 // (doubles bit-exact) and the grid time. Parameters are configuration, not state: load a snapshot
@@ -101,7 +102,9 @@ public:
         }
     };
 
-    explicit MachineTool(const Params& p = default_params());
+    // clock_hz: T-states per second of every time it is given (its builder's clock; the ALP 85's
+    // is board::kCpuHz).
+    explicit MachineTool(double clock_hz, const Params& p = default_params());
 
     // Part
     std::string_view name() const override { return "machine tool"; }

@@ -10,7 +10,6 @@
 namespace alp85::periph {
 
 namespace {
-constexpr double kClockHz = 3.072e6;        // CPU T-states per second
 constexpr double kSettleRad = 1e-6;         // residual amplitude of a settled rotor
 constexpr double kSettleAmp = 1e-6;         // current error of a settled winding
 constexpr std::uint8_t kBit[4] = {Sequencer::kA, Sequencer::kAbar, Sequencer::kB, Sequencer::kBbar};
@@ -75,7 +74,8 @@ int pattern_index(std::uint8_t phases) {
 }
 }  // namespace
 
-void StepperMotor::configure(const Params& p, const Load& load) {
+void StepperMotor::configure(const Params& p, const Load& load, double clock_hz) {
+    clock_hz_ = clock_hz;
     p_ = p;
     load_ = load;
     step_angle_ = 2.0 * std::numbers::pi / (4.0 * p.rotor_teeth);
@@ -96,7 +96,7 @@ void StepperMotor::configure(const Params& p, const Load& load) {
             drive_[ph].on[j] = on ? 1 : 0;
         }
     }
-    h_ = p.step_tstates / kClockHz;
+    h_ = p.step_tstates / clock_hz_;
     a_on_ = std::exp(-h_ * r_on_ / p.inductance_h);
     a_off_ = std::exp(-h_ * r_off_ / p.inductance_h);
     m_on_ = (1.0 - a_on_) * p.inductance_h / (r_on_ * h_);
@@ -213,7 +213,7 @@ unsigned StepperMotor::step(State& s, std::uint32_t ht) const {
         return flags;
     }
     // A split step: its own decay and mean factors.
-    const double h = ht / kClockHz;
+    const double h = ht / clock_hz_;
     const double a_on = std::exp(-h * r_on_ / p_.inductance_h);
     const double a_off = std::exp(-h * r_off_ / p_.inductance_h);
     const double m_on = (1.0 - a_on) * p_.inductance_h / (r_on_ * h);

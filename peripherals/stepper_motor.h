@@ -20,7 +20,7 @@
 //   Small-signal stiffness about a two-phase-on equilibrium: k = N (T_hold I/I_rated - 4 Td);
 //   the rotor rings at sqrt(k/J)/2pi, damped by the back-EMF (Kt^2/(r+R)) and friction.
 //
-// Integration (deterministic, in T-states of the 3.072 MHz clock): a fixed grid of H T-states
+// Integration (deterministic, in T-states of the clock its builder gives: the ALP 85's 3.072 MHz): a fixed grid of H T-states
 // anchored at the last input change, split exactly at each phase change. Each step is a
 // drift-kick-drift (position Verlet) step: the rotor drifts half a step; there the currents advance
 // by the EXACT solution of their linear ODE with the back-EMF frozen at its midpoint value
@@ -74,7 +74,7 @@ public:
         double detent_nm = 0.02;          // ~5 % of the holding torque, typical for hybrids
         double viscous_nms = 1e-4;        // bearings and screw lubrication, N m s/rad
         // Integration.
-        std::uint32_t step_tstates = 384; // H = 125 us at 3.072 MHz, about L/R
+        std::uint32_t step_tstates = 384; // H = 125 us at the ALP 85's 3.072 MHz, about L/R
     };
 
     // Per-axis dynamic state (the grid time is kept by the owner).
@@ -101,8 +101,9 @@ public:
 
     enum StepFlags : unsigned { kNone = 0, kStopLow = 1, kStopHigh = 2 };
 
-    StepperMotor() { configure(Params{}, Load{}); }
-    void configure(const Params& p, const Load& load);
+    StepperMotor() = default;  // configured by its builder before use
+    // clock_hz: T-states per second of the times it is given (its builder's clock).
+    void configure(const Params& p, const Load& load, double clock_hz);
 
     const Params& params() const { return p_; }
     const Load& load() const { return load_; }
@@ -159,6 +160,7 @@ private:
     template <int N, bool Grid>
     static void kernel(const StepperMotor* const* motors, State* const* states, const Lane* split, unsigned* flags);
     bool is_settled_at_low_speed(const State& s) const;
+    double clock_hz_ = 0;  // T-states per second (configure)
     double teeth_ = 0;  // rotor_teeth as a double
     double hh_ = 0, h_j_ = 0, hh_j_ = 0;  // the grid step's 0.5 h, h / J, 0.5 h / J
     double settle_energy_ = 0;            // k (1e-6 rad)^2: the settling test's energy bound

@@ -139,7 +139,7 @@ public:
             o.set("pc", std::string(gui::pc_key_label(k)));
             o.set("row", k.row);
             o.set("col", k.col);
-            o.set("fn", k.pad != gui::Pad::Matrix || static_cast<int>(k.key) >= static_cast<int>(periph::Key::Exec));
+            o.set("fn", k.pad != Button::Matrix || static_cast<int>(k.key) >= static_cast<int>(periph::Key::Exec));
             out.call<void>("push", o);
         }
         return out;
@@ -298,7 +298,7 @@ public:
         }
         pause();
         const auto o = session_.restore(file);
-        path_.clear();
+        if (o.status == script::Session::Status::Ok) path_.restored();  // a refused snapshot leaves the drawing
         after_load();
         start();
         return o.status == script::Session::Status::Ok ? std::string() : o.message;
@@ -314,8 +314,8 @@ public:
 
 private:
     static std::string pad_name(const gui::PadKey& k) {
-        if (k.pad == gui::Pad::Reset) return "RESET";
-        if (k.pad == gui::Pad::Vect) return "VECT";
+        if (k.pad == Button::Reset) return "RESET";
+        if (k.pad == Button::Vect) return "VECT";
         return std::string(periph::Keypad::info(k.key).name);
     }
     void press(const gui::PadKey& k, bool down) {

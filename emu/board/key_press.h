@@ -13,7 +13,8 @@ namespace alp85 {
 inline constexpr std::uint64_t kKeyHold = board::tstates_from_ms(30);  // 92160 T-states
 inline constexpr std::uint64_t kKeyGap = board::tstates_from_ms(30);
 
-// The keypad's matrix keys, and the two keys outside it (RESET IN, VECT INTR = RST 7.5).
+// The keypad's matrix keys, and the two keys outside it (RESET IN, VECT INTR = RST 7.5): the one
+// enum of the board's buttons, for the script's keys (KeyRef), the window's and the page's keypad (PadKey).
 enum class Button : std::uint8_t { Matrix, Reset, Vect };
 
 // The one place a key's level is scheduled: a keypad matrix key, RESET or VECT INTR, pressed

@@ -90,6 +90,7 @@ Machine::Machine() : Machine(Options{}) {}
 Machine::Machine(Options options)
     : options_(options),
       cpu_(bus_, options.cpu),
+      tool_(board::kCpuHz),
       hooks_(std::make_unique<Hooks>()) {
     // Erased EPROMs read FFH (every cell charged); RAM powers up as zeros here (the real parts
     // are unpredictable, and a deterministic machine needs some fixed value).

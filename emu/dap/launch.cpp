@@ -130,7 +130,7 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
         std::size_t at = 0;
         std::uint64_t t = m.now() + config.boot;
         const auto keys = script::parse_key_list(config.keys, why, at).value_or(std::vector<script::KeyRef>{});
-        for (const script::KeyRef& k : keys) t = schedule_press(m, script::button_of(k), k.key, kKeyHold, kKeyGap, t);
+        for (const script::KeyRef& k : keys) t = schedule_press(m, k.kind, k.key, kKeyHold, kKeyGap, t);
     }
 }
 

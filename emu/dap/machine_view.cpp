@@ -8,18 +8,14 @@
 #include <fmt/format.h>
 
 #include "asm/isa.h"
-#include "emu/script/parser.h"
+#include "emu/core/cpu_registers.h"
 #include "emu/util/text.h"
 #include "peripherals/seven_segment.h"
 
 namespace alp85::dap {
 namespace {
 
-constexpr struct {
-    const char* name;
-    std::uint8_t bit;
-} kFlags[] = {{"S", isa::F_S}, {"Z", isa::F_Z}, {"K", isa::F_K}, {"AC", isa::F_AC},
-              {"P", isa::F_P}, {"V", isa::F_V}, {"CY", isa::F_CY}};
+using cpu::Register;
 
 std::string h2(std::uint8_t v) { return fmt::format("{:02X}H", v); }
 std::string h4(std::uint16_t v) { return fmt::format("{:04X}H", v); }
@@ -43,45 +39,45 @@ std::uint16_t read_word(const Machine& m, std::uint16_t a) {
     return static_cast<std::uint16_t>(m.peek(a) | m.peek(static_cast<std::uint16_t>(a + 1)) << 8);
 }
 
+// The flags in the order of their bits in F, from bit 7 (S Z K AC P V CY).
+std::vector<cpu::Flag> flags_by_bit() {
+    std::vector<cpu::Flag> f = cpu::description().flags;
+    std::stable_sort(f.begin(), f.end(), [](const cpu::Flag& x, const cpu::Flag& y) { return x.bit > y.bit; });
+    return f;
+}
+
 std::string flags_text(std::uint8_t f) {
     std::string s;
-    for (const auto& fl : kFlags)
-        if (f & fl.bit) s += std::string(s.empty() ? "" : " ") + fl.name;
+    for (const cpu::Flag& fl : flags_by_bit())
+        if (f & fl.bit) s += std::string(s.empty() ? "" : " ") + std::string(fl.name);
     return fmt::format("{:02X}H [{}]", f, s);
 }
 
-std::optional<std::uint16_t> reg_value(const Registers& r, std::string_view name) {
-    const auto reg = script::parse_reg(name);
-    if (!reg) return std::nullopt;
-    switch (*reg) {
-        case script::Reg::A: return r.a;
-        case script::Reg::B: return r.b;
-        case script::Reg::C: return r.c;
-        case script::Reg::D: return r.d;
-        case script::Reg::E: return r.e;
-        case script::Reg::H: return r.h;
-        case script::Reg::L: return r.l;
-        case script::Reg::F: return r.f;
-        case script::Reg::BC: return r.bc();
-        case script::Reg::DE: return r.de();
-        case script::Reg::HL: return r.hl();
-        case script::Reg::SP: return r.sp;
-        case script::Reg::PC: return r.pc;
-        case script::Reg::PSW: return static_cast<std::uint16_t>(r.a << 8 | r.f);
-    }
-    return std::nullopt;
+// A register a client may read and set by name: any but memory (M), which the memory view shows.
+const Register* register_named(std::string_view name) {
+    const Register* r = cpu::description().find(name);
+    return r && r->kind != Register::Kind::Memory ? r : nullptr;
 }
 
 Variable ro(std::string name, std::string value) { return {std::move(name), std::move(value), {}, 0, {}, true}; }
 
+// The CPU's description (emu/core/cpu_registers.h): the byte registers, the flag register (its
+// flags expand), then the registers that hold an address, with the memory there; a pair that
+// holds no address (PSW) is its two bytes.
 std::vector<Variable> registers(const Machine& m) {
+    const cpu::Description& desc = cpu::description();
     const Registers& r = m.cpu().regs();
     std::vector<Variable> v;
-    for (const char* n : {"A", "B", "C", "D", "E", "H", "L"}) v.push_back({n, h2(static_cast<std::uint8_t>(*reg_value(r, n))), "byte", 0, {}, false});
-    v.push_back({"F", flags_text(r.f), "flags", kFlagScope, {}, false});
-    for (const char* n : {"BC", "DE", "HL"}) v.push_back({n, word_text(*reg_value(r, n)), "word", 0, *reg_value(r, n), false});
-    v.push_back({"SP", h4(r.sp), "word", 0, r.sp, false});
-    v.push_back({"PC", h4(r.pc), "word", 0, r.pc, false});
+    for (const Register& x : desc.registers)
+        if (x.kind == Register::Kind::Byte) v.push_back({std::string(x.name), x.hex(x.read(r)), "byte", 0, {}, false});
+    for (const Register& x : desc.registers)
+        if (x.kind == Register::Kind::Flags)
+            v.push_back({std::string(x.name), flags_text(static_cast<std::uint8_t>(x.read(r))), "flags", kFlagScope, {}, false});
+    for (const Register& x : desc.registers) {
+        if (x.width <= 8 || !x.address) continue;
+        const std::uint16_t value = x.read(r);
+        v.push_back({std::string(x.name), x.kind == Register::Kind::Pair ? word_text(value) : h4(value), "word", 0, value, false});
+    }
     v.push_back({"interrupts", fmt::format("{} masks {:03b}{}", m.cpu().interrupts_enabled() ? "EI" : "DI",
                                            m.cpu().masks(), m.cpu().halted() ? " HALTED" : ""),
                  "", kInterruptScope, {}, true});
@@ -159,8 +155,9 @@ std::vector<Variable> list_variables(const debug::Debugger& d, std::int64_t ref)
     switch (ref) {
         case kRegisterScope: return registers(m);
         case kFlagScope: {
+            const std::uint16_t f = cpu::description().flag_register()->read(m.cpu().regs());
             std::vector<Variable> v;
-            for (const auto& f : kFlags) v.push_back({f.name, m.cpu().regs().f & f.bit ? "1" : "0", "flag", 0, {}, false});
+            for (const cpu::Flag& fl : flags_by_bit()) v.push_back({std::string(fl.name), f & fl.bit ? "1" : "0", "flag", 0, {}, false});
             return v;
         }
         case kInterruptScope: return interrupts(m);
@@ -174,38 +171,20 @@ std::string assign_variable(debug::Debugger& d, std::int64_t ref, const std::str
     Machine& m = d.machine();
     Registers& r = m.cpu().regs();
     if (ref == kFlagScope) {
-        for (const auto& f : kFlags)
-            if (name == f.name) {
-                if (value != 0 && value != 1) return "a flag is 0 or 1";
-                r.f = static_cast<std::uint8_t>(value ? r.f | f.bit : r.f & ~f.bit);
-                return {};
-            }
-        return fmt::format("no flag '{}'", name);
+        const cpu::Flag* f = cpu::description().find_flag(name);
+        if (!f) return fmt::format("no flag '{}'", name);
+        if (value != 0 && value != 1) return "a flag is 0 or 1";
+        const Register* fr = cpu::description().flag_register();
+        const std::uint16_t now = fr->read(r);
+        fr->write(r, static_cast<std::uint16_t>(value ? now | f->bit : now & ~f->bit));
+        return {};
     }
     if (ref == kRegisterScope) {
-        const auto reg = script::parse_reg(name);
+        const Register* reg = register_named(name);
         if (!reg) return fmt::format("'{}' cannot be set", name);
-        const bool pair = *reg >= script::Reg::BC;
-        if (value < (pair ? -32768 : -128) || value > (pair ? 0xFFFF : 0xFF))
-            return fmt::format("{} does not fit in {}", value, pair ? "16 bits" : "8 bits");
-        const auto v8 = static_cast<std::uint8_t>(value);
-        const auto v16 = static_cast<std::uint16_t>(value);
-        switch (*reg) {
-            case script::Reg::A: r.a = v8; break;
-            case script::Reg::B: r.b = v8; break;
-            case script::Reg::C: r.c = v8; break;
-            case script::Reg::D: r.d = v8; break;
-            case script::Reg::E: r.e = v8; break;
-            case script::Reg::H: r.h = v8; break;
-            case script::Reg::L: r.l = v8; break;
-            case script::Reg::F: r.f = v8; break;
-            case script::Reg::BC: r.set_bc(v16); break;
-            case script::Reg::DE: r.set_de(v16); break;
-            case script::Reg::HL: r.set_hl(v16); break;
-            case script::Reg::SP: r.sp = v16; break;
-            case script::Reg::PC: r.pc = v16; break;
-            case script::Reg::PSW: r.a = v16 >> 8, r.f = v16 & 0xFF; break;
-        }
+        if (value < -(std::int64_t{1} << (reg->width - 1)) || value > reg->mask())
+            return fmt::format("{} does not fit in {} bits", value, reg->width);
+        reg->write(r, static_cast<std::uint16_t>(value & reg->mask()));
         return {};
     }
     if (ref == kFirmwareScope) {
@@ -236,7 +215,7 @@ std::optional<std::string> expression_value(const debug::Debugger& d, const std:
     // A firmware variable by its bare name shows what it holds (hovering over YAC); the
     // expression YAC is its address, as in the debugger's console.
     const std::string u = to_upper(t);
-    if (!reg_value(m.cpu().regs(), u) && std::none_of(std::begin(kFlags), std::end(kFlags), [&](const auto& f) { return u == f.name; }))
+    if (!register_named(u) && !cpu::description().find_flag(u))
         if (const auto v = d.program().value_of(u); v && in_ram(m, *v)) {
             const std::uint16_t size = variable_size(d.program(), *v);
             return fmt::format("{} at {:04X}H", size == 1 ? h2(m.peek(*v)) : word_text(read_word(m, *v)), *v);

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "emu/board/board_map.h"
+#include "emu/core/cpu_registers.h"
 #include "emu/debug/bus_cycles.h"
 #include "emu/debug/console.h"
 #include "emu/util/text.h"
@@ -113,7 +114,7 @@ std::string Console::cmd_set(std::string_view a, int col) {
     if (lhs.size() > 1 && lhs.front() == '$' && read_only_named(to_upper(lhs.substr(1))))
         return error(lcol, fmt::format("{} is read-only: the T-state counter, the machine's time since it started", lhs));
     // set $NAME = EXPR: a convenience variable (not a register's or flag's name).
-    if (lhs.size() > 1 && lhs.front() == '$' && !register_named(to_upper(lhs.substr(1))) && !flag_named(to_upper(lhs.substr(1))) &&
+    if (lhs.size() > 1 && lhs.front() == '$' && !cpu::description().find(lhs.substr(1)) && !flag_named(to_upper(lhs.substr(1))) &&
         std::all_of(lhs.begin() + 1, lhs.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; })) {
         const auto value = Expr::parse(rhs, d_.program(), err, Expr::Names::RegistersFirst, rcol - 1, &vars_);
         if (!value) return error(err.col, err.message);
@@ -436,18 +437,42 @@ std::string Console::cmd_backtrace(std::string_view, int) {
     return out;
 }
 
+// The CPU's description (emu/core/cpu_registers.h) as rows: each pair's two bytes, then the pair
+// (an address register's value; the flag register's flags) and the memory it addresses ([HL]);
+// then the registers that stand alone (SP, PC) and where the PC is in the source.
 std::string Console::info_registers() {
+    const cpu::Description& desc = cpu::description();
     const I8085& cpu = d_.machine().cpu();
     const Registers& r = cpu.regs();
     const std::uint8_t rim = cpu.rim_value();
-    auto flag = [&](std::uint8_t bit) { return (r.f & bit) ? 1 : 0; };
+    auto shown = [&](const cpu::Register& x) { return fmt::format("{:<2} {}", x.name, x.hex(x.read(r))); };
     std::string out;
-    out += fmt::format("A  {:02X}H   F  {:02X}H   S={} Z={} AC={} P={} CY={}  V={} K={}\n", r.a, r.f, flag(0x80), flag(0x40),
-                       flag(0x10), flag(0x04), flag(0x01), flag(0x02), flag(0x20));
-    out += fmt::format("B  {:02X}H   C  {:02X}H   BC {:04X}H\n", r.b, r.c, r.bc());
-    out += fmt::format("D  {:02X}H   E  {:02X}H   DE {:04X}H\n", r.d, r.e, r.de());
-    out += fmt::format("H  {:02X}H   L  {:02X}H   HL {:04X}H   [HL] {:02X}H\n", r.h, r.l, r.hl(), d_.machine().peek(r.hl()));
-    out += fmt::format("SP {:04X}H   PC {:04X}H", r.sp, r.pc);
+    for (const cpu::Register& pair : desc.registers) {
+        if (pair.kind != cpu::Register::Kind::Pair) continue;
+        const cpu::Register* hi = desc.find(pair.high);
+        const cpu::Register* lo = desc.find(pair.low);
+        out += shown(*hi) + "   " + shown(*lo) + "   ";
+        if (lo->kind == cpu::Register::Kind::Flags) {
+            const auto f = static_cast<std::uint8_t>(lo->read(r));
+            std::string documented, undocumented;
+            for (const cpu::Flag& flag : desc.flags) {
+                std::string& group = flag.documented ? documented : undocumented;
+                group += fmt::format("{}{}={}", group.empty() ? "" : " ", flag.name, (f & flag.bit) ? 1 : 0);
+            }
+            out += documented + (undocumented.empty() ? "" : "  " + undocumented);
+        } else if (pair.address) {
+            out += shown(pair);
+        }
+        for (const cpu::Register& m : desc.registers)
+            if (m.kind == cpu::Register::Kind::Memory && m.high == pair.name)
+                out += fmt::format("   [{}] {:02X}H", pair.name, d_.machine().peek(pair.read(r)));
+        while (out.back() == ' ') out.pop_back();
+        out += '\n';
+    }
+    std::string alone;
+    for (const cpu::Register& x : desc.registers)
+        if (desc.standalone(x)) alone += (alone.empty() ? "" : "   ") + shown(x);
+    out += alone;
     if (const auto line = d_.program().line_of(r.pc)) out += fmt::format("   {}:{}", file_name(line->file), line->line);
     out += '\n';
     out += fmt::format("interrupts {}  masks M7.5={} M6.5={} M5.5={}  pending I7.5={} I6.5={} I5.5={} TRAP={}\n",

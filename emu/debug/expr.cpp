@@ -6,25 +6,12 @@
 
 #include <fmt/format.h>
 
-#include "asm/isa.h"
+#include "emu/core/cpu_registers.h"
 #include "emu/util/text.h"
 
 namespace alp85::debug {
 
 namespace {
-constexpr std::array<std::string_view, 15> kRegNames = {"A", "B", "C", "D", "E", "H", "L", "F",
-                                                        "M", "BC", "DE", "HL", "SP", "PC", "PSW"};
-struct FlagName {
-    std::string_view name;
-    std::uint8_t bit;
-};
-constexpr std::array<FlagName, 7> kFlags = {{{"S", isa::F_S},
-                                             {"Z", isa::F_Z},
-                                             {"AC", isa::F_AC},
-                                             {"P", isa::F_P},
-                                             {"CY", isa::F_CY},
-                                             {"V", isa::F_V},
-                                             {"K", isa::F_K}}};
 bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '?' || c == '@'; }
 
 // Parsing and evaluating recurse: a bound on the depth keeps a hostile text ("((((...", a
@@ -34,43 +21,17 @@ constexpr int kMaxDepth = 256;
 // Two's-complement arithmetic, as the 64-bit machine word does it: no overflow is undefined.
 std::int64_t wrap(std::uint64_t v) { return static_cast<std::int64_t>(v); }
 std::uint64_t u(std::int64_t v) { return static_cast<std::uint64_t>(v); }
+// The flag byte, as the CPU's description reads it.
+std::uint16_t flag_byte(const Registers& r) { return cpu::description().flag_register()->read(r); }
 }  // namespace
 
-std::optional<RegId> register_named(std::string_view n) {
-    for (std::size_t i = 0; i < kRegNames.size(); ++i)
-        if (kRegNames[i] == n) return static_cast<RegId>(i);
-    return std::nullopt;
-}
-
 std::optional<std::uint8_t> flag_named(std::string_view n) {
-    for (const FlagName& f : kFlags)
-        if (f.name == n) return f.bit;
-    return std::nullopt;
+    const cpu::Flag* f = cpu::description().find_flag(n);
+    if (!f) return std::nullopt;
+    return f->bit;
 }
 
 bool read_only_named(std::string_view n) { return n == "T" || n == "TIME"; }
-
-std::uint16_t read_register(const Machine& m, RegId r) {
-    const Registers& x = m.cpu().regs();
-    switch (r) {
-        case RegId::A: return x.a;
-        case RegId::B: return x.b;
-        case RegId::C: return x.c;
-        case RegId::D: return x.d;
-        case RegId::E: return x.e;
-        case RegId::H: return x.h;
-        case RegId::L: return x.l;
-        case RegId::F: return x.f;
-        case RegId::M: return m.peek(x.hl());
-        case RegId::BC: return x.bc();
-        case RegId::DE: return x.de();
-        case RegId::HL: return x.hl();
-        case RegId::SP: return x.sp;
-        case RegId::PC: return x.pc;
-        case RegId::PSW: return static_cast<std::uint16_t>(x.a << 8 | x.f);
-    }
-    return 0;
-}
 
 // Recursive descent, one level per precedence (C's order).
 class ExprParser {
@@ -127,7 +88,7 @@ private:
     int width_of(int n) const {
         const Expr::Node& x = e_->nodes_[static_cast<std::size_t>(n)];
         switch (x.kind) {
-            case K::Reg: return static_cast<RegId>(x.value) <= RegId::M ? 8 : 16;
+            case K::Reg: return cpu::description().registers[static_cast<std::size_t>(x.value)].width;
             case K::Flag:
             case K::Mem8: return 8;
             case K::Number: return x.value >= -128 && x.value <= 255 ? 8 : 16;
@@ -138,6 +99,16 @@ private:
             case K::Neg: case K::Compl: return width_of(x.a);
             default: return std::max(width_of(x.a), x.b >= 0 ? width_of(x.b) : 8);  // arithmetic: its operands' widest
         }
+    }
+
+    // A register's node; M, the byte at HL, is memory: byte[HL].
+    int register_node(const cpu::Register& r, int col) {
+        const cpu::Description& d = cpu::description();
+        if (r.kind != cpu::Register::Kind::Memory)
+            return add({K::Reg, static_cast<std::int64_t>(d.index_of(r)), -1, -1, col});
+        const cpu::Register* at = d.find(r.high);
+        if (!at) return fail(fmt::format("{} has no address register", r.name), col);
+        return add({K::Mem8, 0, add({K::Reg, static_cast<std::int64_t>(d.index_of(*at)), -1, -1, col}), -1, col});
     }
 
     const BinOp* binop_here(int level) {
@@ -263,7 +234,7 @@ private:
             return bracket(name == "BYTE" ? K::Mem8 : K::Mem16, col);
         }
         auto machine_name = [&]() -> int {
-            if (const auto r = register_named(name)) return add({K::Reg, static_cast<std::int64_t>(*r), -1, -1, col});
+            if (const cpu::Register* r = cpu::description().find(name)) return register_node(*r, col);
             if (const auto f = flag_named(name)) return add({K::Flag, *f, -1, -1, col});
             if (dollar && read_only_named(name)) return add({K::Time, 0, -1, -1, col});
             return -1;
@@ -322,8 +293,8 @@ std::int64_t Expr::eval(const Machine& m, int i) const {
             if (it == vars_->end()) throw ExprError{n.col, fmt::format("no variable '${}'", name)};
             return it->second;
         }
-        case Kind::Reg: return read_register(m, static_cast<RegId>(n.value));
-        case Kind::Flag: return (m.cpu().regs().f & n.value) ? 1 : 0;
+        case Kind::Reg: return cpu::description().registers[static_cast<std::size_t>(n.value)].read(m.cpu().regs());
+        case Kind::Flag: return (flag_byte(m.cpu().regs()) & n.value) ? 1 : 0;
         case Kind::Time: return static_cast<std::int64_t>(m.now());
         case Kind::Mem8: return m.peek(static_cast<std::uint16_t>(a()));
         case Kind::Mem16: {
@@ -370,36 +341,20 @@ std::string Expr::assign(Machine& m, std::int64_t v) const {
     const Node& n = nodes_[static_cast<std::size_t>(root_)];
     Registers& x = m.cpu().regs();
     const auto lo = static_cast<std::uint8_t>(v);
-    const auto word = static_cast<std::uint16_t>(v);
+    const auto word = static_cast<std::uint16_t>(v);  // a register keeps its width's low bits
     auto poke = [&](std::uint16_t addr, std::uint8_t b) {
         return m.poke(addr, b) ? std::string() : fmt::format("no memory at {:04X}H", addr);
     };
     switch (n.kind) {
         case Kind::Reg:
-            switch (static_cast<RegId>(n.value)) {
-                case RegId::A: x.a = lo; break;
-                case RegId::B: x.b = lo; break;
-                case RegId::C: x.c = lo; break;
-                case RegId::D: x.d = lo; break;
-                case RegId::E: x.e = lo; break;
-                case RegId::H: x.h = lo; break;
-                case RegId::L: x.l = lo; break;
-                case RegId::F: x.f = lo; break;
-                case RegId::M: return poke(x.hl(), lo);
-                case RegId::BC: x.set_bc(word); break;
-                case RegId::DE: x.set_de(word); break;
-                case RegId::HL: x.set_hl(word); break;
-                case RegId::SP: x.sp = word; break;
-                case RegId::PC: x.pc = word; break;
-                case RegId::PSW:
-                    x.a = static_cast<std::uint8_t>(word >> 8);
-                    x.f = lo;
-                    break;
-            }
+            cpu::description().registers[static_cast<std::size_t>(n.value)].write(x, word);
             return {};
-        case Kind::Flag:
-            x.f = static_cast<std::uint8_t>(v ? x.f | n.value : x.f & ~n.value);
+        case Kind::Flag: {
+            const cpu::Register* f = cpu::description().flag_register();
+            const std::uint16_t now = f->read(x);
+            f->write(x, static_cast<std::uint16_t>(v ? now | n.value : now & ~n.value));
             return {};
+        }
         case Kind::Mem8: return poke(static_cast<std::uint16_t>(eval(m, n.a)), lo);
         case Kind::Mem16: {
             const auto addr = static_cast<std::uint16_t>(eval(m, n.a));

@@ -1,8 +1,10 @@
 // The debugger's expressions: `print`, `set`, breakpoint and watchpoint conditions, `display`.
 //
 //   numbers   12  0CH  0x0C  1100B  14Q  'A'          (as the command language writes them)
-//   registers A B C D E H L F M(= [HL]) BC DE HL SP PC PSW, or with a $ ($A, $PC)
-//   flags     S Z AC P CY V K (0 or 1), or $S ...     $T: the T-state counter; $NAME: a variable
+//   registers the CPU's description (emu/core/cpu_registers.h): A F B C D E H L PSW BC DE HL SP PC,
+//             M (= [HL]), or with a $ ($A, $PC)
+//   flags     S Z AC P CY V K (X5 for K) (0 or 1), or $S ...
+//             $T: the T-state counter; $NAME: a variable
 //   symbols   OUT  YAC+1  &Z   (a bare name is a register or flag first: &NAME is always the symbol)
 //   memory    [HL]  byte[1B30H]  word[YAC]  (little-endian 16 bits)
 //   operators unary - ! ~; * / %; + -; << >>; < <= > >=; == !=; &; ^; |; &&; ||; parentheses
@@ -61,7 +63,7 @@ public:
     };
     struct Node {
         Kind kind = Kind::Number;
-        std::int64_t value = 0;  // Number: the value; Reg: the register; Flag: its bit
+        std::int64_t value = 0;  // Number: the value; Reg: its index in cpu::description(); Flag: its bit
         int a = -1, b = -1;      // operands (node indices)
         int col = 0;
     };
@@ -78,11 +80,7 @@ private:
     friend class ExprParser;
 };
 
-// Register numbers of Kind::Reg nodes, in the order of the names above.
-enum class RegId : std::uint8_t { A, B, C, D, E, H, L, F, M, BC, DE, HL, SP, PC, PSW };
-std::optional<RegId> register_named(std::string_view upper_name);
-std::uint16_t read_register(const Machine& m, RegId r);
-// The flag bit of S Z AC P CY V K (isa::Flag), or nullopt.
+// The flag bit of a flag's name or alias in the CPU's description (emu/core/cpu_registers.h), or nullopt.
 std::optional<std::uint8_t> flag_named(std::string_view upper_name);
 // A $NAME the machine gives and nothing can set: $T and $TIME, the T-state counter.
 bool read_only_named(std::string_view upper_name);

@@ -134,6 +134,12 @@ private:
     bool render_frame();
     void present(bool painted);
     void pace_script();
+    // Waits for the next frame: 60 a second while the user acts (an event less than kCalm ago, or a
+    // test's clicks and hooks), else 30 - a moving table looks the same and costs half to draw.
+    // An event ends a calm wait at the next sixtieth of a second.
+    static constexpr std::chrono::milliseconds kCalm{500};
+    void wait_frame();
+    HostClock::time_point last_input_{};
     bool in_command_ = false;  // a frame drawn while a script's command runs (pace_script)
     FrameClock clock_{HostClock::now()};
     void finish_stats(double wall, double cpu) const;
@@ -343,6 +349,7 @@ bool App::table_input(const SDL_Event& e, const ImGuiIO& io) {
 
 void App::handle(const SDL_Event& event) {
     ImGui_ImplSDL2_ProcessEvent(&event);
+    last_input_ = HostClock::now();
     const ImGuiIO& io = ImGui::GetIO();
     // The views hit-test in the layout's (logical) coordinates.
     SDL_Event e = event;
@@ -598,7 +605,7 @@ void App::act(const Action& a) {
         case K::LoadSnapshot:
             if (done(session_.restore(absolute(a.arg)))) {  // a refused snapshot leaves the drawing as it was
                 ui_.add_log("restored " + absolute(a.arg));
-                path_.clear();
+                path_.restored();
                 pacer_.rebase(machine().now(), host);
             }
             break;
@@ -676,7 +683,7 @@ void App::drive_debug_hooks() {
         const std::string& line = o_.debug_commands[command_pos_++];
         // Hooks beside command lines: "click:NAME" clicks a named button (controls.run,
         // debug.continue, debug.step, ...), "frames:N" lets N frames pass, "status" prints whether
-        // the board runs and its time, "toolpath" how many points the drawn path has, "clickrow:N"
+        // the board runs and its time, "toolpath" how many points the drawn path has and its ideal line, "clickrow:N"
         // clicks source row N as shown, "source" prints the file and first line the pane shows,
         // "where:NAME" a button's centre in screen coordinates.
         if (line.starts_with("click:")) {
@@ -724,7 +731,11 @@ void App::drive_debug_hooks() {
             return;
         }
         if (line == "toolpath") {
-            std::cout << fmt::format("[gui] toolpath: {} points\n", path_.points().size()) << std::flush;
+            const auto l = path_.ideal(machine());
+            std::cout << fmt::format("[gui] toolpath: {} points, {}\n", path_.points().size(),
+                                     l ? fmt::format("ideal line from {:g},{:g} to {:g},{:g} mm", l->from.x, l->from.y, l->to.x, l->to.y)
+                                       : std::string("no ideal line"))
+                      << std::flush;
             return;
         }
         if (line == "status") {
@@ -861,15 +872,31 @@ void App::pace_script() {
         in_command_ = true;
         present(render_frame());
         in_command_ = false;
-        std::this_thread::sleep_until(clock_.next(HostClock::now()));
+        wait_frame();
     }
+}
+
+void App::wait_frame() {
+    const auto now = HostClock::now();
+    const bool calm = now - last_input_ > kCalm && click_pos_ >= clicks_.size() && debug_hooks_done();
+    if (!calm) {
+        std::this_thread::sleep_until(clock_.next(now));
+        return;
+    }
+    const auto deadline = clock_.next(now, 2);
+    const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count();
+    if (wait > 0 && SDL_WaitEventTimeout(nullptr, static_cast<int>(wait)) == 1) {
+        last_input_ = HostClock::now();
+        std::this_thread::sleep_until(clock_.resume(last_input_));
+        return;
+    }
+    std::this_thread::sleep_until(deadline);
 }
 
 int App::loop() {
     const auto start = HostClock::now();
     const double cpu0 = cpu_seconds();
     clock_ = FrameClock(start);
-    FrameClock& clock = clock_;
     auto fps_t = start;
     long fps_frames = 0;
     while (!quit_ && !g_terminate) {
@@ -898,11 +925,11 @@ int App::loop() {
                     canvas_.bind_for_read();
                     save_screenshot(pending_shot_, kWindowWidth, kWindowHeight);
                     canvas_.unbind();
-                } else {  // a scaled window: the picture as the window shows it
-                    canvas_.present(drawable_.w, drawable_.h, fit_, true);
+                } else {  // a scaled window: the picture as the window shows it, copied there as
+                          // every frame is (only where it changed), so the pixels check that copy too
+                    canvas_.present(drawable_.w, drawable_.h, fit_, expose_);
                     canvas_.bind_window_for_read();
                     save_screenshot(pending_shot_, drawable_.w, drawable_.h);
-                    expose_ = true;
                 }
                 ui_.add_log("screenshot " + pending_shot_);
             } catch (const std::exception& x) {
@@ -920,7 +947,7 @@ int App::loop() {
             fps_ = static_cast<double>(fps_frames) / std::chrono::duration<double>(now - fps_t).count();
             fps_t = now, fps_frames = 0;
         }
-        std::this_thread::sleep_until(clock.next(now));  // pace the frames: no spinning
+        wait_frame();  // pace the frames: no spinning
     }
     const double wall = std::chrono::duration<double>(HostClock::now() - start).count();
     if (o_.stats) finish_stats(wall, cpu_seconds() - cpu0);
@@ -938,11 +965,14 @@ int App::loop() {
 
 void App::finish_stats(double wall, double cpu) const {
     const double sim = board::ms_from_tstates(session_.machine().now()) / 1000;
+    std::cout << fmt::format("stats: renderer {}\n", canvas_.renderer());
     std::cout << fmt::format("stats: {} frames in {:.2f} s = {:.1f} fps ({} of them changed the picture); CPU {:.2f} s = {:.1f}% of one core; "
-                             "simulated {:.3f} s ({:.2f}x real time); speed {}; per frame {:.2f} ms emulating, {:.2f} ms drawing\n",
+                             "simulated {:.3f} s ({:.2f}x real time); speed {}; per frame {:.2f} ms emulating, {:.2f} ms drawing; "
+                             "{:.0f} pixels painted per changed frame\n",
                              frames_, wall, static_cast<double>(frames_) / wall, presented_, cpu, 100 * cpu / wall, sim, sim / wall,
                              kSpeeds[static_cast<std::size_t>(ui_.speed)].label,
-                             1000 * machine_s_ / static_cast<double>(frames_), 1000 * render_s_ / static_cast<double>(frames_));
+                             1000 * machine_s_ / static_cast<double>(frames_), 1000 * render_s_ / static_cast<double>(frames_),
+                             static_cast<double>(canvas_.painted_pixels()) / static_cast<double>(std::max<long>(presented_, 1)));
 }
 
 }  // namespace

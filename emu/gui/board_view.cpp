@@ -62,7 +62,7 @@ void draw_keypad(ImDrawList* dl, const Presser& presser) {
 
     for (const PadKey& k : pad_keys()) {
         const Rect r = key_rect(k);
-        const bool digit = k.pad == Pad::Matrix && k.key <= periph::Key::KF;
+        const bool digit = k.pad == Button::Matrix && k.key <= periph::Key::KF;
         const Rgb face = presser.held(k) ? colour::kKeyPressed : digit ? colour::kKey : colour::kKeyFunction;
         dl->AddRectFilled({r.x, r.y}, {r.x + r.w, r.y + r.h}, to_imu32(face), 5);
         dl->AddRect({r.x, r.y}, {r.x + r.w, r.y + r.h}, IM_COL32(0, 0, 0, 255), 5);

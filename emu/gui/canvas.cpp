@@ -57,7 +57,8 @@ bool Canvas::init(int w, int h) {
     full_ = true;
     present_full_ = true;
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const std::string r = renderer ? renderer : "";
+    renderer_ = renderer ? renderer : "";
+    const std::string& r = renderer_;
     software_ = r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos ||
                 r.find("swrast") != std::string::npos;
     return ok;
@@ -191,21 +192,37 @@ void Canvas::paint(ImDrawData* dd, const std::vector<Rect>& damage) {
 void Canvas::present(int dw, int dh, const Fit& fit, bool full) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    const bool moved = dw != shown_w_ || dh != shown_h_ || fit.scale != shown_fit_.scale || fit.ox != shown_fit_.ox ||
+                       fit.oy != shown_fit_.oy;
+    shown_w_ = dw, shown_h_ = dh, shown_fit_ = fit;
+    if (full || moved || !software_) present_full_ = true;  // a GPU's back buffer is undefined after a swap
     if (dw != w_ || dh != h_ || !fit.identity()) {
-        glViewport(0, 0, dw, dh);
-        glDisable(GL_SCISSOR_TEST);
-        glClearColor(0, 0, 0, 1);
-        glClear(GL_COLOR_BUFFER_BIT);
         const int x0 = static_cast<int>(fit.ox), x1 = static_cast<int>(std::lround(fit.ox + static_cast<float>(w_) * fit.scale));
         const int y1 = dh - static_cast<int>(fit.oy), y0 = dh - static_cast<int>(std::lround(fit.oy + static_cast<float>(h_) * fit.scale));
-        const bool whole = fit.scale == std::floor(fit.scale);
-        glBlitFramebuffer(0, 0, w_, h_, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, whole ? GL_NEAREST : GL_LINEAR);
-        present_full_ = true;  // back at 1:1, everything is copied again
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        return;
-    }
-    if (full) present_full_ = true;
-    if (!software_ || present_full_) {
+        const GLenum filter = fit.scale == std::floor(fit.scale) ? GL_NEAREST : GL_LINEAR;
+        if (present_full_) {
+            glViewport(0, 0, dw, dh);
+            glDisable(GL_SCISSOR_TEST);
+            glClearColor(0, 0, 0, 1);
+            glClear(GL_COLOR_BUFFER_BIT);
+            glBlitFramebuffer(0, 0, w_, h_, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, filter);
+            present_full_ = false;
+        } else {
+            // The whole picture mapped as above, but only where it changed: the scissor keeps the
+            // copy to each damaged rectangle's place in the window (a pixel wider on each side, the
+            // filter's reach), and every pixel comes out as the whole copy would make it.
+            glEnable(GL_SCISSOR_TEST);
+            for (const auto* list : {&damage_, &previous_damage_})
+                for (const Rect& d : *list) {
+                    const Vec2 a = to_window(fit, d.x, d.y), b = to_window(fit, d.x + d.w, d.y + d.h);
+                    const int sx0 = static_cast<int>(std::floor(a.x)) - 1, sx1 = static_cast<int>(std::ceil(b.x)) + 1;
+                    const int sy0 = dh - static_cast<int>(std::ceil(b.y)) - 1, sy1 = dh - static_cast<int>(std::floor(a.y)) + 1;
+                    glScissor(sx0, sy0, sx1 - sx0, sy1 - sy0);
+                    glBlitFramebuffer(0, 0, w_, h_, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, filter);
+                }
+            glDisable(GL_SCISSOR_TEST);
+        }
+    } else if (present_full_) {
         glBlitFramebuffer(0, 0, w_, h_, 0, 0, w_, h_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         present_full_ = false;
     } else {

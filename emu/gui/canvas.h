@@ -35,11 +35,13 @@ public:
     // Copies the picture into the window's back buffer (then swap): with software OpenGL only what
     // this frame and the one before repainted (Mesa's software back buffer keeps its pixels across
     // a swap, and a pair of exchanged buffers would be one frame behind); with a GPU, all of it.
-    // The window's drawable is dw x dh and the picture lies in it at `fit` (layout.h); a scaled
-    // picture is copied whole, scaled (pixel-doubled at whole multiples, filtered otherwise), with
-    // the letterbox cleared. `full`: copy everything (the window was exposed or resized).
+    // The window's drawable is dw x dh and the picture lies in it at `fit` (layout.h), scaled
+    // (pixel-doubled at whole multiples, filtered otherwise): the whole picture with the letterbox
+    // cleared when the size or fit changed, else the same mapping scissored to the changed places.
+    // `full`: copy everything (the window was exposed or resized).
     void present(int dw, int dh, const Fit& fit, bool full);
     bool software() const { return software_; }
+    const std::string& renderer() const { return renderer_; }  // OpenGL's GL_RENDERER
     // Makes the picture the source of glReadPixels (screenshots).
     void bind_for_read();
     void unbind();
@@ -65,7 +67,10 @@ private:
     std::vector<Backdrop::Fill> backdrop_;
     std::vector<Rect> damage_, previous_damage_;
     bool software_ = false;
+    std::string renderer_;
     bool present_full_ = true;
+    int shown_w_ = 0, shown_h_ = 0;  // the window's drawable and the picture's place in it, last present
+    Fit shown_fit_;
     std::uint64_t painted_ = 0;
 };
 

@@ -7,6 +7,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "emu/core/cpu_registers.h"
 #include "emu/gui/controls.h"
 #include "emu/gui/layout.h"
 
@@ -184,6 +185,33 @@ std::vector<DebugPanes::PartPane> part_panes(script::DebugShell& shell) {
     return out;
 }
 
+std::string registers_text(const debug::Debugger& d) {
+    const cpu::Description& desc = cpu::description();
+    const Machine& m = d.machine();
+    const Registers& r = m.cpu().regs();
+    auto shown = [&](const cpu::Register& x) { return fmt::format("{} {}", x.name, x.hex(x.read(r))); };
+    std::vector<std::string> left, right;
+    for (const cpu::Register& x : desc.registers)
+        if (x.kind == cpu::Register::Kind::Pair) left.push_back(shown(*desc.find(x.high)) + "  " + shown(*desc.find(x.low)));
+    for (const cpu::Register& x : desc.registers)
+        if (desc.standalone(x)) right.push_back(shown(x));
+    for (const cpu::Register& x : desc.registers)
+        if (x.kind == cpu::Register::Kind::Memory)
+            if (const cpu::Register* at = desc.find(x.high)) right.push_back(fmt::format("[{}] {:02X}H", at->name, m.peek(at->read(r))));
+    right.push_back(m.cpu().halted() ? "HALTED" : "");
+    std::string out;
+    const std::size_t left_width = left.empty() ? 0 : left.front().size();
+    for (std::size_t i = 0; i < std::max(left.size(), right.size()); ++i)
+        out += fmt::format("{:<{}}   {}\n", i < left.size() ? left[i] : "", left_width, i < right.size() ? right[i] : "");
+    const auto f = desc.flag_register()->read(r);
+    std::string flags;
+    for (const cpu::Flag& flag : desc.flags) flags += fmt::format("{}{}={}", flags.empty() ? "" : " ", flag.name, (f & flag.bit) ? 1 : 0);
+    const std::uint8_t rim = m.cpu().rim_value();
+    out += fmt::format("{}\nIE={} M7.5={} M6.5={} M5.5={} I7.5={}\nT {} ({:.3f} ms)", flags, m.cpu().interrupts_enabled() ? 1 : 0,
+                       (rim >> 2) & 1, (rim >> 1) & 1, rim & 1, (rim >> 6) & 1, m.now(), board::ms_from_tstates(m.now()));
+    return out;
+}
+
 void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     debug::Debugger& d = shell.debugger();
     Machine& m = d.machine();
@@ -194,16 +222,7 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
         p.last_pc = pc;
     }
     if (m.now() != p.last_t) {
-        const Registers& r = m.cpu().regs();
-        const std::uint8_t rim = m.cpu().rim_value();
-        auto f = [&](std::uint8_t bit) { return (r.f & bit) ? 1 : 0; };
-        p.registers = fmt::format(
-            "A {:02X}H  F {:02X}H   SP {:04X}H\nB {:02X}H  C {:02X}H   PC {:04X}H\nD {:02X}H  E {:02X}H   [HL] {:02X}H\n"
-            "H {:02X}H  L {:02X}H   {}\nS={} Z={} AC={} P={} CY={} V={} K={}\nIE={} M7.5={} M6.5={} M5.5={} I7.5={}\n"
-            "T {} ({:.3f} ms)",
-            r.a, r.f, r.sp, r.b, r.c, r.pc, r.d, r.e, m.peek(r.hl()), r.h, r.l, m.cpu().halted() ? "HALTED" : "", f(0x80), f(0x40),
-            f(0x10), f(0x04), f(0x01), f(0x02), f(0x20), m.cpu().interrupts_enabled() ? 1 : 0, (rim >> 2) & 1, (rim >> 1) & 1, rim & 1,
-            (rim >> 6) & 1, m.now(), board::ms_from_tstates(m.now()));
+        p.registers = registers_text(d);
         p.parts = part_panes(shell);
         p.frames = d.backtrace();
         if (p.files.size() != d.program().files().size()) p.files = d.program().files();

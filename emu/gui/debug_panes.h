@@ -55,6 +55,10 @@ struct DebugPanes {
     void add_log(const std::string& text);
 };
 
+// The Registers pane's text: the CPU's description (emu/core/cpu_registers.h) as rows of each
+// pair's two bytes, beside them the registers that stand alone, the memory a pair addresses
+// ([HL]) and HALTED; then the flags, the interrupt state and the time.
+std::string registers_text(const debug::Debugger& d);
 // The parts' panes as the chip pane draws them (every part with a description).
 std::vector<DebugPanes::PartPane> part_panes(script::DebugShell& shell);
 // A command line typed while the machine runs: those that only arm a stop or list (break, tbreak,

@@ -10,12 +10,9 @@
 namespace alp85::gui {
 namespace {
 
-bool same(const PadKey& a, const PadKey& b) { return a.pad == b.pad && (a.pad != Pad::Matrix || a.key == b.key); }
+bool same(const PadKey& a, const PadKey& b) { return a.pad == b.pad && (a.pad != Button::Matrix || a.key == b.key); }
 
-void apply(const PadKey& k, bool down, std::uint64_t at, Machine& m) {
-    const Button b = k.pad == Pad::Matrix ? Button::Matrix : k.pad == Pad::Reset ? Button::Reset : Button::Vect;
-    schedule_key(m, b, k.key, down, at);
-}
+void apply(const PadKey& k, bool down, std::uint64_t at, Machine& m) { schedule_key(m, k.pad, k.key, down, at); }
 
 // The function keys on the PC (the hex keys are their own names); key_map_rows describes them.
 // The last two are the browser's names (KeyboardEvent.key) of Esc and Space.
@@ -72,14 +69,14 @@ std::vector<KeyMapRow> key_map_rows(bool debug) {
 
 std::string_view pc_key_label(const PadKey& k) {
     for (const PcKey& p : kPcKeys)
-        if (const auto pad = find_pad_key(p.pad); pad && pad->pad == k.pad && (k.pad != Pad::Matrix || pad->key == k.key))
+        if (const auto pad = find_pad_key(p.pad); pad && pad->pad == k.pad && (k.pad != Button::Matrix || pad->key == k.key))
             return p.label;
     return periph::Keypad::info(k.key).name;  // the hex digit itself
 }
 
 std::string_view cap_label(const PadKey& k) {
-    if (k.pad == Pad::Reset) return "RESET";
-    if (k.pad == Pad::Vect) return "VECT\nINTR";
+    if (k.pad == Button::Reset) return "RESET";
+    if (k.pad == Button::Vect) return "VECT\nINTR";
     switch (k.key) {
         case periph::Key::Mem: return "SUBST\nMEM";
         case periph::Key::Reg: return "EXAM\nREG";

@@ -50,17 +50,17 @@ Vec2 dp_centre(unsigned digit) {
 namespace {
 using periph::Key;
 constexpr std::array<PadKey, 26> kPad{{
-    {Pad::Reset, Key::K0, 0, 0}, {Pad::Vect, Key::K0, 0, 1}, {Pad::Matrix, Key::R, 0, 2},
-    {Pad::Matrix, Key::KC, 0, 3}, {Pad::Matrix, Key::KD, 0, 4}, {Pad::Matrix, Key::KE, 0, 5},
-    {Pad::Matrix, Key::KF, 0, 6},
-    {Pad::Matrix, Key::Reg, 1, 0}, {Pad::Matrix, Key::Mem, 1, 1}, {Pad::Matrix, Key::Go, 1, 2},
-    {Pad::Matrix, Key::K8, 1, 3}, {Pad::Matrix, Key::K9, 1, 4}, {Pad::Matrix, Key::KA, 1, 5},
-    {Pad::Matrix, Key::KB, 1, 6},
-    {Pad::Matrix, Key::Step, 2, 0}, {Pad::Matrix, Key::Prev, 2, 1}, {Pad::Matrix, Key::Next, 2, 2},
-    {Pad::Matrix, Key::K4, 2, 3}, {Pad::Matrix, Key::K5, 2, 4}, {Pad::Matrix, Key::K6, 2, 5},
-    {Pad::Matrix, Key::K7, 2, 6},
-    {Pad::Matrix, Key::Exec, 3, 2}, {Pad::Matrix, Key::K0, 3, 3}, {Pad::Matrix, Key::K1, 3, 4},
-    {Pad::Matrix, Key::K2, 3, 5}, {Pad::Matrix, Key::K3, 3, 6},
+    {Button::Reset, Key::K0, 0, 0}, {Button::Vect, Key::K0, 0, 1}, {Button::Matrix, Key::R, 0, 2},
+    {Button::Matrix, Key::KC, 0, 3}, {Button::Matrix, Key::KD, 0, 4}, {Button::Matrix, Key::KE, 0, 5},
+    {Button::Matrix, Key::KF, 0, 6},
+    {Button::Matrix, Key::Reg, 1, 0}, {Button::Matrix, Key::Mem, 1, 1}, {Button::Matrix, Key::Go, 1, 2},
+    {Button::Matrix, Key::K8, 1, 3}, {Button::Matrix, Key::K9, 1, 4}, {Button::Matrix, Key::KA, 1, 5},
+    {Button::Matrix, Key::KB, 1, 6},
+    {Button::Matrix, Key::Step, 2, 0}, {Button::Matrix, Key::Prev, 2, 1}, {Button::Matrix, Key::Next, 2, 2},
+    {Button::Matrix, Key::K4, 2, 3}, {Button::Matrix, Key::K5, 2, 4}, {Button::Matrix, Key::K6, 2, 5},
+    {Button::Matrix, Key::K7, 2, 6},
+    {Button::Matrix, Key::Exec, 3, 2}, {Button::Matrix, Key::K0, 3, 3}, {Button::Matrix, Key::K1, 3, 4},
+    {Button::Matrix, Key::K2, 3, 5}, {Button::Matrix, Key::K3, 3, 6},
 }};
 
 bool iequal(std::string_view a, std::string_view b) {
@@ -89,7 +89,7 @@ std::optional<PadKey> find_pad_key(std::string_view name) {
     const auto key = periph::Keypad::find(name);
     if (!key) return std::nullopt;
     for (const PadKey& k : kPad)
-        if (k.pad == Pad::Matrix && k.key == *key) return k;
+        if (k.pad == Button::Matrix && k.key == *key) return k;
     return std::nullopt;
 }
 

@@ -10,6 +10,7 @@
 #include <span>
 #include <utility>
 
+#include "emu/board/key_press.h"
 #include "peripherals/keypad.h"
 
 namespace alp85::gui {
@@ -100,9 +101,8 @@ Vec2 dp_centre(unsigned digit);
 //   REG   MEM   GO   8 9 A B
 //   STEP  PREV  NEXT 4 5 6 7
 //               EXEC 0 1 2 3
-enum class Pad : std::uint8_t { Matrix, Reset, Vect };
 struct PadKey {
-    Pad pad = Pad::Matrix;
+    Button pad = Button::Matrix;  // the board's button (emu/board/key_press.h)
     periph::Key key = periph::Key::K0;  // for Matrix
     int row = 0, col = 0;
 };

@@ -27,11 +27,13 @@ std::uint64_t Pacer::target(std::uint64_t machine_now, HostClock::time_point hos
     return goal;
 }
 
-HostClock::time_point FrameClock::next(HostClock::time_point now) {
+HostClock::time_point FrameClock::next(HostClock::time_point now, int every) {
     ++frame_;
+    frame_ += (every - frame_ % every) % every;
     auto deadline = start_ + kPeriod * frame_;
     if (deadline <= now) {  // overran: skip to the next deadline still ahead
         frame_ = (now - start_) / kPeriod + 1;
+        frame_ += (every - frame_ % every) % every;
         deadline = start_ + kPeriod * frame_;
     }
     return deadline;

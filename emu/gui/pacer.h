@@ -39,8 +39,14 @@ class FrameClock {
 public:
     static constexpr std::chrono::nanoseconds kPeriod{16'666'667};
     explicit FrameClock(HostClock::time_point start) : start_(start) {}
-    // The deadline of the frame after the one that ends now.
-    HostClock::time_point next(HostClock::time_point now);
+    // The deadline of the frame after the one that ends now; with `every` = 2, of the next frame
+    // of a grid twice as coarse (30 frames a second).
+    HostClock::time_point next(HostClock::time_point now, int every = 1);
+    // A wait ended early (an event): the grid goes on from the first deadline after `now`.
+    HostClock::time_point resume(HostClock::time_point now) {
+        frame_ = (now - start_) / kPeriod + 1;
+        return start_ + kPeriod * frame_;
+    }
 
 private:
     HostClock::time_point start_;

@@ -13,6 +13,13 @@ void Toolpath::clear() {
     have_cmd_ = false;
     cleared_ = true;
     anchor_.reset();
+    past_unknown_ = false;
+}
+
+void Toolpath::restored() {
+    clear();
+    cleared_ = false;
+    past_unknown_ = true;
 }
 
 std::optional<std::array<std::int32_t, 4>> Toolpath::read_vars(const Machine& m) const {
@@ -46,6 +53,7 @@ void Toolpath::observe(const debug::ToolSample& s, const Machine& m) {
             if (const auto v = read_vars(m)) {
                 anchor_ = last_cmd_;
                 anchor_vars_ = *v;
+                past_unknown_ = false;
             }
         }
         last_cmd_ = cmd;
@@ -60,6 +68,8 @@ std::optional<Toolpath::Line> Toolpath::ideal(const Machine& m) const {
     Line line;
     if (anchor_) {
         v = anchor_vars_, from = *anchor_, line.started = true;
+    } else if (past_unknown_) {
+        return std::nullopt;
     } else {
         const auto now = read_vars(m);
         if (!now) return std::nullopt;
@@ -75,7 +85,12 @@ std::optional<Toolpath::Line> Toolpath::ideal(const Machine& m) const {
 
 Bounds Toolpath::workpiece(const Machine& m) const {
     PointMm o{};
-    if (const auto l = ideal(m)) o = l->origin;
+    if (const auto l = ideal(m)) {
+        o = l->origin;
+    } else if (const auto v = past_unknown_ ? read_vars(m) : std::nullopt) {  // standing at (X2, Y2)
+        o = {static_cast<double>(m.tool().commanded_steps(periph::MachineTool::Axis::X) - (*v)[2]) * kStepMm,
+             static_cast<double>(m.tool().commanded_steps(periph::MachineTool::Axis::Y) - (*v)[3]) * kStepMm};
+    }
     return {o.x, o.y, o.x + kWorkpieceW, o.y + kWorkpieceH};
 }
 

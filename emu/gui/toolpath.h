@@ -6,10 +6,13 @@
 // steps from where it stood. A move is taken to start when the commanded X or Y steps change after
 // at least kIdle of simulated time without a change; the line then runs from the commanded
 // position before that change. Before any move the line is drawn from where the table stands.
-// After clear() (a boot, a reset, a restored snapshot) the table's past is unknown: the first change
-// seen starts a move, as the table stood at a prompt when the path was cleared. (Without this, a
-// move begun less than kIdle after a restore had no start, and its line followed the table.)
-// A snapshot restored in the middle of a move draws that move's line from where the table was then.
+// After clear() (a boot, a reset, a new workpiece) the table stands still: the first change seen
+// starts a move. (Without this, a move begun less than kIdle after a reset had no start, and its
+// line followed the table.)
+// After restored() (a snapshot) the table may stand where a move ended or be in the middle of one:
+// no line is drawn until a move is seen to begin, a change after kIdle standing; the workpiece is
+// drawn as if the table stood where the last move (X2, Y2) ended, which holds at every prompt.
+// A move begun less than kIdle after a restore therefore draws no line.
 // Not done: a feed so slow that one step takes longer than kIdle re-anchors the line at each step.
 #pragma once
 
@@ -38,6 +41,7 @@ public:
     void set_variables(std::optional<std::uint16_t> x1) { vars_at_ = x1; }
     void observe(const debug::ToolSample& s, const Machine& m);
     void clear();
+    void restored();  // clear(), and the table's past is unknown
 
     const std::vector<PointMm>& points() const { return points_; }
     struct Line {
@@ -60,6 +64,7 @@ private:
     std::uint64_t last_change_ = 0;
     bool have_cmd_ = false;
     bool cleared_ = true;  // no change seen since clear(): the first one starts a move
+    bool past_unknown_ = false;  // restored: no line until a move is seen to begin
     std::optional<std::array<std::int64_t, 2>> anchor_;  // commanded steps at the move's start
     std::array<std::int32_t, 4> anchor_vars_{};
 };

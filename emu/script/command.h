@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "emu/board/key_press.h"
+#include "emu/core/cpu_registers.h"
 #include "peripherals/keypad.h"
 
 namespace alp85::script {
@@ -27,19 +28,13 @@ struct Value {
     std::string text;    // as written, for messages
 };
 
+// A key as the script names it: the board's button (emu/board/key_press.h schedules it).
 struct KeyRef {
-    enum class Kind : std::uint8_t { Matrix, Reset, Vect };
-    Kind kind = Kind::Matrix;
-    periph::Key key = periph::Key::K0;
+    Button kind = Button::Matrix;
+    periph::Key key = periph::Key::K0;  // for Matrix
     std::string name;
 };
 
-// The board's button a key stands for (emu/board/key_press.h schedules it).
-inline Button button_of(const KeyRef& k) {
-    return k.kind == KeyRef::Kind::Matrix ? Button::Matrix : k.kind == KeyRef::Kind::Reset ? Button::Reset : Button::Vect;
-}
-
-enum class Reg : std::uint8_t { A, B, C, D, E, H, L, F, BC, DE, HL, SP, PC, PSW };
 enum class Compare : std::uint8_t { Lt, Le, Eq, Ge, Gt };
 
 enum class Op : std::uint8_t {
@@ -67,9 +62,9 @@ struct Command {
     std::vector<KeyRef> keys;
     std::uint64_t time = 0;             // run TIME, hold, timeout, expect time (T-states)
     std::uint64_t gap = 0;              // press: gap after release
-    Reg reg = Reg::A;
+    const cpu::Register* reg = nullptr; // expect & set reg: in the CPU's description (emu/core/cpu_registers.h)
     std::uint8_t flag = 0;              // flag bit (isa::Flag)
-    std::string flag_name;
+    std::string flag_name;              // as written (CY, C)
     char port = 'A';
     Compare compare = Compare::Eq;
     std::string name;                   // expect symbol NAME

@@ -12,7 +12,6 @@
 
 #include <fmt/format.h>
 
-#include "asm/isa.h"
 #include "emu/board/board_map.h"
 #include "emu/util/input_file.h"
 #include "emu/util/text.h"
@@ -184,14 +183,14 @@ private:
         return true;
     }
 
-    bool reg(Reg& r) {
+    bool reg(const cpu::Register*& r) {
         if (!more() || peek().quoted) return missing("a register");
-        const auto v = parse_reg(peek().text);
+        const cpu::Register* v = parse_reg(peek().text);
         if (!v) {
             error(peek().col, fmt::format("unknown register '{}'", peek().text));
             return false;
         }
-        r = *v;
+        r = v;
         ++pos_;
         return true;
     }
@@ -544,13 +543,10 @@ private:
         if (w == "FLAG") {
             c.op = Op::ExpectFlag;
             if (!more()) return missing("a flag (S Z AC P CY V K)");
-            static const std::map<std::string, std::uint8_t> flags = {
-                {"S", isa::F_S}, {"Z", isa::F_Z}, {"K", isa::F_K}, {"X5", isa::F_K}, {"AC", isa::F_AC},
-                {"P", isa::F_P}, {"V", isa::F_V}, {"CY", isa::F_CY}, {"C", isa::F_CY}};
-            const auto f = flags.find(to_upper(peek().text));
-            if (f == flags.end()) return fail(peek(), fmt::format("unknown flag '{}'", peek().text)), false;
-            c.flag = f->second;
-            c.flag_name = f->first;
+            const cpu::Flag* f = cpu::description().find_flag(peek().text);
+            if (!f) return fail(peek(), fmt::format("unknown flag '{}'", peek().text)), false;
+            c.flag = f->bit;
+            c.flag_name = to_upper(peek().text);
             ++pos_;
             Value v;
             if (!value(v, "0 or 1")) return false;
@@ -879,9 +875,9 @@ std::optional<std::uint64_t> parse_time(std::string_view text) {
 
 std::optional<KeyRef> parse_key(std::string_view text) {
     const std::string u = to_upper(text);
-    if (u == "RESET") return KeyRef{KeyRef::Kind::Reset, periph::Key::K0, u};
-    if (u == "VECT" || u == "VECTINTR" || u == "VECT_INTR") return KeyRef{KeyRef::Kind::Vect, periph::Key::K0, "VECT"};
-    if (const auto k = periph::Keypad::find(u)) return KeyRef{KeyRef::Kind::Matrix, *k, u};
+    if (u == "RESET") return KeyRef{Button::Reset, periph::Key::K0, u};
+    if (u == "VECT" || u == "VECTINTR" || u == "VECT_INTR") return KeyRef{Button::Vect, periph::Key::K0, "VECT"};
+    if (const auto k = periph::Keypad::find(u)) return KeyRef{Button::Matrix, *k, u};
     return std::nullopt;
 }
 
@@ -912,19 +908,9 @@ std::optional<std::vector<KeyRef>> parse_key_list(std::string_view text, std::st
     return keys;
 }
 
-std::optional<Reg> parse_reg(std::string_view text) {
-    static const std::map<std::string, Reg> regs = {
-        {"A", Reg::A},   {"B", Reg::B},   {"C", Reg::C},   {"D", Reg::D},   {"E", Reg::E},
-        {"H", Reg::H},   {"L", Reg::L},   {"F", Reg::F},   {"BC", Reg::BC}, {"DE", Reg::DE},
-        {"HL", Reg::HL}, {"SP", Reg::SP}, {"PC", Reg::PC}, {"PSW", Reg::PSW}};
-    const auto it = regs.find(to_upper(text));
-    if (it == regs.end()) return std::nullopt;
-    return it->second;
-}
-
-std::string_view reg_name(Reg r) {
-    static constexpr std::string_view names[] = {"A", "B", "C", "D", "E", "H", "L", "F", "BC", "DE", "HL", "SP", "PC", "PSW"};
-    return names[static_cast<int>(r)];
+const cpu::Register* parse_reg(std::string_view text) {
+    const cpu::Register* r = cpu::description().find(text);
+    return r && r->kind != cpu::Register::Kind::Memory ? r : nullptr;
 }
 
 }  // namespace alp85::script

@@ -49,7 +49,8 @@ std::optional<KeyRef> parse_key(std::string_view text);
 // that is not a key name but is all hex digits is typed digit by digit). On error: nullopt, the
 // message, and the 0-based offset of the word in `text`.
 std::optional<std::vector<KeyRef>> parse_key_list(std::string_view text, std::string& error, std::size_t& offset);
-std::optional<Reg> parse_reg(std::string_view text);
-std::string_view reg_name(Reg r);
+// A register the script reads and sets (expect reg, set reg): one of the CPU's description
+// (emu/core/cpu_registers.h), any case, but memory (M, which `expect mem` and `set mem` reach).
+const cpu::Register* parse_reg(std::string_view text);
 
 }  // namespace alp85::script

@@ -24,7 +24,6 @@ std::string rtrim(std::string s) {
 
 std::string hex(std::int64_t v, int digits) { return fmt::format("{:0{}X}H", v, digits); }
 
-bool is_pair(Reg r) { return r >= Reg::BC; }
 
 // The command that writes a file, as a refusal names it.
 const char* op_word(Op op) { return op == Op::Save ? "save" : op == Op::Record ? "record" : "plot"; }
@@ -259,7 +258,7 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 break;
             case Op::ExpectReg:
             case Op::SetReg:
-                check_value(c, c.values[0], is_pair(c.reg) ? -32768 : -128, is_pair(c.reg) ? 0xFFFF : 0xFF, "value");
+                check_value(c, c.values[0], -(std::int64_t{1} << (c.reg->width - 1)), c.reg->mask(), "value");
                 break;
             case Op::ExpectPort: check_value(c, c.values[0], 0, 0xFF, "value"); break;
             case Op::ExpectSymbol:
@@ -329,57 +328,10 @@ debug::Stop Session::run_paced(std::uint64_t until, const std::function<bool()>&
 
 Session::Outcome Session::press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap) {
     Machine& m = *machine_;
-    const Button button = key.kind == KeyRef::Kind::Matrix ? Button::Matrix
-                          : key.kind == KeyRef::Kind::Reset ? Button::Reset
-                                                            : Button::Vect;
+    const Button button = key.kind;
     if (button == Button::Reset) time_origin_ = m.now();
     run_paced(schedule_press(m, button, key.key, hold, gap), {}, origin(c));
     return {};
-}
-
-std::uint16_t Session::read_reg(Reg r) const {
-    const Registers& x = machine_->cpu().regs();
-    switch (r) {
-        case Reg::A: return x.a;
-        case Reg::B: return x.b;
-        case Reg::C: return x.c;
-        case Reg::D: return x.d;
-        case Reg::E: return x.e;
-        case Reg::H: return x.h;
-        case Reg::L: return x.l;
-        case Reg::F: return x.f;
-        case Reg::BC: return x.bc();
-        case Reg::DE: return x.de();
-        case Reg::HL: return x.hl();
-        case Reg::SP: return x.sp;
-        case Reg::PC: return x.pc;
-        case Reg::PSW: return static_cast<std::uint16_t>(x.a << 8 | x.f);
-    }
-    return 0;
-}
-
-void Session::write_reg(Reg r, std::uint16_t v) {
-    Registers& x = machine_->cpu().regs();
-    const auto lo = static_cast<std::uint8_t>(v);
-    switch (r) {
-        case Reg::A: x.a = lo; break;
-        case Reg::B: x.b = lo; break;
-        case Reg::C: x.c = lo; break;
-        case Reg::D: x.d = lo; break;
-        case Reg::E: x.e = lo; break;
-        case Reg::H: x.h = lo; break;
-        case Reg::L: x.l = lo; break;
-        case Reg::F: x.f = lo; break;
-        case Reg::BC: x.set_bc(v); break;
-        case Reg::DE: x.set_de(v); break;
-        case Reg::HL: x.set_hl(v); break;
-        case Reg::SP: x.sp = v; break;
-        case Reg::PC: x.pc = v; break;
-        case Reg::PSW:
-            x.a = static_cast<std::uint8_t>(v >> 8);
-            x.f = lo;
-            break;
-    }
 }
 
 Session::Outcome Session::expect(const Command& c) {
@@ -421,15 +373,15 @@ Session::Outcome Session::expect(const Command& c) {
         case Op::ExpectReg: {
             const auto v = value(c.values[0]);
             if (!v) return fail(c, e);
-            const int digits = is_pair(c.reg) ? 4 : 2;
-            const std::uint16_t want = static_cast<std::uint16_t>(*v & (is_pair(c.reg) ? 0xFFFF : 0xFF));
-            const std::uint16_t got = read_reg(c.reg);
-            if (want != got) return fail_expect(c, fmt::format("{} = {}", reg_name(c.reg), hex(want, digits)), hex(got, digits));
+            const int digits = c.reg->width > 8 ? 4 : 2;
+            const std::uint16_t want = static_cast<std::uint16_t>(*v & c.reg->mask());
+            const std::uint16_t got = c.reg->read(m.cpu().regs());
+            if (want != got) return fail_expect(c, fmt::format("{} = {}", c.reg->name, hex(want, digits)), hex(got, digits));
             return {};
         }
         case Op::ExpectFlag: {
             const bool want = c.values[0].number != 0;
-            const bool got = (m.cpu().regs().f & c.flag) != 0;
+            const bool got = (cpu::description().flag_register()->read(m.cpu().regs()) & c.flag) != 0;
             if (want != got) return fail_expect(c, fmt::format("{} = {}", c.flag_name, want ? 1 : 0), got ? "1" : "0");
             return {};
         }
@@ -813,8 +765,8 @@ Session::Outcome Session::run_command(const Command& c) {
         case Op::KeyUp: {
             const bool down = c.op == Op::KeyDown;
             const KeyRef& k = c.keys[0];
-            if (k.kind == KeyRef::Kind::Matrix) m.key_at(k.key, down, m.now());
-            else if (k.kind == KeyRef::Kind::Vect) m.vect_intr_at(down, m.now());
+            if (k.kind == Button::Matrix) m.key_at(k.key, down, m.now());
+            else if (k.kind == Button::Vect) m.vect_intr_at(down, m.now());
             else {
                 m.reset_key_at(down, m.now());
                 if (down) time_origin_ = m.now();
@@ -870,7 +822,7 @@ Session::Outcome Session::run_command(const Command& c) {
         case Op::SetReg: {
             const auto v = resolve(c.values[0], e);
             if (!v) return fail(c, e);
-            write_reg(c.reg, static_cast<std::uint16_t>(*v));
+            c.reg->write(m.cpu().regs(), static_cast<std::uint16_t>(*v & c.reg->mask()));
             return {};
         }
         case Op::Save:

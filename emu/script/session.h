@@ -154,8 +154,6 @@ private:
     Outcome write_signals();
     debug::Stop run_paced(std::uint64_t until, const std::function<bool()>& condition, const debug::Origin& o);
     std::string axes_text() const;
-    std::uint16_t read_reg(Reg r) const;
-    void write_reg(Reg r, std::uint16_t v);
 
     SessionOptions options_;
     std::unique_ptr<Machine> machine_;

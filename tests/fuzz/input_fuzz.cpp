@@ -55,7 +55,7 @@ void fuzz_snapshot_sections(const std::uint8_t* data, std::size_t size) {
 void fuzz_machine_tool(const std::uint8_t* data, std::size_t size) {
     if (size < 1) return;
     using periph::MachineTool;
-    MachineTool m;
+    MachineTool m(3.072e6);  // T-states per second: the ALP 85's CPU clock
     m.set_model(data[0] & 1 ? MachineTool::MotorModel::Physical : MachineTool::MotorModel::Ideal);
     if (data[0] & 2) m.set_feedback(MachineTool::Feedback::Commanded);
     std::uint64_t t = 0;

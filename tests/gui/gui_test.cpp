@@ -53,6 +53,21 @@ TEST(FrameClock, DeadlinesAreAbsoluteAndAnOverrunSkipsAhead) {
     EXPECT_EQ(c.next(t0 + 100ms), t0 + FrameClock::kPeriod * 6);  // frames 3-5 were missed
 }
 
+// Calm frames (no input): every second deadline of the 60 Hz grid, 30 a second; an event ends the
+// wait and the grid goes on from the next sixtieth.
+TEST(FrameClock, CalmFramesKeepEverySecondDeadlineAndAnEventResumesTheGrid) {
+    const HostClock::time_point t0{};
+    const auto p = FrameClock::kPeriod;
+    FrameClock c(t0);
+    EXPECT_EQ(c.next(t0 + 5ms, 2), t0 + p * 2);
+    EXPECT_EQ(c.next(t0 + p * 2 + 1ms, 2), t0 + p * 4);
+    EXPECT_EQ(c.next(t0 + p * 4 + 1ms, 2), t0 + p * 6);
+    EXPECT_EQ(c.resume(t0 + p * 4 + 20ms), t0 + p * 6);  // 86.7 ms: the deadline after it is frame 6 (100 ms)
+    EXPECT_EQ(c.next(t0 + p * 6 + 1ms), t0 + p * 7);      // at 60 a second again
+    EXPECT_EQ(c.next(t0 + p * 7 + 1ms, 2), t0 + p * 8);
+    EXPECT_EQ(c.next(t0 + 201ms, 2), t0 + p * 14);         // overran past frame 12 (200 ms): 13 is odd
+}
+
 TEST(Layout, EveryButtonIsFoundAtItsCentreAndTheyDoNotOverlap) {
     EXPECT_EQ(pad_keys().size(), 26u);
     for (const PadKey& k : pad_keys()) {
@@ -63,8 +78,8 @@ TEST(Layout, EveryButtonIsFoundAtItsCentreAndTheyDoNotOverlap) {
         EXPECT_EQ(hit->col, k.col);
     }
     EXPECT_EQ(find_pad_key("exec")->key, periph::Key::Exec);
-    EXPECT_EQ(find_pad_key("RESET")->pad, Pad::Reset);
-    EXPECT_EQ(find_pad_key("VECT")->pad, Pad::Vect);
+    EXPECT_EQ(find_pad_key("RESET")->pad, Button::Reset);
+    EXPECT_EQ(find_pad_key("VECT")->pad, Button::Vect);
     EXPECT_FALSE(key_at(kKeyX0 + kKeyW + 1, kKeyY0 + 1));  // the gap between two buttons
 }
 
@@ -170,7 +185,7 @@ TEST(Toolpath, TheIdealLineStartsWhereTheTableStoodWhenTheMoveBegan) {
     EXPECT_EQ(path.points().size(), 2u);
 }
 
-// A path cleared (a restored snapshot at the feed prompt, then EXEC at once): the first step comes
+// A path cleared (a reset or a new workpiece at the feed prompt, then EXEC at once): the first step comes
 // well within kIdle of the first sample, and still begins the move; the line stays where the move
 // began while the table goes on.
 TEST(Toolpath, AMoveBegunRightAfterAClearStartsWhereTheTableStood) {
@@ -196,6 +211,50 @@ TEST(Toolpath, AMoveBegunRightAfterAClearStartsWhereTheTableStood) {
             EXPECT_DOUBLE_EQ(line->to.y, 7.5);                                   // (200 - 50) steps
         }
     }
+}
+
+// A snapshot taken at Bitti (the thesis line X1,Y1 = 0,0 to X2,Y2 = 200,150 steps, done): the table
+// stands at 10, 7.5 mm. The line it ran is not known after the restore, and the one from where the
+// table stands, (10, 7.5) to (20, 15), was never commanded: no line until the next move begins, and
+// the workpiece where the finished move puts it: X2, Y2 steps before where the table stands.
+TEST(Toolpath, ARestoredSnapshotDrawsNoLineUntilTheNextMoveBegins) {
+    Machine m;
+    Toolpath path;
+    path.set_variables(0x1B00);
+    for (auto [a, v] : {std::pair{0x1B00, 0}, {0x1B03, 0}, {0x1B06, 200}, {0x1B09, 150}}) {
+        m.poke(static_cast<std::uint16_t>(a), static_cast<std::uint8_t>(v & 0xFF));
+        m.poke(static_cast<std::uint16_t>(a + 1), static_cast<std::uint8_t>(v >> 8));
+    }
+    ASSERT_TRUE(path.ideal(m));  // the line as a reset leaves it: from where the table stands
+    path.restored();
+    EXPECT_FALSE(path.ideal(m));
+    // This machine's sequencers stand at 0 steps: the finished move began 200, 150 steps before.
+    const Bounds w = path.workpiece(m);
+    EXPECT_DOUBLE_EQ(w.x0, -200 * 0.05);
+    EXPECT_DOUBLE_EQ(w.y0, -150 * 0.05);
+    debug::ToolSample s;
+    s.t = 1000;
+    s.axes[0].commanded = 200, s.axes[1].commanded = 150;  // where Bitti left the table
+    path.observe(s, m);
+    EXPECT_FALSE(path.ideal(m));
+    // The middle of a move restored: steps 3 ms apart, never kIdle standing: still no line.
+    for (int step = 1; step <= 20; ++step) {
+        s.t += board::tstates_from_ms(3);
+        s.axes[0].commanded = 200 + step;
+        path.observe(s, m);
+        EXPECT_FALSE(path.ideal(m)) << "step " << step;
+    }
+    // The table stands for kIdle, then the next move begins: its line starts where the table stood.
+    s.t += Toolpath::kIdle;
+    s.axes[0].commanded = 221;
+    path.observe(s, m);
+    const auto line = path.ideal(m);
+    ASSERT_TRUE(line);
+    EXPECT_TRUE(line->started);
+    EXPECT_DOUBLE_EQ(line->from.x, 220 * 0.05);
+    EXPECT_DOUBLE_EQ(line->from.y, 150 * 0.05);
+    EXPECT_DOUBLE_EQ(line->to.x, 220 * 0.05 + 10);   // (200 - 0) steps
+    EXPECT_DOUBLE_EQ(line->to.y, 150 * 0.05 + 7.5);  // (150 - 0) steps
 }
 
 // The window on a 1366x768 laptop: the largest size that leaves room for a title bar and a panel,

@@ -42,7 +42,7 @@ void lost_against_rate(const std::string& title, const std::vector<plot::Series>
 void figures(const std::string& dir, const std::string& ext) {
     // 1. Step response: one step from rest (pulse high for 1 ms), rotor angle every 0.1 ms.
     {
-        MachineTool m;
+        MachineTool m(kClock);
         const std::uint64_t t0 = 1000;
         plot::Series rotor{"rotor (physical model)", {}}, ideal{"ideal model", {{-1, 0}, {0, 0}, {0, 1.8}, {40, 1.8}}, false, true};
         plot::Series current{"phase A current x 10 (A)", {}};
@@ -99,7 +99,7 @@ int replay(const char* file) {
         std::fprintf(stderr, "machine_calibrate: cannot open %s\n", file);
         return 2;
     }
-    MachineTool m;
+    MachineTool m(kClock);
     m.set_model(MachineTool::MotorModel::Physical);
     double t = 0, last = 0;
     int axis = 0, dir = 0, line = 0;

@@ -28,7 +28,7 @@ std::uint64_t steps(MachineTool& m, Axis a, int n, bool dir, std::uint64_t t0, s
 }
 
 TEST(MachineToolIdeal, CountsStepsPositionAndTransducer) {
-    MachineTool m;
+    MachineTool m(kClock);
     m.set_model(Model::Ideal);
     auto t = steps(m, Axis::X, 200, true, 1000);
     EXPECT_EQ(m.commanded_steps(Axis::X), 200);
@@ -45,7 +45,7 @@ TEST(MachineToolIdeal, CountsStepsPositionAndTransducer) {
 }
 
 TEST(MachineToolIdeal, SenseTogglesCountOncePerStepWithDirection) {
-    MachineTool m;
+    MachineTool m(kClock);
     m.set_model(Model::Ideal);
     std::uint64_t t = 1000;
     bool last = m.sense(Axis::Y, t).count;
@@ -61,7 +61,7 @@ TEST(MachineToolIdeal, SenseTogglesCountOncePerStepWithDirection) {
 }
 
 TEST(MachineToolIdeal, EndStopHoldsTheTableAndReports) {
-    MachineTool m;
+    MachineTool m(kClock);
     m.set_model(Model::Ideal);
     std::vector<std::tuple<Axis, bool, std::uint64_t>> events;
     m.on_end_stop([&](Axis a, bool high, std::uint64_t t) { events.emplace_back(a, high, t); });
@@ -83,7 +83,7 @@ TEST(MachineToolIdeal, EndStopHoldsTheTableAndReports) {
 }
 
 TEST(MachineToolPhysical, EndStopStallsTheMotor) {
-    MachineTool m;
+    MachineTool m(kClock);
     int hits = 0;
     m.on_end_stop([&](Axis a, bool high, std::uint64_t) { hits += a == Axis::Y && !high; });
     // Y from 0 toward the low stop at -5 mm (-100 steps), 201 steps asked at 100 steps/s: the
@@ -127,7 +127,7 @@ std::vector<std::uint8_t> saved(const MachineTool& m) {
 }
 
 TEST(MachineToolPhysical, SameInputsSameResultWhateverTheReads) {
-    MachineTool a, b;
+    MachineTool a(kClock), b(kClock);
     workload(a, 500, 120, 0);
     workload(b, 500, 120, 5);
     a.advance(2'000'000);
@@ -139,12 +139,12 @@ TEST(MachineToolPhysical, SameInputsSameResultWhateverTheReads) {
 }
 
 TEST(MachineToolPhysical, SaveLoadContinueIsBitForBit) {
-    MachineTool a;
+    MachineTool a(kClock);
     workload(a, 500, 60, 1);
     a.advance(500 + 60 * 6000 + 777);  // mid-ring, between grid points
     ASSERT_FALSE(a.all_settled());
     const auto snap = saved(a);
-    MachineTool b;
+    MachineTool b(kClock);
     b.load(snap);
     EXPECT_EQ(saved(b), snap);
     workload(a, 500 + 61 * 6000, 60, 2);
@@ -162,10 +162,10 @@ TEST(MachineToolPhysical, SaveLoadContinueIsBitForBit) {
 }
 
 TEST(MachineToolPhysical, LoadRejectsBadStateAndKeepsItsOwn) {
-    MachineTool a;
+    MachineTool a(kClock);
     workload(a, 500, 10, 0);
     auto snap = saved(a);
-    MachineTool b;
+    MachineTool b(kClock);
     const auto before = saved(b);
     auto truncated = snap;
     truncated.pop_back();
@@ -178,7 +178,7 @@ TEST(MachineToolPhysical, LoadRejectsBadStateAndKeepsItsOwn) {
 }
 
 TEST(MachineToolPhysical, SettledRotorsAreNotIntegrated) {
-    MachineTool m;
+    MachineTool m(kClock);
     auto t = steps(m, Axis::X, 3, true, 1000);
     EXPECT_FALSE(m.settled(Axis::X));
     m.advance(t + tstates(0.5));
@@ -207,7 +207,7 @@ TEST(MotorPhysical, StepsSideBySideAreBitForBitTheStepsAlone) {
     p.axes[1].table.mass_kg = 5.0;    // a lighter Y table
     p.axes[2].table.travel_mm = 1.0;  // Z between stops 1 mm + overtravel apart: hits them
     p.axes[2].table.friction_mu = 0.3;
-    const MachineTool tool(p);
+    const MachineTool tool(kClock, p);
     const periph::StepperMotor* motors[3] = {&tool.motor(Axis::X), &tool.motor(Axis::Y), &tool.motor(Axis::Z)};
     using State = periph::StepperMotor::State;
     const auto bits = [](const State& s) {
@@ -244,7 +244,7 @@ TEST(MotorPhysical, StepsSideBySideAreBitForBitTheStepsAlone) {
 }
 
 TEST(MachineTool, IsAPartWithNoEvents) {
-    MachineTool m;
+    MachineTool m(kClock);
     periph::Part& p = m;
     EXPECT_EQ(p.next_event(), periph::Part::kNever);
     p.advance(12345);
@@ -264,7 +264,7 @@ namespace {
 // power-on position), then switched to the physical model, saved a rotor angle one rounding
 // beyond the stop's, which its own load refused.
 TEST(MachineToolIdeal, ARotorLeftAtAStopBySwitchingModelsSavesAndLoads) {
-    MachineTool m;
+    MachineTool m(kClock);
     m.set_model(MachineTool::MotorModel::Ideal);
     std::uint64_t t = 1000;
     for (int k = 0; k < 110; ++k, t += 12'000) {
@@ -276,7 +276,7 @@ TEST(MachineToolIdeal, ARotorLeftAtAStopBySwitchingModelsSavesAndLoads) {
     m.advance(t + 3'072'000);
     std::vector<std::uint8_t> saved;
     m.save(saved);
-    MachineTool copy;
+    MachineTool copy(kClock);
     EXPECT_NO_THROW(copy.load(saved));
     EXPECT_NEAR(copy.table_mm(MachineTool::Axis::X), -5.0, 1e-9);
 }

@@ -34,7 +34,7 @@ TEST(MotorPhysical, SmallSignalRingingFrequency) {
     auto p = MachineTool::default_params();
     p.axes[0].table.friction_mu = 0.0;
     p.axes[0].motor.viscous_nms = 0.0;
-    MachineTool m(p);
+    MachineTool m(kClock, p);
     const std::uint64_t dt = 8;  // 2.6 us samples
     const auto y = step_response(m, 1000, dt, 40000);
     // Zero crossings (linear interpolation), in T-states.
@@ -68,7 +68,7 @@ TEST(MotorPhysical, SmallSignalRingingFrequency) {
 }
 
 TEST(MotorPhysical, OneStepSettlesOnTheStep) {
-    MachineTool m;
+    MachineTool m(kClock);
     m.set_drive(Axis::X, true, true, 1000);
     m.advance(1000 + tstates(0.5));
     EXPECT_TRUE(m.settled(Axis::X));
@@ -80,7 +80,7 @@ TEST(MotorPhysical, OneStepSettlesOnTheStep) {
 }
 
 TEST(MotorPhysical, NoLossIn2000StepsAt300) {
-    MachineTool m;
+    MachineTool m(kClock);
     pulse_train(m, Axis::X, 2000, 300.0, true, 1000);
     EXPECT_EQ(m.commanded_steps(Axis::X), 2000);
     EXPECT_EQ(m.lost_steps(Axis::X), 0);
@@ -89,7 +89,7 @@ TEST(MotorPhysical, NoLossIn2000StepsAt300) {
 }
 
 TEST(MotorPhysical, LosesStepsAt600AndTheTransducerSeesTheRealPosition) {
-    MachineTool m;
+    MachineTool m(kClock);
     pulse_train(m, Axis::X, 200, 600.0, true, 1000);
     EXPECT_GT(m.lost_steps(Axis::X), 0);
     // The scale's lines lie half-way between steps: the count is the nearest whole step.
@@ -120,7 +120,7 @@ TEST(MotorPhysical, RampedItReachesAndHolds500) {
     // (below the start-stop limit) at 1250 steps/s^2 (the master program's ramp, 75 steps) and at
     // 312 steps/s^2, up to 500 steps/s, 2000 steps (4 s) there, and down again: none lost.
     for (double acc : {1250.0, 312.0}) {
-        MachineTool m;
+        MachineTool m(kClock);
         ramped_train(m, Axis::X, 250.0, 500.0, acc, 2000, 1000);
         EXPECT_GT(m.commanded_steps(Axis::X), 2000);
         EXPECT_EQ(m.lost_steps(Axis::X), 0) << acc << " steps/s^2";
@@ -132,7 +132,7 @@ TEST(MotorPhysical, RampedItReachesAndHolds500) {
 }
 
 TEST(MotorPhysical, ReverseRunsBack) {
-    MachineTool m;
+    MachineTool m(kClock);
     auto t = pulse_train(m, Axis::Y, 100, 200.0, true, 1000);
     pulse_train(m, Axis::Y, 60, 200.0, false, t);
     EXPECT_EQ(m.commanded_steps(Axis::Y), 40);
@@ -169,7 +169,7 @@ TEST(TransducerOnPhysicalTable, RingingAcrossALineGivesRealEdgesBackAndForth) {
     // ringing brings the table back across it: + + -.
     auto p = MachineTool::default_params();
     p.axes[0].transducer.offset_mm = 0.055;
-    MachineTool m(p);
+    MachineTool m(kClock, p);
     int count = 0;
     EXPECT_EQ(edges_after_one_step(m, count), (std::vector<bool>{true, true, false}));
     EXPECT_EQ(count, 1);
@@ -181,7 +181,7 @@ TEST(TransducerOnPhysicalTable, OvershootPastAQuarterStepLatchesDirectionBack) {
     // 0.48 step, past the quadrature boundary a quarter step beyond the step position (lines at
     // half steps, states a quarter pitch apart). The swing back crosses it again: 30 ms later the
     // count is 1 (one line crossed) and DIRECTION reads - (its last transition was backwards).
-    MachineTool m;
+    MachineTool m(kClock);
     int count = 0;
     EXPECT_EQ(edges_after_one_step(m, count), (std::vector<bool>{true}));
     EXPECT_EQ(count, 1);
@@ -192,7 +192,7 @@ TEST(TransducerOnPhysicalTable, OvershootPastAQuarterStepLatchesDirectionBack) {
 
 TEST(TransducerOnPhysicalTable, DefaultOffsetGivesOneEdgePerStep) {
     // Lines half-way between steps: the overshoot (about 0.4 step) never reaches the next line.
-    MachineTool m;
+    MachineTool m(kClock);
     int count = 0;
     EXPECT_EQ(edges_after_one_step(m, count), (std::vector<bool>{true}));
     EXPECT_EQ(count, 1);
@@ -207,7 +207,7 @@ namespace {
 // Open loop (Feedback::Commanded): the transducer's bits follow the commanded pulses, so at
 // 600 steps/s, where the motor loses steps, the count is the 200 commanded while the table lags.
 TEST(MotorPhysical, CommandedFeedbackCountsThePulsesNotTheTable) {
-    MachineTool m;
+    MachineTool m(kClock);
     m.set_feedback(MachineTool::Feedback::Commanded);
     pulse_train(m, Axis::X, 200, 600.0, true, 1000);
     ASSERT_GT(m.lost_steps(Axis::X), 0);
@@ -219,12 +219,12 @@ TEST(MotorPhysical, CommandedFeedbackCountsThePulsesNotTheTable) {
 }
 
 TEST(MotorPhysical, TheFeedbackSourceIsInTheSnapshot) {
-    MachineTool a;
+    MachineTool a(kClock);
     a.set_feedback(MachineTool::Feedback::Commanded);
     pulse_train(a, Axis::Y, 50, 600.0, true, 1000);
     std::vector<std::uint8_t> blob;
     a.save(blob);
-    MachineTool b;
+    MachineTool b(kClock);
     b.load(blob);
     EXPECT_EQ(b.feedback(), MachineTool::Feedback::Commanded);
     EXPECT_EQ(b.transducer_count(Axis::Y), 50);

@@ -13,7 +13,7 @@ namespace alp85::test {
 using periph::MachineTool;
 using Axis = MachineTool::Axis;
 
-constexpr double kClock = 3.072e6;  // T-states per second
+constexpr double kClock = 3.072e6;  // T-states per second: the ALP 85's CPU clock (6.144 MHz crystal / 2), the tools' builder here
 inline std::uint64_t tstates(double seconds) { return static_cast<std::uint64_t>(std::llround(seconds * kClock)); }
 
 // n pulses at `rate` steps/s starting at t0, then 0.5 s to settle. Returns the T-state reached.
@@ -56,7 +56,7 @@ inline std::uint64_t ramped_train(MachineTool& m, Axis a, double r0, double r1, 
 
 // Lost steps of one start-stop run of n steps at `rate` on a fresh tool.
 inline std::int64_t start_stop_loss(const MachineTool::Params& p, int n, double rate) {
-    MachineTool m(p);
+    MachineTool m(kClock, p);
     m.set_model(MachineTool::MotorModel::Physical);
     pulse_train(m, Axis::X, n, rate, true, tstates(0.01));
     return m.lost_steps(Axis::X);
@@ -67,7 +67,7 @@ inline std::int64_t start_stop_loss(const MachineTool::Params& p, int n, double 
 // from 0.5 step a sample by 328/65536 a sample to `fs` (1.0 = 500 steps/s), n steps, then 0.5 s to
 // settle. Returns the lost steps.
 inline std::int64_t sampled_loss(const MachineTool::Params& p, int n, double fs) {
-    MachineTool m(p);
+    MachineTool m(kClock, p);
     m.set_model(MachineTool::MotorModel::Physical);
     const std::uint64_t period = 6144, t0 = tstates(0.01);
     double f = 0.5, x = 0;
@@ -89,7 +89,7 @@ inline std::int64_t sampled_loss(const MachineTool::Params& p, int n, double fs)
 
 // Lost steps of one ramped run (ramped_train from 250 steps/s at `acc`, n steps at `rate`).
 inline std::int64_t ramped_loss(const MachineTool::Params& p, int n, double rate, double acc) {
-    MachineTool m(p);
+    MachineTool m(kClock, p);
     m.set_model(MachineTool::MotorModel::Physical);
     ramped_train(m, Axis::X, 250.0, rate, acc, n, tstates(0.01));
     return m.lost_steps(Axis::X);

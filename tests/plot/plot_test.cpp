@@ -27,10 +27,19 @@ std::string slurp(const fs::path& p) {
     return ss.str();
 }
 
+// This process's folder of charts, removed when the process ends (each test runs in a process).
+struct Scratch {
+    fs::path dir = fs::temp_directory_path() / ("alp85_plot_test_" + std::to_string(::getpid()));
+    ~Scratch() {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+    }
+};
+
 fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("alp85_plot_test_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    return dir / name;
+    static Scratch s;
+    fs::create_directories(s.dir);
+    return s.dir / name;
 }
 
 plot::Chart sample() {

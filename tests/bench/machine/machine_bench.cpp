@@ -14,7 +14,7 @@ namespace {
 
 using alp85::periph::MachineTool;
 
-constexpr double kClock = 3.072e6;
+constexpr double kClock = 3.072e6;  // T-states per second: the ALP 85's CPU clock
 constexpr std::uint64_t kPeriod = 7680;  // 400 steps/s
 constexpr int kSteps = 10'000;
 
@@ -34,7 +34,7 @@ std::uint64_t run(MachineTool& m, std::uint64_t t0) {
 void bench(benchmark::State& state, MachineTool::MotorModel model) {
     double machine_s = 0;
     for (auto _ : state) {
-        MachineTool m;
+        MachineTool m(kClock);
         m.set_model(model);
         const std::uint64_t end = run(m, 1000);
         machine_s += static_cast<double>(end - 1000) / kClock;

@@ -1,0 +1,1 @@
+enum class Button : unsigned char { Matrix, Reset, Vect };
