@@ -243,9 +243,6 @@ template <std::uint8_t Flags>
         f = static_cast<std::uint8_t>((f & ~Flags) | (computed & Flags));
 }
 
-template <int I>
-constexpr std::integral_constant<int, I> ic{};
-
 }  // namespace
 
 I8085::I8085(Bus& bus, Variant variant) : bus_(bus), variant_(variant) {
@@ -329,10 +326,9 @@ void I8085::halt_entered() {
     ALP85_HEX16(X, F)
 #define ALP85_BODY_ADDRESS(n) &&op_##n,
 // One opcode: its body, then the dispatch of the next one (threaded: one indirect jump per body).
-#define ALP85_BODY(n)                                          \
-    op_##n : body(std::integral_constant<std::uint8_t, 0x##n>{}); \
-    if (const void* const to = next()) goto* to;               \
-    goto done;
+#define ALP85_BODY(n)         \
+    op_##n : s.template body<0x##n>(); \
+    goto* s.next();
 #define ALP85_INLINE __attribute__((always_inline))
 
 namespace {
@@ -345,37 +341,29 @@ struct Dispatch {
 };
 }  // namespace
 
-template <I8085::Mem M>
-void I8085::execute() {
-    // The labels of the bodies, and per variant the table of where each opcode goes.
-    static const void* const kBodies[256] = {ALP85_HEX256(ALP85_BODY_ADDRESS)};
-    static const std::array<Dispatch, 2> kDispatch = [] {
-        std::array<Dispatch, 2> d{};
-        for (unsigned v = 0; v < 2; ++v) {
-            d[v].vd = kVariants[v];
-            for (unsigned i = 0; i < 256; ++i) d[v].label[i] = kBodies[d[v].vd.body[i]];
-        }
-        return d;
-    }();
-    // Read once through a volatile: the compiler then keeps the address in one register instead of
-    // recomputing it from the table's base and the variant at every use (two registers).
-    const Dispatch* volatile chosen = &kDispatch[variant_ == Variant::I8080 ? 1 : 0];
-    const Dispatch& kd = *chosen;
-    const VariantData& vd = kd.vd;
+// The state of one batch: the registers, the counter and the memory's tables, all in one local
+// object of execute() whose address never leaves it, so that the compiler keeps its fields in host
+// registers. Its member functions are the loop's primitives and each opcode's body.
+template <auto M>
+struct I8085::Loop {
+    static constexpr bool kFenced = M == Mem::Fenced;  // a fetch fence or debug hooks
 
-    constexpr bool kFenced = M == Mem::Fenced;  // a fetch fence or debug hooks
-    [[maybe_unused]] const bool debug = kFenced && hooks_;
-    const std::uint8_t* const* const code_pages = bus_.read_pages();
-    const std::uint8_t* const* const rp = debug ? kNoPages.data() : bus_.read_pages();
-    std::uint8_t* const* const wp = debug ? kNoPages.data() : bus_.write_pages();
-    std::uint8_t* const mem = bus_.flat_ram();  // Flat: all 64 KiB plain RAM in one block
+    I8085& cpu;
+    const Dispatch& kd;
+    const VariantData& vd;
+    const bool debug;  // debug hooks installed (kFenced only)
+    const std::uint8_t* const* const code_pages;
+    const std::uint8_t* const* const rp;
+    std::uint8_t* const* const wp;
+    std::uint8_t* const mem;  // Flat: all 64 KiB plain RAM in one block
     // Fenced: opcodes are fetched through exec_pages_ (null where a page holds a fenced address).
-    [[maybe_unused]] const std::uint8_t* const* const xp = debug ? kNoPages.data() : exec_pages_.data();
-    [[maybe_unused]] const std::bitset<0x10000>* const fence = debug ? nullptr : fence_;
-    [[maybe_unused]] std::uint16_t ipc = fence_prev_;  // the instruction running, for fence_previous
+    const std::uint8_t* const* const xp;
+    const std::bitset<0x10000>* const fence;
+    const void* const end;  // the label that ends the batch
+    std::uint16_t ipc;      // the instruction running, for fence_previous
 
-    std::uint8_t a = r_.a, f = r_.f, b = r_.b, c = r_.c, d = r_.d, e = r_.e, h = r_.h, l = r_.l;
-    std::uint16_t sp = r_.sp, pc = r_.pc;
+    std::uint8_t a, f, b, c, d, e, h, l;
+    std::uint16_t sp, pc;
     std::uint8_t op = 0;
     // One counter for T-states and instructions, counting down to the batch's end:
     //   rem = (L - T) * 2^kCountBits - N
@@ -383,63 +371,74 @@ void I8085::execute() {
     // at most kBatchTStates long and every instruction takes at least 4 T-states) and L the
     // batch's limit, both from t0. rem <= 0 exactly when T >= L. One table entry per opcode adds
     // its T-states and one instruction at once (VariantData::cost).
-    const std::uint64_t t0 = t_, n0 = instructions_;
-    const auto limit_rel = [t0](std::uint64_t lim) -> std::int64_t {
+    const std::uint64_t t0, n0;
+    std::int64_t stop, rem;
+
+    Loop(I8085& cpu_, const Dispatch& kd_, bool debug_, const void* end_)
+        : cpu(cpu_), kd(kd_), vd(kd_.vd), debug(debug_), code_pages(cpu_.bus_.read_pages()),
+          rp(debug_ ? kNoPages.data() : cpu_.bus_.read_pages()),
+          wp(debug_ ? kNoPages.data() : cpu_.bus_.write_pages()), mem(cpu_.bus_.flat_ram()),
+          xp(debug_ ? kNoPages.data() : cpu_.exec_pages_.data()), fence(debug_ ? nullptr : cpu_.fence_), end(end_),
+          ipc(cpu_.fence_prev_), a(cpu_.r_.a), f(cpu_.r_.f), b(cpu_.r_.b), c(cpu_.r_.c), d(cpu_.r_.d),
+          e(cpu_.r_.e), h(cpu_.r_.h), l(cpu_.r_.l), sp(cpu_.r_.sp), pc(cpu_.r_.pc), t0(cpu_.t_),
+          n0(cpu_.instructions_), stop(limit_rel(cpu_.limit_)), rem(stop) {}
+
+    ALP85_INLINE std::int64_t limit_rel(std::uint64_t lim) const {
         if (lim <= t0) return 0;
         const std::uint64_t dt = lim - t0;
         return static_cast<std::int64_t>(dt < kBatchTStates ? dt : kBatchTStates) << kCountBits;
-    };
-    std::int64_t stop = limit_rel(limit_), rem = stop;
-
+    }
     // T-states now, and the instructions run; a new limit from limit_; the batch ends after this
     // instruction.
-    const auto tnow = [&]() ALP85_INLINE { return t0 + (static_cast<std::uint64_t>(stop - rem) >> kCountBits); };
-    const auto nnow = [&]() ALP85_INLINE {
+    ALP85_INLINE std::uint64_t tnow() const { return t0 + (static_cast<std::uint64_t>(stop - rem) >> kCountBits); }
+    ALP85_INLINE std::uint64_t nnow() const {
         return n0 + (static_cast<std::uint64_t>(stop - rem) & ((std::uint64_t{1} << kCountBits) - 1));
-    };
-    const auto relimit = [&]() ALP85_INLINE {
+    }
+    ALP85_INLINE void relimit() {
         const std::int64_t done_so_far = stop - rem;
-        stop = limit_rel(limit_);
+        stop = limit_rel(cpu.limit_);
         rem = stop - done_so_far;
-    };
-    const auto end_batch = [&]() ALP85_INLINE {
+    }
+    ALP85_INLINE void end_batch() {
         rem -= stop;
         stop = 0;
-    };
-    const auto sync = [&](unsigned back) ALP85_INLINE { t_ = tnow() - back; };
-    const auto save_regs = [&]() ALP85_INLINE {
-        r_.a = a, r_.f = f, r_.b = b, r_.c = c, r_.d = d, r_.e = e, r_.h = h, r_.l = l;
-        r_.sp = sp, r_.pc = pc, t_ = tnow(), instructions_ = nnow();
-    };
-    const auto load_regs = [&]() ALP85_INLINE {
-        a = r_.a, f = r_.f, b = r_.b, c = r_.c, d = r_.d, e = r_.e, h = r_.h, l = r_.l;
-        sp = r_.sp, pc = r_.pc;
-    };
+    }
+    ALP85_INLINE void sync(unsigned back) { cpu.t_ = tnow() - back; }
+    ALP85_INLINE void save_regs() {
+        Registers& r = cpu.r_;
+        r.a = a, r.f = f, r.b = b, r.c = c, r.d = d, r.e = e, r.h = h, r.l = l;
+        r.sp = sp, r.pc = pc, cpu.t_ = tnow(), cpu.instructions_ = nnow();
+    }
+    ALP85_INLINE void load_regs() {
+        const Registers& r = cpu.r_;
+        a = r.a, f = r.f, b = r.b, c = r.c, d = r.d, e = r.e, h = r.h, l = r.l;
+        sp = r.sp, pc = r.pc;
+    }
 
     // ---- memory: opcode and operand fetches, data reads and writes -----------------------------
-    const auto fetch = [&](std::uint16_t addr, std::uint64_t when) ALP85_INLINE -> std::uint8_t {
+    ALP85_INLINE std::uint8_t fetch(std::uint16_t addr, std::uint64_t when) {
         if constexpr (M == Mem::Flat) {
             return mem[addr];
         } else {
             if (const std::uint8_t* const page = rp[addr >> 8]) [[likely]]
                 return page[addr & 0xFF];
-            const std::uint8_t v = slow_read(addr, when, false);
+            const std::uint8_t v = cpu.slow_read(addr, when, false);
             relimit();
             return v;
         }
-    };
-    const auto rd = [&](std::uint16_t addr) ALP85_INLINE -> std::uint8_t {
+    }
+    ALP85_INLINE std::uint8_t rd(std::uint16_t addr) {
         if constexpr (M == Mem::Flat) {
             return mem[addr];
         } else {
             if (const std::uint8_t* const page = rp[addr >> 8]) [[likely]]
                 return page[addr & 0xFF];
-            const std::uint8_t v = slow_read(addr, tnow() - 3, true);
+            const std::uint8_t v = cpu.slow_read(addr, tnow() - 3, true);
             relimit();
             return v;
         }
-    };
-    const auto wr = [&](std::uint16_t addr, unsigned value) ALP85_INLINE {
+    }
+    ALP85_INLINE void wr(std::uint16_t addr, unsigned value) {
         const auto v = static_cast<std::uint8_t>(value);
         if constexpr (M == Mem::Flat) {
             mem[addr] = v;
@@ -447,71 +446,71 @@ void I8085::execute() {
             if (std::uint8_t* const page = wp[addr >> 8]) [[likely]] {
                 page[addr & 0xFF] = v;
             } else {
-                slow_write(addr, v, tnow() - 3);
+                cpu.slow_write(addr, v, tnow() - 3);
                 relimit();
             }
         }
-    };
-    const auto imm8 = [&]() ALP85_INLINE -> std::uint8_t {
+    }
+    ALP85_INLINE std::uint8_t imm8() {
         const std::uint8_t v = fetch(pc, tnow() - 3);
         pc = static_cast<std::uint16_t>(pc + 1);
         return v;
-    };
-    const auto imm16 = [&]() ALP85_INLINE -> std::uint16_t {
+    }
+    ALP85_INLINE std::uint16_t imm16() {
         const std::uint8_t lo = fetch(pc, tnow() - 3);
         const std::uint8_t hi = fetch(static_cast<std::uint16_t>(pc + 1), tnow() - 3);
         pc = static_cast<std::uint16_t>(pc + 2);
         return static_cast<std::uint16_t>((hi << 8) | lo);
-    };
-    const auto push16 = [&](unsigned v) ALP85_INLINE {
+    }
+    ALP85_INLINE void push16(unsigned v) {
         wr(static_cast<std::uint16_t>(sp - 1), v >> 8);
         wr(static_cast<std::uint16_t>(sp - 2), v & 0xFF);
         sp = static_cast<std::uint16_t>(sp - 2);
-    };
-    const auto pop16 = [&]() ALP85_INLINE -> std::uint16_t {
+    }
+    ALP85_INLINE std::uint16_t pop16() {
         const std::uint8_t lo = rd(sp);
         const std::uint8_t hi = rd(static_cast<std::uint16_t>(sp + 1));
         sp = static_cast<std::uint16_t>(sp + 2);
         return static_cast<std::uint16_t>((hi << 8) | lo);
-    };
+    }
 
     // ---- registers by their encoding's number --------------------------------------------------
-    const auto reg = [&](auto i) ALP85_INLINE -> std::uint8_t& {
-        constexpr int n = decltype(i)::value;
-        static_assert(n >= 0 && n < 8 && n != kM);
-        if constexpr (n == 0) return b;
-        else if constexpr (n == 1) return c;
-        else if constexpr (n == 2) return d;
-        else if constexpr (n == 3) return e;
-        else if constexpr (n == 4) return h;
-        else if constexpr (n == 5) return l;
+    template <int N>
+    ALP85_INLINE std::uint8_t& reg() {
+        static_assert(N >= 0 && N < 8 && N != kM);
+        if constexpr (N == 0) return b;
+        else if constexpr (N == 1) return c;
+        else if constexpr (N == 2) return d;
+        else if constexpr (N == 3) return e;
+        else if constexpr (N == 4) return h;
+        else if constexpr (N == 5) return l;
         else return a;
-    };
-    const auto hl = [&]() ALP85_INLINE { return static_cast<std::uint16_t>((h << 8) | l); };
-    const auto get_pair = [&](auto i) ALP85_INLINE -> unsigned {
-        constexpr int n = decltype(i)::value;
-        if constexpr (n == 0) return static_cast<unsigned>(b << 8 | c);
-        else if constexpr (n == 1) return static_cast<unsigned>(d << 8 | e);
-        else if constexpr (n == 2) return static_cast<unsigned>(h << 8 | l);
+    }
+    ALP85_INLINE std::uint16_t hl() const { return static_cast<std::uint16_t>((h << 8) | l); }
+    template <int N>
+    ALP85_INLINE unsigned get_pair() const {
+        if constexpr (N == 0) return static_cast<unsigned>(b << 8 | c);
+        else if constexpr (N == 1) return static_cast<unsigned>(d << 8 | e);
+        else if constexpr (N == 2) return static_cast<unsigned>(h << 8 | l);
         else return sp;
-    };
-    const auto set_pair = [&](auto i, unsigned v) ALP85_INLINE {
-        constexpr int n = decltype(i)::value;
-        if constexpr (n == 0) b = static_cast<std::uint8_t>(v >> 8), c = static_cast<std::uint8_t>(v);
-        else if constexpr (n == 1) d = static_cast<std::uint8_t>(v >> 8), e = static_cast<std::uint8_t>(v);
-        else if constexpr (n == 2) h = static_cast<std::uint8_t>(v >> 8), l = static_cast<std::uint8_t>(v);
+    }
+    template <int N>
+    ALP85_INLINE void set_pair(unsigned v) {
+        if constexpr (N == 0) b = static_cast<std::uint8_t>(v >> 8), c = static_cast<std::uint8_t>(v);
+        else if constexpr (N == 1) d = static_cast<std::uint8_t>(v >> 8), e = static_cast<std::uint8_t>(v);
+        else if constexpr (N == 2) h = static_cast<std::uint8_t>(v >> 8), l = static_cast<std::uint8_t>(v);
         else sp = static_cast<std::uint16_t>(v);
-    };
+    }
     // An 8-bit operand: a register, M (the byte at HL) or the immediate byte.
-    const auto operand = [&](auto i) ALP85_INLINE -> std::uint8_t {
-        constexpr int n = decltype(i)::value;
-        if constexpr (n == kImm) return imm8();
-        else if constexpr (n == kM) return rd(hl());
-        else return reg(i);
-    };
+    template <int N>
+    ALP85_INLINE std::uint8_t operand() {
+        if constexpr (N == kImm) return imm8();
+        else if constexpr (N == kM) return rd(hl());
+        else return reg<N>();
+    }
 
     // ---- counted delay loops (JNZ taken back onto them) -----------------------------------------
-    const auto countdown = [&]() ALP85_INLINE {
+    ALP85_INLINE void countdown() {
         // "L: DCR r / JNZ L" with the JNZ just taken: the iterations that keep r non-zero and
         // start before the batch's limit are done at once. Nothing else can happen inside such a
         // loop (no memory or I/O access, pins change only between batches), so registers, flags,
@@ -543,8 +542,8 @@ void I8085::execute() {
             case 0x3D: run_down(a); break;
             default: break;  // another instruction (DCR M reads memory: not taken over)
         }
-    };
-    const auto countdown16 = [&]() ALP85_INLINE {
+    }
+    ALP85_INLINE void countdown16() {
         // "L: DCX rp / MOV A,r / ORA r' / JNZ L" (r, r' the two halves of rp, in either order)
         // with the JNZ just taken: a 16-bit delay loop. The iterations that keep rp non-zero and
         // start before the batch's limit are done at once. After each iteration A = r | r' and the
@@ -587,31 +586,27 @@ void I8085::execute() {
             case 0x1B: run_down(d, e); break;
             default: run_down(h, l); break;
         }
-    };
+    }
 
     // ---- one opcode's body, from its decoding ----------------------------------------------------
-    const auto body = [&](auto opcode) ALP85_INLINE {
-        constexpr std::uint8_t kOp = decltype(opcode)::value;
+    template <std::uint8_t kOp>
+    ALP85_INLINE void body() {
         constexpr Decoded x = kDecoded<kOp>;
         constexpr std::uint8_t kFlags = x.flags;
         // The condition of a conditional transfer (always true for the others).
-        const auto taken = [&]() ALP85_INLINE -> bool {
-            return x.cond_flag == 0 || ((f & x.cond_flag) != 0) == x.cond_set;
-        };
+        const bool taken_now = x.cond_flag == 0 || ((f & x.cond_flag) != 0) == x.cond_set;
+        const auto taken = [taken_now] { return taken_now; };
         // The extra T-states of a taken condition (none for an unconditional transfer).
-        const auto charge_taken = [&]() ALP85_INLINE {
-            if constexpr (op_tstates(Variant::I8085, kOp, true) != op_tstates(Variant::I8085, kOp) ||
-                          op_tstates(Variant::I8080, kOp, true) != op_tstates(Variant::I8080, kOp))
-                rem -= vd.taken[kOp];
-        };
+        constexpr bool kChargeTaken = op_tstates(Variant::I8085, kOp, true) != op_tstates(Variant::I8085, kOp) ||
+                                      op_tstates(Variant::I8080, kOp, true) != op_tstates(Variant::I8080, kOp);
         if constexpr (x.kind == Kind::Transfer) {
             if constexpr (x.flow == Flow::Jump || x.flow == Flow::JumpIf) {
                 if (taken()) {
                     [[maybe_unused]] const std::uint16_t from = static_cast<std::uint16_t>(pc - 1);
                     pc = imm16();
-                    charge_taken();
+                    if constexpr (kChargeTaken) rem -= vd.taken[kOp];
                     if constexpr (kOp == 0xC2) {  // JNZ back onto the byte before it: a delay loop?
-                        if (static_cast<std::uint16_t>(from - pc) <= 3 && fast_loops_ && !debug) [[unlikely]] {
+                        if (static_cast<std::uint16_t>(from - pc) <= 3 && cpu.fast_loops_ && !debug) [[unlikely]] {
                             if (pc == static_cast<std::uint16_t>(from - 1)) countdown();
                             else if (pc == static_cast<std::uint16_t>(from - 3)) countdown16();
                         }
@@ -622,7 +617,7 @@ void I8085::execute() {
             } else if constexpr (x.flow == Flow::Call || x.flow == Flow::CallIf) {
                 if (taken()) {
                     const std::uint16_t to = imm16();
-                    charge_taken();
+                    if constexpr (kChargeTaken) rem -= vd.taken[kOp];
                     push16(pc);
                     pc = to;
                 } else {
@@ -630,12 +625,12 @@ void I8085::execute() {
                 }
             } else if constexpr (x.flow == Flow::Return || x.flow == Flow::ReturnIf) {
                 if (taken()) {
-                    charge_taken();
+                    if constexpr (kChargeTaken) rem -= vd.taken[kOp];
                     pc = pop16();
                 }
             } else if constexpr (x.flow == Flow::Restart || x.flow == Flow::RestartIf) {
                 if (taken()) {
-                    charge_taken();
+                    if constexpr (kChargeTaken) rem -= vd.taken[kOp];
                     push16(pc);
                     pc = x.vector;
                 }
@@ -643,41 +638,41 @@ void I8085::execute() {
                 pc = hl();
             } else if constexpr (x.flow == Flow::Halt) {
                 sync(0);
-                halt_entered();
+                cpu.halt_entered();
                 end_batch();
             }
         } else if constexpr (x.kind == Kind::Nop) {
         } else if constexpr (x.kind == Kind::Mov || x.kind == Kind::Mvi) {
             if constexpr (x.dst == kM) {
-                const std::uint8_t v = operand(ic<x.src>);
+                const std::uint8_t v = operand<x.src>();
                 wr(hl(), v);
             } else {
-                reg(ic<x.dst>) = operand(ic<x.src>);
+                reg<x.dst>() = operand<x.src>();
             }
         } else if constexpr (x.kind == Kind::Lxi) {
             const std::uint8_t lo = imm8();
             const std::uint8_t hi = imm8();
-            set_pair(ic<x.dst>, static_cast<unsigned>(hi << 8 | lo));
-            if constexpr (x.dst == 3) sp_load_ = 0x10000u | sp;
+            set_pair<x.dst>(static_cast<unsigned>(hi << 8 | lo));
+            if constexpr (x.dst == 3) cpu.sp_load_ = 0x10000u | sp;
         } else if constexpr (x.kind == Kind::Stax) {
-            wr(static_cast<std::uint16_t>(get_pair(ic<x.dst>)), a);
+            wr(static_cast<std::uint16_t>(get_pair<x.dst>()), a);
         } else if constexpr (x.kind == Kind::Ldax) {
-            a = rd(static_cast<std::uint16_t>(get_pair(ic<x.dst>)));
+            a = rd(static_cast<std::uint16_t>(get_pair<x.dst>()));
         } else if constexpr (x.kind == Kind::Inx || x.kind == Kind::Dcx) {
             // The 8085's K: the 16-bit carry (INX of FFFFH) or borrow (DCX of 0000H), bit 16.
-            const unsigned v = x.kind == Kind::Inx ? get_pair(ic<x.dst>) + 1u : get_pair(ic<x.dst>) - 1u;
+            const unsigned v = x.kind == Kind::Inx ? get_pair<x.dst>() + 1u : get_pair<x.dst>() - 1u;
             write_flags<kFlags>(f, (v >> 11) & vd.vk);
-            set_pair(ic<x.dst>, v & 0xFFFF);
+            set_pair<x.dst>(v & 0xFFFF);
         } else if constexpr (x.kind == Kind::Inr || x.kind == Kind::Dcr) {
-            const std::uint8_t v = operand(ic<x.dst>);
+            const std::uint8_t v = operand<x.dst>();
             const auto r = static_cast<std::uint8_t>(x.kind == Kind::Inr ? v + 1 : v - 1);
             write_flags<kFlags>(f, x.kind == Kind::Inr ? flags_inr(vd, v, r) : flags_dcr(vd, v, r));
             if constexpr (x.dst == kM) wr(hl(), r);
-            else reg(ic<x.dst>) = r;
+            else reg<x.dst>() = r;
         } else if constexpr (x.kind == Kind::Dad) {
-            const unsigned v = hl() + get_pair(ic<x.dst>);
+            const unsigned v = hl() + get_pair<x.dst>();
             write_flags<kFlags>(f, v >> 16);
-            set_pair(ic<2>, v & 0xFFFF);
+            set_pair<2>(v & 0xFFFF);
         } else if constexpr (x.kind == Kind::Rlc) {
             const unsigned cy = a >> 7;
             a = static_cast<std::uint8_t>((a << 1) | cy);
@@ -715,31 +710,31 @@ void I8085::execute() {
         } else if constexpr (x.kind == Kind::Cmc) {
             write_flags<kFlags>(f, ~f);
         } else if constexpr (x.kind == Kind::Add || x.kind == Kind::Adc) {
-            const unsigned v = operand(ic<x.src>);
+            const unsigned v = operand<x.src>();
             const unsigned r = a + v + (x.kind == Kind::Adc ? f & F_CY : 0u);
             write_flags<kFlags>(f, flags_add(vd, a, v, r));
             a = static_cast<std::uint8_t>(r);
         } else if constexpr (x.kind == Kind::Sub || x.kind == Kind::Sbb || x.kind == Kind::Cmp) {
-            const unsigned v = operand(ic<x.src>);
+            const unsigned v = operand<x.src>();
             const unsigned r = a - v - (x.kind == Kind::Sbb ? f & F_CY : 0u);
             write_flags<kFlags>(f, flags_sub(vd, a, v, r));
             if constexpr (x.kind != Kind::Cmp) a = static_cast<std::uint8_t>(r);
         } else if constexpr (x.kind == Kind::Ana) {
             // The 8085 always sets AC; the 8080 sets it to bit 3 of (A OR operand). CY cleared.
-            const unsigned v = operand(ic<x.src>);
+            const unsigned v = operand<x.src>();
             const unsigned ac = vd.ana_ac | (((a | v) & 0x08) << 1);
             a = static_cast<std::uint8_t>(a & v);
             write_flags<kFlags>(f, vd.szp[a] | ac);
         } else if constexpr (x.kind == Kind::Xra || x.kind == Kind::Ora) {
-            const unsigned v = operand(ic<x.src>);
+            const unsigned v = operand<x.src>();
             a = static_cast<std::uint8_t>(x.kind == Kind::Xra ? a ^ v : a | v);
             write_flags<kFlags>(f, vd.szp[a]);
         } else if constexpr (x.kind == Kind::Shld || x.kind == Kind::Shlx) {
-            const std::uint16_t at = x.kind == Kind::Shld ? imm16() : static_cast<std::uint16_t>(get_pair(ic<1>));
+            const std::uint16_t at = x.kind == Kind::Shld ? imm16() : static_cast<std::uint16_t>(get_pair<1>());
             wr(at, l);
             wr(static_cast<std::uint16_t>(at + 1), h);
         } else if constexpr (x.kind == Kind::Lhld || x.kind == Kind::Lhlx) {
-            const std::uint16_t at = x.kind == Kind::Lhld ? imm16() : static_cast<std::uint16_t>(get_pair(ic<1>));
+            const std::uint16_t at = x.kind == Kind::Lhld ? imm16() : static_cast<std::uint16_t>(get_pair<1>());
             l = rd(at);
             h = rd(static_cast<std::uint16_t>(at + 1));
         } else if constexpr (x.kind == Kind::Sta) {
@@ -748,7 +743,7 @@ void I8085::execute() {
             a = rd(imm16());
         } else if constexpr (x.kind == Kind::Push) {
             if constexpr (x.dst == 3) push16(static_cast<unsigned>(a << 8 | f));  // PSW
-            else push16(get_pair(ic<x.dst>));
+            else push16(get_pair<x.dst>());
         } else if constexpr (x.kind == Kind::Pop) {
             const std::uint8_t lo = rd(sp);
             sp = static_cast<std::uint16_t>(sp + 1);
@@ -758,7 +753,7 @@ void I8085::execute() {
                 write_flags<kFlags>(f, (lo & vd.psw_keep) | vd.psw_set);
                 a = hi;
             } else {
-                set_pair(ic<x.dst>, static_cast<unsigned>(hi << 8 | lo));
+                set_pair<x.dst>(static_cast<unsigned>(hi << 8 | lo));
             }
         } else if constexpr (x.kind == Kind::Xthl) {
             const std::uint8_t lo = rd(sp);
@@ -773,29 +768,29 @@ void I8085::execute() {
             std::swap(e, l);
         } else if constexpr (x.kind == Kind::Sphl) {
             sp = hl();
-            sp_load_ = 0x10000u | sp;
+            cpu.sp_load_ = 0x10000u | sp;
         } else if constexpr (x.kind == Kind::Out) {
             const std::uint8_t port = imm8();
             sync(3);
-            io_out(port, a, t_);
+            cpu.io_out(port, a, cpu.t_);
             relimit();
         } else if constexpr (x.kind == Kind::In) {
             const std::uint8_t port = imm8();
             sync(3);
-            a = io_in(port, t_);
+            a = cpu.io_in(port, cpu.t_);
             relimit();
         } else if constexpr (x.kind == Kind::Ei) {
-            ie_ = true;
-            ei_delay_ = true;
+            cpu.ie_ = true;
+            cpu.ei_delay_ = true;
             end_batch();
         } else if constexpr (x.kind == Kind::Di) {
-            ie_ = false;
-            ei_delay_ = false;
+            cpu.ie_ = false;
+            cpu.ei_delay_ = false;
         } else if constexpr (x.kind == Kind::Rim) {
-            a = rim();
+            a = cpu.rim();
         } else if constexpr (x.kind == Kind::Sim) {
             sync(0);
-            sim(a);
+            cpu.sim(a);
             end_batch();
         } else if constexpr (x.kind == Kind::Dsub) {
             // HL = HL - BC. The ALU does it as SUB L,C then SBB H,B, so S, P, AC, CY, V and K
@@ -814,39 +809,39 @@ void I8085::execute() {
             write_flags<kFlags>(f, cy);
         } else if constexpr (x.kind == Kind::Rdel) {
             // DE rotated left through CY; V = old bit 15 XOR old bit 14 (the sign changed).
-            const unsigned de = get_pair(ic<1>);
+            const unsigned de = get_pair<1>();
             const unsigned v = ((de >> 15) ^ (de >> 14)) & 1;
-            set_pair(ic<1>, ((de << 1) | (f & F_CY)) & 0xFFFF);
+            set_pair<1>(((de << 1) | (f & F_CY)) & 0xFFFF);
             write_flags<kFlags>(f, (de >> 15) | (v << 1));
         } else if constexpr (x.kind == Kind::Ldhi || x.kind == Kind::Ldsi) {
-            const unsigned base = x.kind == Kind::Ldhi ? get_pair(ic<2>) : get_pair(ic<3>);
-            set_pair(ic<1>, (base + imm8()) & 0xFFFF);
+            const unsigned base = x.kind == Kind::Ldhi ? get_pair<2>() : get_pair<3>();
+            set_pair<1>((base + imm8()) & 0xFFFF);
         }
-    };
+    }
 
     // ---- dispatch ----------------------------------------------------------------------------------
-    // The next instruction's body, or nullptr when the batch ends before it.
-    const auto next = [&]() ALP85_INLINE -> const void* {
+    // The next instruction's body, or the end of the batch.
+    ALP85_INLINE const void* next() {
         if (rem <= 0) [[unlikely]]
-            return nullptr;
+            return end;
         if constexpr (kFenced) {
             if (const std::uint8_t* const page = xp[pc >> 8]) [[likely]] {
                 op = page[pc & 0xFF];  // a page with no fenced address: no test
             } else {
-                if (hooks_) {
+                if (cpu.hooks_) {
                     save_regs();
-                    const bool go = hooks_->before_instruction(*this);
+                    const bool go = cpu.hooks_->before_instruction(cpu);
                     load_regs();
                     relimit();
                     if (!go) {
-                        deadline_ = tnow();
-                        return nullptr;
+                        cpu.deadline_ = tnow();
+                        return end;
                     }
-                } else if (fence && (*fence)[pc] && (pc != pass_pc_ || tnow() != pass_t_)) [[unlikely]] {
-                    fence_prev_ = ipc;
-                    fence_hit_ = true;
-                    deadline_ = tnow();
-                    return nullptr;
+                } else if (fence && (*fence)[pc] && (pc != cpu.pass_pc_ || tnow() != cpu.pass_t_)) [[unlikely]] {
+                    cpu.fence_prev_ = ipc;
+                    cpu.fence_hit_ = true;
+                    cpu.deadline_ = tnow();
+                    return end;
                 }
                 op = fetch(pc, tnow());
             }
@@ -857,14 +852,31 @@ void I8085::execute() {
         pc = static_cast<std::uint16_t>(pc + 1);
         rem -= vd.cost[op];
         return kd.label[op];
-    };
+    }
+};
 
-    if (const void* const to = next()) goto* to;
-    goto done;
+template <I8085::Mem M>
+void I8085::execute() {
+    // The labels of the bodies, and per variant the table of where each opcode goes.
+    static const void* const kBodies[256] = {ALP85_HEX256(ALP85_BODY_ADDRESS)};
+    static const std::array<Dispatch, 2> kDispatch = [] {
+        std::array<Dispatch, 2> d{};
+        for (unsigned v = 0; v < 2; ++v) {
+            d[v].vd = kVariants[v];
+            for (unsigned i = 0; i < 256; ++i) d[v].label[i] = kBodies[d[v].vd.body[i]];
+        }
+        return d;
+    }();
+    // Read once through a volatile: the compiler then keeps the address in one register instead of
+    // recomputing it from the table's base and the variant at every use (two registers).
+    const Dispatch* volatile chosen = &kDispatch[variant_ == Variant::I8080 ? 1 : 0];
+    Loop<M> s(*this, *chosen, M == Mem::Fenced && hooks_, &&done);
+    goto* s.next();
     ALP85_HEX256(ALP85_BODY)
 done:
-    save_regs();
+    s.save_regs();
 }
+
 #undef ALP85_HEX16
 #undef ALP85_HEX256
 #undef ALP85_BODY_ADDRESS

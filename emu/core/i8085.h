@@ -171,6 +171,8 @@ private:
     enum class Mem : std::uint8_t { Paged, Flat, Fenced };
     template <Mem M>
     void execute();  // runs until t_ >= limit_
+    template <auto M>  // M: a Mem (GCC 12 rejects the private enum in the definition's head)
+    struct Loop;  // one batch's registers, counter and memory tables, and the opcodes' bodies
     void request_stop_batch() { limit_ = 0; }  // end this batch only (run() goes on)
     void accept_interrupt();
     void map_exec_pages();  // exec_pages_ from the bus's read pages and fenced_pages_
