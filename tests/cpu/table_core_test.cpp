@@ -6,6 +6,7 @@
 // the data sheets).
 #include <gtest/gtest.h>
 
+#include <iomanip>
 #include <random>
 #include <sstream>
 #include <string>
@@ -29,7 +30,7 @@ struct Seen {
 
 std::string hex(unsigned v) {
     std::ostringstream s;
-    s << std::hex << std::uppercase << v << 'H';
+    s << std::hex << std::uppercase << std::setfill('0') << std::setw(v > 0xFF ? 4 : 2) << v << 'H';
     return s.str();
 }
 
