@@ -409,11 +409,6 @@ struct I8085::Loop {
         r.a = a, r.f = f, r.b = b, r.c = c, r.d = d, r.e = e, r.h = h, r.l = l;
         r.sp = sp, r.pc = pc, cpu.t_ = tnow(), cpu.instructions_ = nnow();
     }
-    ALP85_INLINE void load_regs() {
-        const Registers& r = cpu.r_;
-        a = r.a, f = r.f, b = r.b, c = r.c, d = r.d, e = r.e, h = r.h, l = r.l;
-        sp = r.sp, pc = r.pc;
-    }
 
     // ---- memory: opcode and operand fetches, data reads and writes -----------------------------
     ALP85_INLINE std::uint8_t fetch(std::uint16_t addr, std::uint64_t when) {
@@ -828,16 +823,7 @@ struct I8085::Loop {
             if (const std::uint8_t* const page = xp[pc >> 8]) [[likely]] {
                 op = page[pc & 0xFF];  // a page with no fenced address: no test
             } else {
-                if (cpu.hooks_) {
-                    save_regs();
-                    const bool go = cpu.hooks_->before_instruction(cpu);
-                    load_regs();
-                    relimit();
-                    if (!go) {
-                        cpu.deadline_ = tnow();
-                        return end;
-                    }
-                } else if (fence && (*fence)[pc] && (pc != cpu.pass_pc_ || tnow() != cpu.pass_t_)) [[unlikely]] {
+                if (fence && (*fence)[pc] && (pc != cpu.pass_pc_ || tnow() != cpu.pass_t_)) [[unlikely]] {
                     cpu.fence_prev_ = ipc;
                     cpu.fence_hit_ = true;
                     cpu.deadline_ = tnow();
@@ -900,14 +886,20 @@ std::uint64_t I8085::run(std::uint64_t deadline) {
             t_ = deadline_;
             break;
         }
+        if (hooks_ && !hooks_->before_instruction(*this)) {  // the debug hooks' batches are one instruction
+            deadline_ = t_;
+            break;
+        }
         const std::uint64_t before = instructions_;
         if (after_ei) {  // exactly one instruction after EI before any maskable interrupt
             ei_delay_ = false;
             limit_ = t_ + 1;
         } else {
-            limit_ = deadline_;
+            limit_ = hooks_ ? t_ + 1 : deadline_;
         }
-        // Debug hooks or a debugger's fetch fence: the fenced loop. Plain RAM over all 64 KiB (a
+        // Debug hooks (called above before each instruction, which then runs alone in its batch, so
+        // that the loop never writes its registers back for them) or a debugger's fetch fence: the
+        // fenced loop. Plain RAM over all 64 KiB (a
         // CP/M machine, the bare-core benchmarks): no page table. Chosen per batch; a mapping
         // changed by an I/O handler ends the batch (io_out, io_in).
         if (hooks_ || fence_) {

@@ -41,9 +41,9 @@ struct Registers {
 
 class I8085;
 
-// Debugger hooks. Installed hooks switch run() to its fenced loop, which then reaches memory only
-// through the calls that report to them; with none installed the plain loops contain no checks
-// for them at all.
+// Debugger hooks. With hooks installed run() calls before_instruction between instructions and
+// runs each alone in its fenced loop, which then reaches memory only through the calls that report
+// to them; with none installed the loops contain no checks for them at all.
 class DebugHooks {
 public:
     virtual ~DebugHooks() = default;
