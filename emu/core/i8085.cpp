@@ -151,6 +151,8 @@ struct VariantData {
     std::int64_t cost[256];   // T-states << kCountBits, plus one instruction
     std::int64_t taken[256];  // extra T-states of a taken condition << kCountBits
     std::uint8_t szp[256];    // S, Z and P of a result; on the 8080 also flag bit 1, always 1
+    std::uint8_t inr[256];    // the flags INR writes, by the value incremented
+    std::uint8_t dcr[256];    // the flags DCR writes, by the value decremented
     std::uint8_t body[256];   // the opcode whose body runs: itself, or on the 8080 alias8080
     std::uint8_t vk;          // V and K as the variant has them: V|K on the 8085, none on the 8080
     std::uint8_t ana_ac;      // ANA's AC: always set on the 8085; on the 8080 bit 3 of (A OR x)
@@ -173,12 +175,32 @@ constexpr VariantData make_variant(Variant v) {
                                              (i8080 ? 0x02 : 0));
     }
     d.vk = i8080 ? 0 : F_V | F_K;
+    // INR/DCR as the ALU's +1/-1 (DCR adds FFH): AC is the carry out of bit 3; V only for 7FH+1
+    // and 80H-1; K = V XOR S. CY is theirs to keep (flags_written).
+    for (unsigned x = 0; x < 256; ++x) {
+        const unsigned up = (x + 1) & 0xFF, down = (x - 1) & 0xFF;
+        const unsigned v_up = x == 0x7F ? F_V : 0, v_down = x == 0x80 ? F_V : 0;
+        const auto k = [](unsigned v, unsigned r) { return ((v << 6) ^ r) & 0x80 ? F_K : 0; };
+        d.inr[x] = static_cast<std::uint8_t>(d.szp[up] | ((up & 0x0F) == 0 ? F_AC : 0) |
+                                             ((v_up | k(v_up, up)) & d.vk));
+        d.dcr[x] = static_cast<std::uint8_t>(d.szp[down] | ((x & 0x0F) != 0 ? F_AC : 0) |
+                                             ((v_down | k(v_down, down)) & d.vk));
+    }
     d.ana_ac = i8080 ? 0 : F_AC;
     d.psw_keep = i8080 ? 0xD7 : 0xF7;  // bit 3 always 0; the 8080 has no V (bit 1) and no K (bit 5)
     d.psw_set = i8080 ? 0x02 : 0x00;
     return d;
 }
 constexpr VariantData kVariants[2] = {make_variant(Variant::I8085), make_variant(Variant::I8080)};
+// The INR and DCR tables hold only flags the opcode table says INR and DCR write.
+constexpr bool inr_dcr_within_table() {
+    for (const VariantData& d : kVariants)
+        for (unsigned x = 0; x < 256; ++x)
+            if ((d.inr[x] | d.dcr[x]) & ~(isa::flags_written(0x04, false) & isa::flags_written(0x05, false)))
+                return false;
+    return true;
+}
+static_assert(inr_dcr_within_table(), "INR/DCR flag tables");
 
 constexpr unsigned op_tstates(Variant v, std::uint8_t op, bool taken = false) {
     const isa::OpInfo& o = isa::kOpcodes[op];
@@ -220,17 +242,6 @@ static_assert(delay16_timed_alike(Variant::I8085) && delay16_timed_alike(Variant
 [[gnu::always_inline]] inline std::uint8_t flags_sub(const VariantData& vd, unsigned a, unsigned x, unsigned r) {
     return static_cast<std::uint8_t>(vd.szp[r & 0xFF] | ((r >> 8) & F_CY) | (~(a ^ x ^ r) & F_AC) |
                                      vk_from_overflow((a ^ x) & (a ^ r) & 0x80, r, vd.vk));
-}
-
-// INR/DCR as the ALU's +1/-1 (DCR adds FFH): AC is the carry out of bit 3; V only for 7FH+1 and
-// 80H-1. CY is computed by neither: the table says they do not write it.
-[[gnu::always_inline]] inline std::uint8_t flags_inr(const VariantData& vd, unsigned x, unsigned r) {
-    return static_cast<std::uint8_t>(vd.szp[r] | ((r & 0x0F) == 0 ? F_AC : 0) |
-                                     vk_from_overflow(x == 0x7F ? 0x80 : 0, r, vd.vk));
-}
-[[gnu::always_inline]] inline std::uint8_t flags_dcr(const VariantData& vd, unsigned x, unsigned r) {
-    return static_cast<std::uint8_t>(vd.szp[r] | ((x & 0x0F) != 0 ? F_AC : 0) |
-                                     vk_from_overflow(x == 0x80 ? 0x80 : 0, r, vd.vk));
 }
 
 // The flag register after an instruction that computed `computed`: the bits the table says it
@@ -524,7 +535,7 @@ struct I8085::Loop {
             if (!m) return;
             const unsigned x = static_cast<std::uint8_t>(r - m + 1);  // before the last DCR
             r = static_cast<std::uint8_t>(x - 1);
-            write_flags<kDecoded<0x05>.flags>(f, flags_dcr(vd, x, r));
+            f = static_cast<std::uint8_t>((f & ~kDecoded<0x05>.flags) | vd.dcr[x]);
             rem -= (static_cast<std::int64_t>(per) * m << kCountBits) + 2 * m;
         };
         switch (code[pc & 0xFF]) {
@@ -661,7 +672,8 @@ struct I8085::Loop {
         } else if constexpr (x.kind == Kind::Inr || x.kind == Kind::Dcr) {
             const std::uint8_t v = operand<x.dst>();
             const auto r = static_cast<std::uint8_t>(x.kind == Kind::Inr ? v + 1 : v - 1);
-            write_flags<kFlags>(f, x.kind == Kind::Inr ? flags_inr(vd, v, r) : flags_dcr(vd, v, r));
+            // Only the bits the table says INR and DCR write are in these tables.
+            f = static_cast<std::uint8_t>((f & ~kFlags) | (x.kind == Kind::Inr ? vd.inr[v] : vd.dcr[v]));
             if constexpr (x.dst == kM) wr(hl(), r);
             else reg<x.dst>() = r;
         } else if constexpr (x.kind == Kind::Dad) {
