@@ -323,6 +323,39 @@ inline constexpr std::array<OpInfo, 256> kOpcodes{{
 }};
 // clang-format on
 
+// The flags an instruction writes (whether to a new value or not), by mnemonic: the "Flags"
+// lines of the 8085AH data sheet and the MCS-80/85 User's Manual, and for V and K the
+// undocumented behaviour of docs/cpu.md. The CPU core writes exactly these bits (and keeps the
+// others) and tests/cpu/table_core_test.cpp checks that it does. The 8080 has no V and K.
+struct FlagEffect {
+    std::string_view mnemonic;
+    std::string_view operands;  // empty: any
+    std::uint8_t flags;         // on the 8085
+};
+inline constexpr std::uint8_t kAllFlags = F_S | F_Z | F_K | F_AC | F_P | F_V | F_CY;
+inline constexpr std::uint8_t kIncFlags = F_S | F_Z | F_K | F_AC | F_P | F_V;  // INR, DCR: not CY
+inline constexpr FlagEffect kFlagEffects[] = {
+    {"ADD", "", kAllFlags}, {"ADC", "", kAllFlags}, {"SUB", "", kAllFlags}, {"SBB", "", kAllFlags},
+    {"ANA", "", kAllFlags}, {"XRA", "", kAllFlags}, {"ORA", "", kAllFlags}, {"CMP", "", kAllFlags},
+    {"ADI", "", kAllFlags}, {"ACI", "", kAllFlags}, {"SUI", "", kAllFlags}, {"SBI", "", kAllFlags},
+    {"ANI", "", kAllFlags}, {"XRI", "", kAllFlags}, {"ORI", "", kAllFlags}, {"CPI", "", kAllFlags},
+    {"DAA", "", kAllFlags}, {"DSUB", "", kAllFlags}, {"POP", "PSW", kAllFlags},
+    {"INR", "", kIncFlags}, {"DCR", "", kIncFlags},
+    {"INX", "", F_K}, {"DCX", "", F_K},
+    {"DAD", "", F_CY}, {"RLC", "", F_CY}, {"RRC", "", F_CY}, {"RAL", "", F_CY}, {"RAR", "", F_CY},
+    {"STC", "", F_CY}, {"CMC", "", F_CY}, {"ARHL", "", F_CY},
+    {"RDEL", "", F_CY | F_V},
+};
+
+// The flags the instruction a processor executes for `op` writes (none if not listed above).
+constexpr std::uint8_t flags_written(std::uint8_t op, bool i8080) {
+    const OpInfo& o = kOpcodes[i8080 ? kOpcodes[op].alias8080 : op];
+    for (const FlagEffect& e : kFlagEffects)
+        if (e.mnemonic == o.mnemonic && (e.operands.empty() || e.operands == o.operands))
+            return i8080 ? static_cast<std::uint8_t>(e.flags & ~(F_V | F_K)) : e.flags;
+    return 0;
+}
+
 // The flow of the instruction a processor executes for `op` (the 8080 runs alias8080: CB is its
 // JMP, DD and FD its CALL).
 constexpr Flow flow_of(std::uint8_t op, bool i8080) {

@@ -41,8 +41,9 @@ struct Registers {
 
 class I8085;
 
-// Debugger hooks. Installed hooks switch run() to its debug path; with none installed the hot
-// path contains no checks for them at all.
+// Debugger hooks. With hooks installed run() calls before_instruction between instructions and
+// runs each alone in its fenced loop, which then reaches memory only through the calls that report
+// to them; with none installed the loops contain no checks for them at all.
 class DebugHooks {
 public:
     virtual ~DebugHooks() = default;
@@ -173,11 +174,14 @@ public:
     }
 
 private:
-    template <Variant V, bool Debug, bool Flat, bool Fence>
-    void execute();  // the instruction loop: runs until t_ >= limit_
+    // The instruction loop, one per way of reaching memory (the variant is data): the page table,
+    // one flat 64 KiB block, or the page table behind a fetch fence or debug hooks.
+    enum class Mem : std::uint8_t { Paged, Flat, Fenced };
+    template <Mem M>
+    void execute();  // runs until t_ >= limit_
+    template <auto M>  // M: a Mem (GCC 12 rejects the private enum in the definition's head)
+    struct Loop;  // one batch's registers, counter and memory tables, and the opcodes' bodies
     void request_stop_batch() { limit_ = 0; }  // end this batch only (run() goes on)
-    template <Variant V, bool Debug>
-    std::uint64_t run_impl(std::uint64_t deadline);
     void accept_interrupt();
     void map_exec_pages();  // exec_pages_ from the bus's read pages and fenced_pages_
     void push_pc_and_jump(std::uint16_t vector);
@@ -185,7 +189,7 @@ private:
     std::uint8_t rim();                  // RIM: rim_value(), and the TRAP-saved IE is consumed
     void sim(std::uint8_t a);            // SIM
     void halt_entered();
-    [[gnu::noinline]] std::uint8_t slow_read(std::uint16_t addr, std::uint64_t t);
+    [[gnu::noinline]] std::uint8_t slow_read(std::uint16_t addr, std::uint64_t t, bool data);
     [[gnu::noinline]] void slow_write(std::uint16_t addr, std::uint8_t value, std::uint64_t t);
     [[gnu::noinline]] std::uint8_t io_in(std::uint8_t port, std::uint64_t t);
     [[gnu::noinline]] void io_out(std::uint8_t port, std::uint8_t value, std::uint64_t t);
