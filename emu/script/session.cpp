@@ -504,7 +504,10 @@ Session::Outcome Session::write_signals() {
     return {};
 }
 
-Session::Outcome Session::finish() {
+Session::Outcome Session::finish() { return stop_recordings(); }
+
+// Writes every recording running: the pins' VCD and the tool's CSV (the first failure is told).
+Session::Outcome Session::stop_recordings() {
     Outcome o;
     if (signals_.recording()) o = write_signals();
     if (recorder_.recording()) {
@@ -600,13 +603,7 @@ Session::Outcome Session::tool_command(const Command& c) {
             // Ends every recording running: the tool's CSV and the pins' VCD.
             if (!recorder_.recording() && !signals_.recording())
                 return fail(c, "no recording to stop (record FILE.csv or record signals FILE.vcd starts one)");
-            Outcome o;
-            if (signals_.recording()) o = write_signals();
-            if (recorder_.recording()) {
-                const Outcome csv = write_recording();
-                if (o.status == Status::Ok) o = csv;
-            }
-            return o;
+            return stop_recordings();
         }
         case Op::Plot: {
             const auto& samples = recorder_.samples();

@@ -152,6 +152,7 @@ private:
     Outcome tool_command(const Command& c);
     Outcome write_recording();
     Outcome write_signals();
+    Outcome stop_recordings();
     debug::Stop run_paced(std::uint64_t until, const std::function<bool()>& condition, const debug::Origin& o);
     std::string axes_text() const;
 
