@@ -53,8 +53,8 @@ constexpr KindName kKinds[] = {
     {"SHLX", Kind::Shlx}, {"LHLX", Kind::Lhlx},
 };
 
-// Register operands in the encoding's order (B C D E H L M A); kImm is a d8 operand.
-constexpr int kM = 6, kA = 7, kImm = 8, kNone = -1;
+// Register operands in the encoding's order (B C D E H L M A: M is 6, A is 7); kImm is a d8 operand.
+constexpr int kM = 6, kImm = 8, kNone = -1;
 constexpr int reg_index(std::string_view s) {
     constexpr std::string_view names[] = {"B", "C", "D", "E", "H", "L", "M", "A"};
     for (int i = 0; i < 8; ++i)
@@ -600,14 +600,13 @@ struct I8085::Loop {
         constexpr Decoded x = kDecoded<kOp>;
         constexpr std::uint8_t kFlags = x.flags;
         // The condition of a conditional transfer (always true for the others).
-        const bool taken_now = x.cond_flag == 0 || ((f & x.cond_flag) != 0) == x.cond_set;
-        const auto taken = [taken_now] { return taken_now; };
+        [[maybe_unused]] const bool taken = x.cond_flag == 0 || ((f & x.cond_flag) != 0) == x.cond_set;
         // The extra T-states of a taken condition (none for an unconditional transfer).
         constexpr bool kChargeTaken = op_tstates(Variant::I8085, kOp, true) != op_tstates(Variant::I8085, kOp) ||
                                       op_tstates(Variant::I8080, kOp, true) != op_tstates(Variant::I8080, kOp);
         if constexpr (x.kind == Kind::Transfer) {
             if constexpr (x.flow == Flow::Jump || x.flow == Flow::JumpIf) {
-                if (taken()) {
+                if (taken) {
                     [[maybe_unused]] const std::uint16_t from = static_cast<std::uint16_t>(pc - 1);
                     pc = imm16();
                     if constexpr (kChargeTaken) rem -= vd.taken[kOp];
@@ -621,7 +620,7 @@ struct I8085::Loop {
                     pc = static_cast<std::uint16_t>(pc + x.imm);
                 }
             } else if constexpr (x.flow == Flow::Call || x.flow == Flow::CallIf) {
-                if (taken()) {
+                if (taken) {
                     const std::uint16_t to = imm16();
                     if constexpr (kChargeTaken) rem -= vd.taken[kOp];
                     push16(pc);
@@ -630,12 +629,12 @@ struct I8085::Loop {
                     pc = static_cast<std::uint16_t>(pc + x.imm);
                 }
             } else if constexpr (x.flow == Flow::Return || x.flow == Flow::ReturnIf) {
-                if (taken()) {
+                if (taken) {
                     if constexpr (kChargeTaken) rem -= vd.taken[kOp];
                     pc = pop16();
                 }
             } else if constexpr (x.flow == Flow::Restart || x.flow == Flow::RestartIf) {
-                if (taken()) {
+                if (taken) {
                     if constexpr (kChargeTaken) rem -= vd.taken[kOp];
                     push16(pc);
                     pc = x.vector;
