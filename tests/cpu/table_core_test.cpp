@@ -52,7 +52,7 @@ void run_once(Rig& rig, std::uint8_t op, std::mt19937& rng, Seen& seen) {
     r.f = i8080 ? static_cast<std::uint8_t>((byte() & 0xD7) | 0x02) : static_cast<std::uint8_t>(byte() & 0xF7);
     r.sp = static_cast<std::uint16_t>(0xC000 + (rng() & 0x3FFF));
     r.pc = kCode;
-    for (unsigned k = 0; k < 4; ++k) rig.ram[r.sp + k] = byte();
+    for (unsigned k = 0; k < 4; ++k) rig.ram[static_cast<std::uint16_t>(r.sp + k)] = byte();  // the stack wraps at FFFFH
     rig.ram[kCode] = op;
     std::uint16_t target = 0;
     do {  // an operand address that is not the next instruction, so a taken jump shows
@@ -63,7 +63,7 @@ void run_once(Rig& rig, std::uint8_t op, std::mt19937& rng, Seen& seen) {
     if (length < 3) target = 0;  // no address operand
 
     const Registers before = r;
-    const std::uint16_t popped = static_cast<std::uint16_t>(rig.ram[before.sp] | rig.ram[before.sp + 1] << 8);
+    const std::uint16_t popped = static_cast<std::uint16_t>(rig.ram[before.sp] | rig.ram[static_cast<std::uint16_t>(before.sp + 1)] << 8);
     const std::uint64_t t = rig.cpu.step();
     const Registers& after = rig.r();
     seen.flags_changed |= static_cast<std::uint8_t>(before.f ^ after.f);
