@@ -14,6 +14,7 @@ enum class InputKind : std::uint8_t {
     Key,       // code = keypad key id, level = pressed
     VectIntr,  // the VECT INTR key (RST 7.5), level = pressed
     Reset,     // the RESET key, level = pressed (the CPU is held in reset while pressed)
+    Serial,    // a character typed at the serial terminal on SID/SOD, code = the character
 };
 
 struct InputEvent {

@@ -234,12 +234,35 @@ void Machine::drive(board::CpuPin pin, bool level, std::uint64_t t) {
 
 void Machine::set_probe(PinProbe* probe) {
     probe_ = probe;
+    update_sod();
+}
+
+void Machine::update_sod() {
     // SIM changes SOD inside an instruction: seen at that instruction's first T-state.
-    if (probe)
-        cpu_.on_sod = [this](bool) { probe_look(cpu_.tstates()); };
+    if (probe_ || serial_)
+        cpu_.on_sod = [this](bool level) {
+            const std::uint64_t t = cpu_.tstates();
+            if (serial_) serial_->sod(level, t);
+            probe_look(t);
+        };
     else
         cpu_.on_sod = nullptr;
 }
+
+void Machine::connect_serial(periph::SerialTerminal& terminal) {
+    if (serial_) throw std::logic_error("a serial terminal is already connected");
+    attach(terminal);
+    serial_ = &terminal;
+    terminal.set_sod_level(cpu_.sod());
+    terminal.on_txd([this](bool level, std::uint64_t t) {
+        cpu_.set_sid(level);
+        probe_look(t);
+    });
+    cpu_.set_sid(terminal.txd());
+    update_sod();
+}
+
+void Machine::serial_at(std::uint8_t value, std::uint64_t at) { inputs_.schedule(at, InputKind::Serial, value, true); }
 
 void Machine::probe_clock(std::uint64_t t) {
     while (probe_) {
@@ -255,7 +278,7 @@ void Machine::probe_clock(std::uint64_t t) {
 void Machine::cpu_pins(periph::Pins& p) const {
     p.scope("8085");
     p.logic("SOD", cpu_.sod());
-    p.logic("SID", cpu_.sid(), false);
+    p.logic("SID", cpu_.sid());
     p.logic("TRAP", cpu_.trap_pin());
     p.logic("RST7_5", cpu_.rst75_pin());
     p.logic("RST6_5", cpu_.rst65_pin());
@@ -341,7 +364,9 @@ bool Machine::poke(std::uint16_t address, std::uint8_t value) {
 
 void Machine::reset() {
     const std::uint64_t t = now();
+    const bool sod = cpu_.sod();
     cpu_.reset();
+    if (sod != cpu_.sod() && cpu_.on_sod) cpu_.on_sod(cpu_.sod());  // RESET puts SOD low: a listener sees it fall
     for (periph::Part* p : parts_) {
         p->advance(t);
         p->reset(t);
@@ -361,6 +386,9 @@ void Machine::apply(const InputEvent& e) {
         }
         case InputKind::VectIntr: drive(board::pin_of(board::Source::VectIntrKey), e.level, std::max(e.at, now())); break;
         case InputKind::Reset: drive(board::pin_of(board::Source::ResetKey), e.level, std::max(e.at, now())); break;
+        case InputKind::Serial:
+            if (serial_) serial_->type(static_cast<std::uint8_t>(e.code), std::max(e.at, now()));
+            break;
     }
 }
 

@@ -29,6 +29,7 @@
 #include "peripherals/keypad.h"
 #include "peripherals/machine_tool.h"
 #include "peripherals/part.h"
+#include "peripherals/serial_terminal.h"
 
 namespace alp85 {
 
@@ -140,6 +141,8 @@ public:
     void key_at(periph::Key key, bool down, std::uint64_t at);
     void vect_intr_at(bool down, std::uint64_t at);
     void reset_key_at(bool down, std::uint64_t at);
+    // A character typed at the serial terminal (connect_serial) at T-state `at`; ignored without one.
+    void serial_at(std::uint8_t value, std::uint64_t at);
     const InputQueue& inputs() const { return inputs_; }
     // Every outside input applied so far, with its T-state, in the order applied: scheduling
     // these again on a machine restored to an earlier snapshot replays the run exactly.
@@ -187,6 +190,11 @@ public:
     // Calls fn(t) at every multiple of `period` T-states while set (a recorder's sampling clock);
     // the batches end there. period 0 removes it.
     void set_sampler(std::uint64_t period, std::function<void(std::uint64_t t)> fn);
+    // Connects a serial terminal to SID (its TXD) and SOD (its RXD) and attaches it as a part (it
+    // must outlive the machine; one terminal, connected once). SID follows the terminal's line from
+    // now on.
+    void connect_serial(periph::SerialTerminal& terminal);
+    periph::SerialTerminal* serial() const { return serial_; }
     // Installs a logic analyzer (nullptr removes it; it must outlive its installation); see PinProbe.
     void set_probe(PinProbe* probe);
     PinProbe* probe() const { return probe_; }
@@ -231,6 +239,7 @@ private:
     std::uint8_t sense_tool(std::uint64_t t);  // the transducers to port B's pins
     void sample(std::uint64_t t);
     void update_hooks();
+    void update_sod();  // the CPU's on_sod while a probe or a terminal listens to SOD
     void restore_sections(const std::vector<std::uint8_t>& bytes);
 
     Options options_;
@@ -252,6 +261,7 @@ private:
     std::function<void(std::uint64_t)> sampler_;
     bool sampler_paused_ = false;
     PinProbe* probe_ = nullptr;
+    periph::SerialTerminal* serial_ = nullptr;
     std::vector<periph::Part*> parts_;
 
     std::vector<std::unique_ptr<IoDevice>> chip_ports_;  // the chips' I/O decoding (board::kIoMap)

@@ -21,7 +21,7 @@ struct MachineSection {
 
 template <class E, class Io>
 void event_fields(E& e, Io& io) {
-    io(e.at), io(e.seq), io(e.kind, InputKind::Reset), io(e.code), io(e.level);
+    io(e.at), io(e.seq), io(e.kind, InputKind::Serial), io(e.code), io(e.level);
 }
 
 Section machine_section(Variant variant, const InputQueue& inputs) {
@@ -51,6 +51,7 @@ MachineSection parse_machine(const Section& s) {
         InputEvent e;
         event_fields(e, r);
         if (e.kind == InputKind::Key && e.code >= periph::Keypad::kKeyCount) r.fail("unknown key");
+        if (e.kind == InputKind::Serial && e.code > 0xFF) r.fail("a serial character beyond a byte");
         m.pending.push_back(e);
     }
     r.expect_end();

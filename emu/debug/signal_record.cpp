@@ -131,10 +131,10 @@ void SignalRecorder::start(Machine& machine, const std::filesystem::path& path, 
                      board::kCpuHz, board::kCpuHz)
       << "  gives it back exactly (a T-state is 325 ns, far more than the rounding).\n"
       << fmt::format("  Recording started at T-state {}.\n", t)
-      << "  Exact to the T-state: the 8155's ports and TIMER OUT, the 8279, the 8085's interrupt lines and SOD\n"
-      << "  (a port write at the first T-state of the OUT's I/O write cycle, SOD at the SIM's first T-state),\n"
-      << "  the sequencers' inputs and phase drives.\n"
-      << fmt::format("  Sampled every {} T-states: the 8085's HLT and SID, the transducers' COUNT and CDIR, the\n", period_)
+      << "  Exact to the T-state: the 8155's ports and TIMER OUT, the 8279, the 8085's interrupt lines, SOD and\n"
+      << "  SID (a port write at the first T-state of the OUT's I/O write cycle, SOD at the SIM's first T-state,\n"
+      << "  SID at a serial terminal's bit edges), the sequencers' inputs and phase drives.\n"
+      << fmt::format("  Sampled every {} T-states: the 8085's HLT, the transducers' COUNT and CDIR, the\n", period_)
       << "  winding currents (A) and rotor angles (degrees).\n"
       << "$end\n";
     o << "$timescale 1 ns $end\n";

@@ -6,8 +6,8 @@
 // #round(T * 1e9 / kCpuHz), so round(ns * kCpuHz / 1e9) gives T back exactly (the header says so,
 // with the T-states the recording starts and ends at; sigrok 0.5 stops reading at a vector, so
 // there is no T-state variable). Pins that change at a write,
-// a timer or an interrupt line, and the 8279's scan, are recorded at their T-state; the 8085's HLT
-// and SID and the machine tool's physics (transducer outputs, currents, rotor angle) on a sample
+// a timer or an interrupt line, SID (a serial terminal's bit edges) and the 8279's scan, are
+// recorded at their T-state; the 8085's HLT and the machine tool's physics (transducer outputs, currents, rotor angle) on a sample
 // clock of `period` T-states.
 //
 // The file goes to a temporary beside its target and takes its name only at stop(): a recording
