@@ -713,6 +713,19 @@ void Session::key(Button button, periph::Key k, bool down) {
     if (button == Button::Reset && down) time_origin_ = m.now();
 }
 
+Session::Outcome Session::connect_serial(const periph::UartFormat& format, std::uint64_t gap) {
+    if (serial_) return {Status::Failed, fmt::format("a serial terminal is already connected ({})", serial_->format().text())};
+    serial_ = std::make_unique<periph::SerialTerminal>(board::kCpuHz, format, gap);
+    machine_->connect_serial(*serial_);
+    debugger_.state_changed(true);  // a part came in: no earlier snapshot has it
+    return {};
+}
+
+void Session::serial_type(std::string_view text) {
+    Machine& m = *machine_;
+    for (const char ch : text) m.serial_at(static_cast<std::uint8_t>(ch), m.now());
+}
+
 Session::Outcome Session::execute(const Command& c) {
     Outcome o = run_command(c);
     if (debugger_.take_time_limit_hit()) o = fail(c, debugger_.time_limit_message());

@@ -86,6 +86,13 @@ public:
     Outcome new_workpiece();  // the operator's set-up of a new workpiece (the script's `new workpiece`)
     // A key pressed or released now (a user at the keypad), scheduled where every key is.
     void key(Button button, periph::Key key, bool down);
+    // A serial terminal on SID and SOD (docs/signals.md, "A serial line on SID/SOD"), connected
+    // once for the rest of the session; `gap`: idle T-states it leaves between the characters it
+    // sends. Failed if one is already connected.
+    Outcome connect_serial(const periph::UartFormat& format, std::uint64_t gap);
+    periph::SerialTerminal* serial() { return serial_.get(); }
+    // Characters typed at that terminal now, scheduled as the keys are; sent one after another.
+    void serial_type(std::string_view text);
 
     // Runs one command. Failed expectations and commands that cannot be carried out (a load that
     // falls off the board, a snapshot that is refused, a run-until that times out) give Failed.
@@ -157,6 +164,7 @@ private:
     std::string axes_text() const;
 
     SessionOptions options_;
+    std::unique_ptr<periph::SerialTerminal> serial_;  // before the machine: it outlives it
     std::unique_ptr<Machine> machine_;
     debug::Debugger debugger_;
     std::filesystem::path out_dir_;
