@@ -39,6 +39,7 @@ void add_gui_command(CLI::App& app, int& status) {
         std::vector<std::string> firmware;  // --firmware, added to the positional ones
         std::string motor = "physical";
         std::string speed = "1";
+        std::string serial;
         long frames = 0;
         double seconds = 0;
     };
@@ -82,15 +83,19 @@ void add_gui_command(CLI::App& app, int& status) {
         ->check(CLI::IsMember({"0.1", "1", "10", "100", "max"}))
         ->capture_default_str();
     add_motor_option(cmd, args->motor);
+    cmd->add_option("--serial", args->serial,
+                    "A serial terminal on SID/SOD at BAUD[,FRAME] (as alp85 run --serial: 9600, 1200,7E1) and its Terminal "
+                    "pane: what SOD sends is shown, what is typed there goes to SID");
     cmd->add_option("--out-dir", args->o.out_dir, "Folder for the files the script writes (as alp85 script --out-dir); created if missing");
     cmd->footer(
         "Examples:\n"
         "  alp85 gui                       the monitor and thesis-fixed; type R 7 0800 EXEC\n"
         "  alp85 gui --script scripts/demo/thesis.alp                 the walk-through at real time\n"
         "  alp85 gui --script scripts/demo/thesis.alp --speed max --screenshot gui.png\n"
+        "  alp85 gui firmware/demo/echo85.asm --serial 9600   type R 7 0800 EXEC, then type in the Terminal pane\n"
         "Without a display it exits with status 2; use `alp85 run` or `alp85 script` there.\n"
         "Exit status: 0, 1 the script or --expect-display failed or the screenshot cannot be written,\n"
-        "2 a usage error (a bad number, a --screenshot that is an input) or no display; SIGTERM or\n"
+        "2 a usage error (a bad number or --serial rate, a --screenshot that is an input) or no display; SIGTERM or\n"
         "Ctrl-C close the window within a second whatever it is doing: 128 + the signal (143, 130).");
     cmd->callback([args, cmd, &status] {
         if (refuse_empty_outputs("gui", *cmd, {"--screenshot"})) {
@@ -105,6 +110,15 @@ void add_gui_command(CLI::App& app, int& status) {
                                         fmt::format("{} needs a finite number", seconds ? "--seconds" : "--scale"));
             status = kUsageError;
             return;
+        }
+        if (!args->serial.empty()) {
+            std::string why;
+            args->o.serial = periph::parse_uart_format(args->serial, why);
+            if (!args->o.serial) {
+                std::cerr << argument_error("alp85 gui", args->serial, why + " in --serial");
+                status = kUsageError;
+                return;
+            }
         }
         for (const std::string& spec : args->o.click_lines)
             if (const std::string why = click_line_problem(spec, args->o.debug); !why.empty()) {

@@ -29,6 +29,7 @@
 #include "emu/gui/input.h"
 #include "emu/gui/pacer.h"
 #include "emu/gui/screenshot.h"
+#include "emu/gui/terminal_pane.h"
 #include "emu/gui/tool_view.h"
 #include "emu/gui/toolpath.h"
 #include "emu/plot/plot.h"
@@ -87,6 +88,8 @@ public:
         if (!o.out_dir.empty()) session_.set_out_dir(o.out_dir);
         machine().tool().set_model(o.motor);
         if (o.parts) o.parts(machine());
+        // The terminal leaves a character's time between the characters it sends (as alp85 run).
+        if (o.serial) done(session_.connect_serial(*o.serial, o.serial->frame_tstates(board::kCpuHz)));
         panes_.shown_part = o.show_part;
         session_.debugger().listen([this](const debug::Event& e) { ui_.add_log(e.text); });
         for (const auto& e : firmware::builtin()) ui_.firmware_names.emplace_back(e.name);
@@ -159,6 +162,8 @@ private:
     void push_button(Vec2 logical, bool down);
     void push_click(Vec2 logical, bool down);
     long hook_wait_ = 0;               // frames still to let pass ("frames:N")
+    TerminalPane terminal_;            // --serial
+    std::string serial_hook_;          // "serial:TEXT": typed into the Terminal pane once it has the keyboard
     std::optional<Vec2> button_up_;    // a hook's click, released next frame
     Toolpath path_;
     Backdrop backdrop_;
@@ -674,6 +679,19 @@ void App::drive_debug_hooks() {
         --hook_wait_;
         return;
     }
+    if (!serial_hook_.empty()) {  // typed as a keyboard types: text input events to the focused line
+        if (!terminal_.focused) return;
+        for (std::size_t at = 0; at < serial_hook_.size(); at += sizeof(SDL_TextInputEvent::text) - 1) {
+            SDL_Event e{};
+            e.type = SDL_TEXTINPUT;
+            e.text.windowID = SDL_GetWindowID(window_);
+            const std::string piece = serial_hook_.substr(at, sizeof(SDL_TextInputEvent::text) - 1);
+            std::copy(piece.begin(), piece.end(), e.text.text);
+            SDL_PushEvent(&e);
+        }
+        serial_hook_.clear();
+        return;
+    }
     if (button_up_) {  // the second half of a click: released a frame after it was pressed
         push_click(*button_up_, false);
         button_up_.reset();
@@ -702,6 +720,20 @@ void App::drive_debug_hooks() {
         }
         if (line.starts_with("frames:")) {
             hook_wait_ = std::atol(line.c_str() + 7);
+            return;
+        }
+        if (line.starts_with("serial:") || line == "terminal") {  // type into the Terminal pane; print its text
+            if (!session_.serial()) {
+                std::cerr << "alp85 gui: --debug-command " << line << ": no serial terminal (--serial)\n";
+                status_ = 2;
+                return;
+            }
+            if (line == "terminal")
+                std::cout << fmt::format("[gui] terminal: {}\n", terminal_text(*session_.serial())) << std::flush;
+            else {
+                terminal_.focus = true;
+                serial_hook_ = line.substr(7);
+            }
             return;
         }
         if (line.starts_with("clickrow:")) {  // a click on a source row as shown (no line looked up first)
@@ -803,6 +835,8 @@ void App::draw() {
             dl->AddText({kHintRect.x, kHintRect.y + 2}, IM_COL32(235, 235, 235, 255), hint->data(), hint->data() + hint->size());
         ImGui::End();
     }
+    if (periph::SerialTerminal* t = session_.serial())
+        if (const std::string typed = draw_terminal_pane(*t, terminal_); !typed.empty()) session_.serial_type(typed);
     if (o_.debug) {
         draw_debug_panes(panes_, shell_, ui_.running || in_command_);
         if (panes_.request != DebugPanes::Request::None && !in_command_) debug_request(std::exchange(panes_.request, DebugPanes::Request::None));

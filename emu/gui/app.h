@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "peripherals/machine_tool.h"
+#include "peripherals/uart.h"
 
 namespace alp85 {
 class Machine;
@@ -36,6 +37,8 @@ struct GuiOptions {
     // attaches them, Machine::attach); the front end shows them from their descriptions alone.
     std::function<void(Machine&)> parts;
     std::string show_part;                    // --debug: the chip pane brings this part's tab forward
+    // --serial: a terminal on SID/SOD and its Terminal pane (emu/gui/terminal_pane.h).
+    std::optional<periph::UartFormat> serial;
 };
 
 // Opens the window and runs until it is closed or an exit condition of `o` is met. Returns the
