@@ -75,8 +75,8 @@ void report_serial_error(const periph::UartChar& c) {
     const char* what = c.is_break() ? "break (SOD held at space through the stop bit)"
                        : c.error == periph::UartChar::Error::Framing ? "framing error (stop bit low)"
                                                                       : "parity error";
-    std::cerr << fmt::format("alp85 run: serial: {} at {} ({} T-states), character {:02X}H as sampled\n", what,
-                             script::Session::format_time(c.at), c.at, c.value);
+    std::cerr << fmt::format("alp85 run: serial: {} at {}, character {:02X}H as sampled\n", what,
+                             script::Session::format_time(c.at), c.value);
 }
 
 }  // namespace
