@@ -53,6 +53,7 @@ TEST(SerialLine, SidFollowsTheTerminalAtEachBit) {
     EXPECT_FALSE(m.cpu().sid());
     m.run_until(9 * 320);  // the stop bit
     EXPECT_TRUE(m.cpu().sid());
+    ASSERT_FALSE(m.input_log().empty());
     EXPECT_EQ(m.input_log().back().kind, InputKind::Serial);  // the debugger replays it
 }
 
@@ -61,6 +62,37 @@ TEST(SerialLine, NoTerminalNoSid) {
     m.serial_at('A', 0);  // ignored: nothing on SID
     m.run_until(1000);
     EXPECT_FALSE(m.cpu().sid());
+}
+
+// A snapshot taken before the characters were typed, restored on a second board with its own
+// terminal, and the first board's input log from then on replayed: the same echo at the same
+// T-states (what the debugger's reverse execution relies on).
+TEST(SerialLine, TypedCharactersReplayFromTheInputLog) {
+    const auto setup = [](Machine& m, periph::SerialTerminal& term) {
+        load_image(m, std::string(ALP85_SOURCE_DIR) + "/firmware/demo/echo85.asm");
+        m.reset();
+        m.cpu().regs().pc = 0x0800;  // 9600 baud
+        m.connect_serial(term);
+    };
+    const periph::UartFormat f = rate(9600);
+    Machine a, b;
+    periph::SerialTerminal ta(board::kCpuHz, f, f.frame_tstates(board::kCpuHz)), tb(board::kCpuHz, f, f.frame_tstates(board::kCpuHz));
+    setup(a, ta);
+    setup(b, tb);
+    a.run_until(1000);
+    const auto snapshot = a.snapshot_bytes();
+    const std::size_t logged = a.input_log().size();
+    for (char c : std::string("ok")) a.serial_at(static_cast<std::uint8_t>(c), a.now());
+    std::vector<std::uint64_t> at_a, at_b;
+    ta.on_receive([&](const periph::UartChar& c) { at_a.push_back(c.at); });
+    tb.on_receive([&](const periph::UartChar& c) { at_b.push_back(c.at); });
+    a.run_until(40000);  // two frames, a gap, the echo: under 4 frames and 2 gaps (25 600)
+    ASSERT_EQ(std::string(ta.text().begin(), ta.text().end()), "ok");
+    b.restore_bytes(snapshot);
+    b.replay({a.input_log().begin() + static_cast<std::ptrdiff_t>(logged), a.input_log().end()});
+    b.run_until(40000);
+    EXPECT_EQ(std::string(tb.text().begin(), tb.text().end()), "ok");
+    EXPECT_EQ(at_b, at_a);
 }
 
 struct Rate {
