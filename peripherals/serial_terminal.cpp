@@ -68,7 +68,8 @@ void SerialTerminal::describe(Description& d) const {
     d.title = fmt::format("serial terminal on SID/SOD ({})", format().text());
     d.add(Field::note("TXD", tx_.level() ? "mark (1), to SID" : "space (0), to SID"));
     d.add(Field::note("RXD", rx_.state().level ? "mark (1), from SOD" : "space (0), from SOD"));
-    d.add(Field::decimal("to send", static_cast<std::int64_t>(tx_.state().queue.size()), 16, "characters queued"));
+    d.add(Field::decimal("to send", static_cast<std::int64_t>(tx_.state().queue.size() - tx_.state().head), 32,
+                         "characters queued"));
     d.add(Field::decimal("received", static_cast<std::int64_t>(received_), 32, "characters"));
     d.add(Field::decimal("errors", static_cast<std::int64_t>(errors_), 32, "framing or parity"));
 }

@@ -55,7 +55,11 @@ std::optional<UartFormat> parse_uart_format(std::string_view text, std::string& 
 // ---- transmitter -----------------------------------------------------------------------------
 
 void UartTransmitter::send(std::uint8_t value, std::uint64_t at) {
-    if (s_.queue.empty()) s_.start = std::max(s_.start, at);  // idle: the gap after the last, or now
+    if (!busy()) {  // idle: after the gap that follows the last character, or now
+        s_.start = std::max(s_.start, at);
+        s_.queue.clear();
+        s_.head = 0;
+    }
     s_.queue.push_back(value);
     s_.sending = true;
 }
@@ -63,8 +67,9 @@ void UartTransmitter::send(std::uint8_t value, std::uint64_t at) {
 bool UartTransmitter::bit_level(unsigned k) const {
     const unsigned data = format_.data_bits;
     if (k == 0) return false;                      // start bit: space
-    if (k <= data) return (s_.queue.front() >> (k - 1)) & 1u;  // data, least significant first
-    if (k == data + 1 && format_.parity != Parity::None) return format_.parity_bit(s_.queue.front());
+    const std::uint8_t value = s_.queue[s_.head];
+    if (k <= data) return (value >> (k - 1)) & 1u;  // data, least significant first
+    if (k == data + 1 && format_.parity != Parity::None) return format_.parity_bit(value);
     return true;                                   // stop bits, then the idle line: mark
 }
 
@@ -78,10 +83,10 @@ void UartTransmitter::advance(std::uint64_t now, const std::function<void(bool, 
         const std::uint64_t t = next_event();
         if (t > now) return;
         if (s_.bit == format_.frame_bits()) {  // the stop bits are over: the next may follow after the gap
-            s_.queue.erase(s_.queue.begin());
+            ++s_.head;
             s_.start = t + gap_;
             s_.bit = 0;
-            s_.sending = !s_.queue.empty();
+            s_.sending = busy();
             continue;
         }
         const bool level = bit_level(s_.bit);

@@ -57,13 +57,14 @@ struct UartChar {
 class UartTransmitter {
 public:
     struct State {
-        std::vector<std::uint8_t> queue;  // characters waiting, the one being sent first
-        bool sending = false;             // queue[0] is on the line
+        std::vector<std::uint8_t> queue;  // characters handed over; queue[head] is the next to send
+        std::uint32_t head = 0;           // (a long input is not moved up a character at a time)
+        bool sending = false;             // queue[head] is on the line
         std::uint64_t start = 0;          // its start bit (sending), or when the next may start
         std::uint8_t bit = 0;             // the next bit boundary (0 = the start bit)
         bool level = true;                // the line
         template <class S, class Io> static void fields(S& s, Io& io) {
-            io(s.queue), io(s.sending), io(s.start), io(s.bit), io(s.level);
+            io(s.queue), io(s.head), io(s.sending), io(s.start), io(s.bit), io(s.level);
         }
     };
 
@@ -79,16 +80,18 @@ public:
     // The next bit boundary (Part::kNever when idle).
     std::uint64_t next_event() const;
     bool level() const { return s_.level; }
-    bool busy() const { return !s_.queue.empty(); }
+    bool busy() const { return s_.head < s_.queue.size(); }
     const UartFormat& format() const { return format_; }
     std::uint64_t gap() const { return gap_; }
     const State& state() const { return s_; }
     // A state read back from a snapshot: false if it cannot be this transmitter's.
-    bool valid(const State& s) const { return s.bit <= format_.frame_bits() && (!s.sending || !s.queue.empty()); }
+    bool valid(const State& s) const {
+        return s.bit <= format_.frame_bits() && s.head <= s.queue.size() && s.sending == (s.head < s.queue.size());
+    }
     void set_state(State s) { s_ = std::move(s); }
 
 private:
-    bool bit_level(unsigned k) const;  // the level from boundary k of queue[0]'s frame on
+    bool bit_level(unsigned k) const;  // the level from boundary k of queue[head]'s frame on
 
     std::uint64_t clock_;
     UartFormat format_;

@@ -258,9 +258,9 @@ TEST(SerialTerminal, RefusesAFrameBeyondItsBits) {
     a.advance(5 * 320);
     std::vector<std::uint8_t> state;
     a.save(state);
-    // The transmitter's bit index: after the header (3), the queue (4-byte length + 1), sending (1)
-    // and start (8).
-    state[3 + 5 + 1 + 8] = 99;
+    // The transmitter's bit index: after the header (3), the queue (4-byte length + 1), head (4),
+    // sending (1) and start (8).
+    state[3 + 5 + 4 + 1 + 8] = 99;
     SerialTerminal b(kClock, format("9600"), 0);
     EXPECT_THROW(b.load(state), SnapshotError);
     EXPECT_TRUE(b.text().empty());
