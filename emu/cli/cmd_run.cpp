@@ -7,7 +7,6 @@
 // character), and a report points at the argument on the command line.
 #include <filesystem>
 #include <iostream>
-#include <iterator>
 #include <memory>
 
 #include <fmt/format.h>
@@ -69,6 +68,8 @@ void add_print(std::vector<Command>& commands, std::string text) {
     c.text = std::move(text);
     commands.push_back(std::move(c));
 }
+
+constexpr std::size_t kSerialInputCap = 1 << 20;  // 1 MiB
 
 // A character the terminal took with an error: a line on standard error, the text stays clean.
 void report_serial_error(const periph::UartChar& c) {
@@ -250,8 +251,20 @@ void add_run_command(CLI::App& app, int& status) {
         }
         // Standard input is read to its end before the run, so the run is the same for a pipe, a
         // file or a terminal (Ctrl-D ends it there): only its bytes decide, never when they came.
+        // At most kSerialInputCap bytes (36 minutes of machine time at 9600 baud with a character's
+        // gap after each): /dev/zero is refused, not read for ever.
         std::string input;
-        if (line) input.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+        if (line) {
+            input.resize(kSerialInputCap + 1);
+            std::cin.read(input.data(), static_cast<std::streamsize>(input.size()));
+            input.resize(static_cast<std::size_t>(std::cin.gcount()));
+            if (input.size() > kSerialInputCap) {
+                std::cerr << fmt::format("alp85 run: standard input is larger than {} bytes, the most --serial sends\n",
+                                         kSerialInputCap);
+                status = kUsageError;
+                return;
+            }
+        }
         for (std::size_t i = 0; i < commands.size(); ++i) {
             Command c = commands[i];
             if (line && i == send_before && !input.empty()) {
