@@ -164,6 +164,7 @@ private:
     long hook_wait_ = 0;               // frames still to let pass ("frames:N")
     TerminalPane terminal_;            // --serial
     std::string serial_hook_;          // "serial:TEXT": typed into the Terminal pane once it has the keyboard
+    long serial_wait_ = 0;             // frames it waited for the keyboard
     std::optional<Vec2> button_up_;    // a hook's click, released next frame
     Toolpath path_;
     Backdrop backdrop_;
@@ -680,7 +681,19 @@ void App::drive_debug_hooks() {
         return;
     }
     if (!serial_hook_.empty()) {  // typed as a keyboard types: text input events to the focused line
-        if (!terminal_.focused) return;
+        if (!terminal_.focused) {
+            // Asked again each frame: a focus change of the window (Xvfb has no window manager)
+            // takes the keyboard from the line.
+            if (++serial_wait_ > 600) {
+                std::cerr << "alp85 gui: --debug-command serial: the Terminal pane's line never had the keyboard\n";
+                status_ = 2;
+                quit_ = true;
+                serial_hook_.clear();
+                return;
+            }
+            terminal_.focus = true;
+            return;
+        }
         for (std::size_t at = 0; at < serial_hook_.size(); at += sizeof(SDL_TextInputEvent::text) - 1) {
             SDL_Event e{};
             e.type = SDL_TEXTINPUT;
@@ -733,6 +746,7 @@ void App::drive_debug_hooks() {
             else {
                 terminal_.focus = true;
                 serial_hook_ = line.substr(7);
+                serial_wait_ = 0;
             }
             return;
         }
