@@ -287,10 +287,11 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 err(c, col_of(c, c.text), why);
 }
 
-Session::Outcome Session::load(const Command& c) {
+Session::Outcome Session::load(const Command& c, const Boot* boot) {
     const auto path = resolve(c.text);
     try {
         LoadOptions lo;
+        if (boot) lo.assembler.defines = boot->defines;
         if (c.address) {
             std::string e;
             const auto a = resolve(*c.address, e);
@@ -298,7 +299,8 @@ Session::Outcome Session::load(const Command& c) {
             lo.address = static_cast<std::uint16_t>(*a);
         }
         const auto cached = assembled_.find(path.string());
-        LoadedImage img = cached != assembled_.end() && !lo.address ? cached->second : read_image(path, lo);
+        LoadedImage img = cached != assembled_.end() && !lo.address && lo.assembler.defines.empty() ? cached->second
+                                                                                                    : read_image(path, lo);
         check_board_regions(img, path);
         machine_->load(img.segments);
         add_input(path, "a program the session loaded");
@@ -306,6 +308,10 @@ Session::Outcome Session::load(const Command& c) {
             debugger_.program().add_assembly(*img.assembly);
         else
             for (const auto& s : img.symbols) debugger_.program().add(s.name, s.value, asm85::kind_name(s.kind));
+        placed(img.segments);
+        last_start_ = img.start;
+        if (!img.start && !img.segments.empty()) last_start_ = img.segments.front().address;
+        if (report_) report_->warnings.insert(report_->warnings.end(), img.warnings.begin(), img.warnings.end());
     } catch (const LoadError& e) {
         return fail(c, e.what());
     } catch (const std::out_of_range& e) {
@@ -652,16 +658,58 @@ Command typed(Op op, std::string text = {}) {
 }
 }  // namespace
 
-Session::Outcome Session::boot(const Boot& b) {
+void Session::placed(const std::vector<ImageSegment>& segments) {
+    if (!report_) return;
+    for (const ImageSegment& s : segments)
+        for (std::size_t i = 0; i < s.bytes.size(); ++i) report_->code.set((s.address + i) & 0xFFFF);
+}
+
+Session::Outcome Session::boot(const Boot& b, BootReport* report) {
+    if (report) {
+        *report = {};
+        for (const board::MemoryRegion& r : machine_->memory_map())
+            if (r.kind == board::MemoryKind::Ram)
+                for (unsigned a = r.base; a < r.base + r.size; ++a) report->code.set(a);
+    }
+    report_ = report;
+    const Outcome o = boot_steps(b);
+    report_ = nullptr;
+    return o;
+}
+
+Session::Outcome Session::boot_steps(const Boot& b) {
     if (b.motor)
         if (Outcome o = set_motor(*b.motor); o.status != Status::Ok) return o;
     if (b.monitor)
         if (Outcome o = load_monitor(); o.status != Status::Ok) return o;
-    for (const std::string& f : b.firmware)
+    std::optional<std::uint16_t> start;  // where a board without the monitor starts
+    for (const std::string& f : b.firmware) {
         if (Outcome o = load_firmware(f); o.status != Status::Ok) return o;
-    for (const Boot::Image& i : b.images)
-        if (Outcome o = load_image(i.path, i.address); o.status != Status::Ok) return o;
-    return b.reset ? reset() : Outcome{};
+        if (const auto fw = firmware::find(f); fw && !fw->segments.empty()) start = fw->segments.front().address;
+    }
+    for (const Boot::Image& i : b.images) {
+        Command c = typed(Op::Load, i.path.string());
+        if (i.address) c.address = Value{{}, *i.address, 0, hex(*i.address, 4)};
+        Outcome o = load(c, &b);
+        debugger_.state_changed(false);  // as execute() after a load
+        if (o.status != Status::Ok) return o;
+        if (last_start_) start = last_start_;
+    }
+    for (const std::filesystem::path& m : b.maps) {
+        const auto map = resolve(m.string());
+        add_input(map, "a program's map");
+        if (std::string why = debugger_.program().load_map_file(map.string()); !why.empty()) return {Status::Failed, std::move(why)};
+    }
+    if (!b.reset) return {};
+    if (Outcome o = reset(); o.status != Status::Ok) return o;
+    if (b.pc_at_program && start) machine_->cpu().regs().pc = *start;
+    std::uint64_t t = machine_->now() + b.boot_time;
+    for (const KeyRef& k : b.keys) {
+        key(k.kind, k.key, true, t);
+        key(k.kind, k.key, false, t + kKeyHold);
+        t += kKeyHold + kKeyGap;
+    }
+    return {};
 }
 
 Session::Outcome Session::load_monitor() { return execute(typed(Op::Monitor)); }
@@ -707,10 +755,20 @@ Session::Outcome Session::set_motor(periph::MachineTool::MotorModel model) {
     return execute(c);
 }
 
-void Session::key(Button button, periph::Key k, bool down) {
+void Session::key(Button button, periph::Key k, bool down, std::optional<std::uint64_t> at) {
     Machine& m = *machine_;
-    schedule_key(m, button, k, down, m.now());
+    schedule_key(m, button, k, down, at.value_or(m.now()));
     if (button == Button::Reset && down) time_origin_ = m.now();
+}
+
+void Session::sample_tool(std::uint64_t period, std::function<void(const debug::ToolSample&)> sample) {
+    if (!sample) {
+        machine_->set_sampler(0, {});
+        return;
+    }
+    machine_->set_sampler(period, [this, sample = std::move(sample)](std::uint64_t t) {
+        sample(debug::sample_tool(machine_->tool(), t));
+    });
 }
 
 Session::Outcome Session::execute(const Command& c) {
@@ -739,6 +797,7 @@ Session::Outcome Session::run_command(const Command& c) {
                 const firmware::Firmware rom = options_.monitor_rom();
                 m.load(rom.segments);
                 debugger_.program().add_table(rom.symbols);
+                placed(rom.segments);
             }
             return {};
         case Op::Firmware: {
@@ -747,6 +806,7 @@ Session::Outcome Session::run_command(const Command& c) {
             if (fw->expansion_eprom) m.set_expansion_eprom(true);  // the EPROM it is in goes in with it
             m.load(fw->segments);
             debugger_.program().add_table(fw->symbols);
+            placed(fw->segments);
             return {};
         }
         case Op::Reset:

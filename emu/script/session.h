@@ -3,13 +3,16 @@
 // sources, the script's folder, and the time of the last reset.
 #pragma once
 
+#include <bitset>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "emu/program/firmware.h"
@@ -66,10 +69,25 @@ public:
             std::optional<std::uint16_t> address;  // where (a .bin needs one)
         };
         std::vector<Image> images;
+        std::vector<std::pair<std::string, std::string>> defines;  // NAME=VALUE for every .asm image
+        std::vector<std::filesystem::path> maps;  // asm85 maps read after the images (a .hex's symbols, lines)
         std::optional<periph::MachineTool::MotorModel> motor;
         bool reset = true;                       // RESET IN once everything is in place
+        // A board without the monitor: after the reset the PC is at the last image's start (its
+        // END address, else its first byte), else at the last firmware's first byte.
+        bool pc_at_program = false;
+        // Keys typed after the reset: the first closes `boot_time` after it, each held kKeyHold
+        // with kKeyGap before the next (as the script's `type`); the machine does not run here.
+        std::vector<KeyRef> keys;
+        std::uint64_t boot_time = 0;
     };
-    Outcome boot(const Boot& b);
+    // What a boot placed: where the CPU may fetch instructions (every RAM byte and every byte
+    // loaded: a fetch anywhere else is a runaway), and the loads' warnings (asm85's, file:line:col).
+    struct BootReport {
+        std::bitset<0x10000> code;
+        std::vector<std::string> warnings;
+    };
+    Outcome boot(const Boot& b, BootReport* report = nullptr);
     Outcome load_monitor();
     Outcome load_firmware(const std::string& name);
     Outcome load_image(const std::filesystem::path& path, std::optional<std::uint16_t> address = {});
@@ -84,8 +102,14 @@ public:
     Outcome plot_toolpath(const std::filesystem::path& out);
     Outcome set_motor(periph::MachineTool::MotorModel model);
     Outcome new_workpiece();  // the operator's set-up of a new workpiece (the script's `new workpiece`)
-    // A key pressed or released now (a user at the keypad), scheduled where every key is.
-    void key(Button button, periph::Key key, bool down);
+    // A key pressed or released now, or at machine time `at` (a user at the keypad, a press held
+    // long enough for the debounce): the one entrance of every front end's keys.
+    void key(Button button, periph::Key key, bool down, std::optional<std::uint64_t> at = {});
+    // The machine tool sampled every `period` T-states of machine time (a window drawing the
+    // toolpath); an empty function stops it. One sampler: a recording (record) takes its place.
+    void sample_tool(std::uint64_t period, std::function<void(const debug::ToolSample&)> sample);
+    // The machine's time in T-states (board::kCpuHz a second).
+    std::uint64_t now() const { return machine_->now(); }
 
     // Runs one command. Failed expectations and commands that cannot be carried out (a load that
     // falls off the board, a snapshot that is refused, a run-until that times out) give Failed.
@@ -146,7 +170,9 @@ private:
     }
     Outcome fail_expect(const Command& c, const std::string& expected, const std::string& actual) const;
     Outcome run_command(const Command& c);
-    Outcome load(const Command& c);
+    Outcome load(const Command& c, const Boot* boot = nullptr);
+    void placed(const std::vector<ImageSegment>& segments);  // marks them in a boot's report
+    Outcome boot_steps(const Boot& b);
     Outcome press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap);
     Outcome expect(const Command& c);
     Outcome tool_command(const Command& c);
@@ -171,6 +197,8 @@ private:
     std::map<std::string, LoadedImage> assembled_;  // from check(), by resolved path
     std::vector<std::string> warnings_;
     std::uint64_t time_origin_ = 0;
+    BootReport* report_ = nullptr;  // while boot() runs with one
+    std::optional<std::uint16_t> last_start_;  // the last loaded image's start (END, else its first byte)
     std::ostream* trace_ = nullptr;
     std::vector<NamedPath> inputs_, outputs_;  // add_input, add_output
     std::vector<std::string> written_;         // what this session wrote: restoring it protects nothing
