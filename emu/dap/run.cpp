@@ -60,8 +60,7 @@ void Adapter::started(std::optional<debug::Stop> s, std::string_view step_reason
         return;
     }
     run_.step_reason = std::string(step_reason);
-    run_.started_at = machine().now();
-    run_.host_start = host_seconds();
+    run_.pacer.rebase(session_->now(), front::HostClock::now());
 }
 
 // How a run ended, as a stopped event.
@@ -314,8 +313,7 @@ std::optional<std::string> Adapter::begin_console_run(std::string_view line) {
     } else {
         return std::nullopt;
     }
-    run.started_at = machine().now();
-    run.host_start = host_seconds();
+    run.pacer.rebase(session_->now(), front::HostClock::now());
     run_ = run;
     if (s) {
         if (const auto told = ended(*s); told && !told->empty()) text += (text.empty() ? "" : "\n") + *told;
@@ -325,7 +323,6 @@ std::optional<std::string> Adapter::begin_console_run(std::string_view line) {
 
 int Adapter::advance() {
     if (!running()) return -1;
-    Machine& m = machine();
     debug::Debugger& d = session_->debugger();
     const bool paced = config_.real_time && !run_.console;  // the console's runs go as fast as they can
     debug::Budget budget;
@@ -343,9 +340,7 @@ int Adapter::advance() {
     }
     if (!paced) return 0;
     // Paced: the board's 3.072 MHz against the host's clock since the run began.
-    const double ahead = static_cast<double>(m.now() - run_.started_at) / board::kCpuHz -
-                         (host_seconds() - run_.host_start);
-    return ahead > 0 ? static_cast<int>(ahead * 1000) : 0;
+    return static_cast<int>(run_.pacer.ahead(session_->now(), front::HostClock::now()).count());
 }
 
 }  // namespace alp85::dap

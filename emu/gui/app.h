@@ -7,11 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "peripherals/machine_tool.h"
-
-namespace alp85 {
-class Machine;
-}
+#include "emu/script/session.h"
 
 namespace alp85::gui {
 

@@ -10,10 +10,13 @@
 #include <span>
 #include <utility>
 
-#include "emu/board/key_press.h"
-#include "peripherals/keypad.h"
+#include "emu/front/keys.h"
+#include "emu/front/toolpath.h"
 
 namespace alp85::gui {
+
+// The front ends' shared library (emu/front: keys, pacing, the toolpath, views) is the window's own.
+using namespace front;
 
 struct Vec2 {
     float x = 0, y = 0;
@@ -96,22 +99,11 @@ Vec2 segment_centre(unsigned digit, unsigned s);
 Vec2 dp_centre(unsigned digit);
 
 // ---- the board: keypad -----------------------------------------------------------------------------
-// The 24 matrix keys and RESET, VECT INTR, as docs/peripherals.md arranges them (front view):
-//   RESET VECT  R    C D E F
-//   REG   MEM   GO   8 9 A B
-//   STEP  PREV  NEXT 4 5 6 7
-//               EXEC 0 1 2 3
-struct PadKey {
-    Button pad = Button::Matrix;  // the board's button (emu/board/key_press.h)
-    periph::Key key = periph::Key::K0;  // for Matrix
-    int row = 0, col = 0;
-};
+// The keypad's buttons (front::pad_keys, in rows and columns) in the window.
 inline constexpr float kKeyX0 = 24, kKeyY0 = 160, kKeyW = 62, kKeyH = 50, kKeyPitchX = 68, kKeyPitchY = 58;
-std::span<const PadKey> pad_keys();  // 26 buttons
 Rect key_rect(const PadKey& k);
 // The button under a point, if any.
 std::optional<PadKey> key_at(float x, float y);
-std::optional<PadKey> find_pad_key(std::string_view name);  // "R", "EXEC", "RESET", "VECT", ...
 
 // ---- the machine tool --------------------------------------------------------------------------------
 inline constexpr Rect kTableRect{528, 8, 660, 440};   // the X-Y table from above
@@ -135,13 +127,6 @@ inline constexpr int kSourceRows = 23;
 // Row `i` (0 = the first shown) of the source pane, and the row at a point.
 Rect source_row(int i);
 std::optional<int> source_row_at(float x, float y);
-
-struct Bounds {
-    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // mm
-    void add(double x, double y);
-    bool empty() const { return x1 < x0; }
-    static Bounds none() { return {1, 1, 0, 0}; }
-};
 
 // Millimetres of the table to pixels of kTableRect: the bounds fitted with equal scale on both
 // axes, centred, Y up.
