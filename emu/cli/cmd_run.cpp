@@ -122,7 +122,7 @@ void add_run_command(CLI::App& app, int& status) {
         so.out = &std::cout;
         if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
         script::Session session(so);
-        session.machine().tool().set_model(motor_model_of(args->motor));
+        session.set_motor(motor_model_of(args->motor));
         std::vector<ParseError> errors;
         std::vector<Command> commands;
         if (!args->no_monitor) {
@@ -202,7 +202,7 @@ void add_run_command(CLI::App& app, int& status) {
                 status = 1;
                 return;
             }
-        std::cout << fmt::format("{} simulated, PC={:04X}H\n", script::Session::format_time(session.machine().now()),
+        std::cout << fmt::format("{} simulated, PC={:04X}H\n", script::Session::format_time(session.now()),
                                  session.machine().cpu().regs().pc);
         // Where the machine tool's tables are, after the display.
         if (const auto o = session.execute(command(Op::PrintAxes)); o.status != script::Session::Status::Ok) {
