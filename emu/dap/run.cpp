@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "emu/dap/adapter.h"
+#include "emu/front/views.h"
 #include "emu/script/parser.h"
 #include "emu/util/text.h"
 
@@ -164,8 +165,7 @@ void Adapter::goto_(const Json& args, Json&) {
     require_stopped();
     const std::int64_t id = need_int(args, "targetId");
     if (id < 1 || id > 0x10000) throw RequestError(fmt::format("no goto target {}", id));
-    machine().cpu().regs().pc = static_cast<std::uint16_t>(id - 1);
-    session_->debugger().state_changed();
+    session_->set_pc(static_cast<std::uint16_t>(id - 1));
     stopped("goto");
 }
 
@@ -263,7 +263,7 @@ std::optional<std::string> Adapter::begin_console_run(std::string_view line) {
         // gdb: continue N passes the breakpoint here N-1 more times.
         if (!args.empty())
             for (const debug::Breakpoint& b : d.breakpoints())
-                if (b.address == machine().cpu().regs().pc) d.set_ignore(b.number, static_cast<unsigned>(*n - 1));
+                if (b.address == front::cpu_view(*session_).pc) d.set_ignore(b.number, static_cast<unsigned>(*n - 1));
         text = "Continuing.";
         s = d.begin_continue(~std::uint64_t{0});  // as the continue request: until a stop or a pause
     } else if (*name == "step" || *name == "next" || *name == "nexti" || *name == "stepi") {
@@ -294,8 +294,7 @@ std::optional<std::string> Adapter::begin_console_run(std::string_view line) {
         } else if (*name == "advance") {
             s = d.begin_advance(*to);
         } else {
-            machine().cpu().regs().pc = *to;
-            d.state_changed();  // the timeline changes here: history after now is another run's
+            session_->set_pc(*to);
             const auto routine = d.program().routine_at(*to);
             text = fmt::format("Continuing at {:04X}H{}.", *to, routine ? fmt::format(" ({})", *routine) : "");
             s = d.begin_continue(~std::uint64_t{0});

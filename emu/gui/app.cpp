@@ -665,7 +665,7 @@ void App::drive_debug_hooks() {
         }
         const SourceLine l{shell_.debugger().program().line_of(loc.addresses.front())->file, std::atoi(spec.c_str() + colon + 1)};
         panes_.show(l);
-        panes_.last_pc = session_.machine().cpu().regs().pc;  // the pane stays on this line until the PC moves
+        panes_.last_pc = cpu_view(session_).pc;  // the pane stays on this line until the PC moves
         const Vec2 c = source_row(l.line - panes_.first).centre();
         for (const bool down : {true, false}) push_button(c, down);
         return;

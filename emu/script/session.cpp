@@ -761,6 +761,11 @@ void Session::key(Button button, periph::Key k, bool down, std::optional<std::ui
     if (button == Button::Reset && down) time_origin_ = m.now();
 }
 
+void Session::set_pc(std::uint16_t pc) {
+    machine_->cpu().regs().pc = pc;
+    debugger_.state_changed();  // the timeline changes here: history after now is another run's
+}
+
 void Session::sample_tool(std::uint64_t period, std::function<void(const debug::ToolSample&)> sample) {
     if (!sample) {
         machine_->set_sampler(0, {});

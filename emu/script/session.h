@@ -108,6 +108,12 @@ public:
     // The machine tool sampled every `period` T-states of machine time (a window drawing the
     // toolpath); an empty function stops it. One sampler: a recording (record) takes its place.
     void sample_tool(std::uint64_t period, std::function<void(const debug::ToolSample&)> sample);
+    // The address space as a debugger sees it (DAP's readMemory, writeMemory): peek has no side
+    // effects; poke writes RAM or EPROM alike, false where nothing is mapped.
+    std::uint8_t peek(std::uint16_t address) const { return machine_->peek(address); }
+    bool poke(std::uint16_t address, std::uint8_t value) { return machine_->poke(address, value); }
+    // The PC moved by hand (DAP's goto, the console's jump): reverse execution's history ends here.
+    void set_pc(std::uint16_t pc);
     // The machine's time in T-states (board::kCpuHz a second).
     std::uint64_t now() const { return machine_->now(); }
 
