@@ -12,7 +12,7 @@
 namespace alp85::gui {
 namespace {
 
-ImVec2 v(Vec2 p) { return {p.x, p.y}; }
+ImVec2 im(Vec2 p) { return {p.x, p.y}; }  // not board_view.cpp's v(): one unit in unity builds
 
 }  // namespace
 
@@ -54,7 +54,7 @@ void draw_table(ImDrawList* dl, Backdrop& bd, const Toolpath& path, const script
     const Bounds w = path.workpiece(s);
     const Vec2 w0 = view.to_px(w.x0, w.y1), w1 = view.to_px(w.x1, w.y0);
     bd.fill_clipped({w0.x, w0.y, w1.x - w0.x, w1.y - w0.y}, r, colour::kWorkpieceFill);
-    dl->AddRect(v(w0), v(w1), to_imu32(colour::kWorkpiece), 0, 0, 2);
+    dl->AddRect(im(w0), im(w1), to_imu32(colour::kWorkpiece), 0, 0, 2);
     dl->AddText({w0.x + 4, w0.y + 2}, IM_COL32(230, 210, 170, 255), "workpiece");
     dl->PopClipRect();
     // The title fits the view (the Z gauge starts where the table ends); F1 tells the mouse's zoom and pan.
@@ -73,18 +73,18 @@ void draw_toolpath(ImDrawList* dl, const ToolView& tool, const Toolpath& path, c
         for (std::size_t i = 1; i < pts.size(); ++i) {
             if (i + 1 < pts.size() && std::hypot(pts[i].x - last_mm.x, pts[i].y - last_mm.y) < step_mm) continue;
             const Vec2 p = view.to_px(pts[i].x, pts[i].y);
-            dl->AddLine(v(last), v(p), to_imu32(colour::kToolpath), 2);
+            dl->AddLine(im(last), im(p), to_imu32(colour::kToolpath), 2);
             last = p, last_mm = pts[i];
         }
     }
     if (const auto l = path.ideal(s)) {
         const ImU32 c = to_imu32(colour::kIdealLine, l->started ? 255 : 140);
-        dl->AddLine(v(view.to_px(l->from.x, l->from.y)), v(view.to_px(l->to.x, l->to.y)), c, 1.0f);
-        dl->AddCircle(v(view.to_px(l->to.x, l->to.y)), 4, c);
+        dl->AddLine(im(view.to_px(l->from.x, l->from.y)), im(view.to_px(l->to.x, l->to.y)), c, 1.0f);
+        dl->AddCircle(im(view.to_px(l->to.x, l->to.y)), 4, c);
     }
     const Vec2 at = view.to_px(tool[Axis::X].mm, tool[Axis::Y].mm);
-    dl->AddCircle(v(at), kToolRadius + 1.5f, IM_COL32(0, 0, 0, 255), 20, 2);
-    dl->AddCircleFilled(v(at), kToolRadius, to_imu32(colour::kTool), 20);
+    dl->AddCircle(im(at), kToolRadius + 1.5f, IM_COL32(0, 0, 0, 255), 20, 2);
+    dl->AddCircleFilled(im(at), kToolRadius, to_imu32(colour::kTool), 20);
     dl->PopClipRect();
 }
 
