@@ -175,7 +175,10 @@ void draw_signals_pane(SignalsPane& p, script::Session& s) {
         s.set_trace_span(span_tstates(p.span_ms));
     ImGui::SameLine();
     if (named_button("signals.clear", "Clear cursors")) p.cursors = {}, p.next_cursor = 0;
-    ImGui::TextUnformatted(p.error.empty() ? cursor_readout(p).c_str() : p.error.c_str());
+    const std::string readout = !p.error.empty()        ? p.error
+                                : tr.traces().empty() ? std::string("choose the pins to show (every pin record signals names)")
+                                                      : cursor_readout(p);
+    ImGui::TextUnformatted(readout.c_str());
 
     // ---- the traces ----
     ImDrawList* dl = ImGui::GetWindowDrawList();
