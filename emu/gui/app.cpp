@@ -28,6 +28,7 @@
 #include "emu/gui/debug_panes.h"
 #include "emu/gui/input.h"
 #include "emu/gui/screenshot.h"
+#include "emu/gui/signals_pane.h"
 #include "emu/gui/tool_view.h"
 #include "emu/front/pacer.h"
 #include "emu/front/toolpath.h"
@@ -150,6 +151,7 @@ private:
     script::DebugShell shell_;
     script::Session& session_;
     DebugPanes panes_;
+    SignalsPane signals_;
     std::size_t line_click_pos_ = 0, command_pos_ = 0;
     bool debug_hooks_done() const {
         return line_click_pos_ >= o_.click_lines.size() && command_pos_ >= o_.debug_commands.size() && hook_wait_ == 0 &&
@@ -234,6 +236,12 @@ void App::after_commands() {
 }
 
 int App::start() {
+    if (!o_.signals.empty()) {
+        if (const auto r = open_signals(signals_, session_, o_.signals, o_.signals_ms); r.status != script::Session::Status::Ok) {
+            std::cerr << "alp85 gui: --signals: " << r.message << '\n';
+            return 2;
+        }
+    }
     if (!o_.script.empty()) {
         std::vector<script::ParseError> errors;
         script::RunnerOptions ro;
@@ -359,6 +367,12 @@ void App::handle(const SDL_Event& event) {
     } else if (e.type == SDL_MOUSEMOTION) {
         const Vec2 p = window_to_logical(static_cast<float>(e.motion.x), static_cast<float>(e.motion.y));
         e.motion.x = static_cast<int>(std::floor(p.x)), e.motion.y = static_cast<int>(std::floor(p.y));
+    }
+    // The Signals pane lies over the table view (and the source pane): clicks and the wheel there are its own.
+    if (signals_.open && (e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP || e.type == SDL_MOUSEWHEEL)) {
+        const float x = e.type == SDL_MOUSEWHEEL ? io.MousePos.x : static_cast<float>(e.button.x);
+        const float y = e.type == SDL_MOUSEWHEEL ? io.MousePos.y : static_cast<float>(e.button.y);
+        if (kSignalsRect.contains(x, y)) return;
     }
     if (!o_.debug && table_input(e, io)) return;
     switch (e.type) {
@@ -621,6 +635,10 @@ void App::act(const Action& a) {
                 camera_.reset();
             }
             break;
+        case K::Signals:
+            if (signals_.open) close_signals(signals_, session_);
+            else show_signals(signals_, session_);
+            break;
         case K::Plot:
             // Without a recording, what the table view draws: the toolpath since the last boot,
             // reset or restore, and the thesis's ideal line.
@@ -685,7 +703,8 @@ void App::drive_debug_hooks() {
         // debug.continue, debug.step, ...), "frames:N" lets N frames pass, "status" prints whether
         // the board runs and its time, "toolpath" how many points the drawn path has and its ideal line, "clickrow:N"
         // clicks source row N as shown, "source" prints the file and first line the pane shows,
-        // "where:NAME" a button's centre in screen coordinates.
+        // "where:NAME" a button's centre in screen coordinates, "clickat:X,Y" clicks a point of the
+        // picture, "signals" prints what the Signals pane's cursors read.
         if (line.starts_with("click:")) {
             const auto it = drawn_buttons().find(line.substr(6));
             if (it == drawn_buttons().end()) {
@@ -728,6 +747,21 @@ void App::drive_debug_hooks() {
             SDL_GetWindowPosition(window_, &wx, &wy);
             std::cout << fmt::format("[gui] {} at {},{}\n", line.substr(6), wx + static_cast<int>(c.x), wy + static_cast<int>(c.y))
                       << std::flush;
+            return;
+        }
+        if (line.starts_with("clickat:")) {  // a click at a point of the picture (logical pixels), as a user's
+            float x = 0, y = 0;
+            if (std::sscanf(line.c_str() + 8, "%f,%f", &x, &y) != 2) {
+                std::cerr << "alp85 gui: --debug-command " << line << ": expected clickat:X,Y\n";
+                status_ = 2;
+                return;
+            }
+            push_click({x, y}, true);
+            button_up_ = Vec2{x, y};
+            return;
+        }
+        if (line == "signals") {  // what the Signals pane's cursors read
+            std::cout << "[gui] signals: " << cursor_readout(signals_) << '\n' << std::flush;
             return;
         }
         if (line == "toolpath") {
@@ -810,6 +844,8 @@ void App::draw() {
         if (frames_ % 15 == 0)
             ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
                                      script::Session::format_time(session_.now()), fps_);
+        draw_signals_pane(signals_, session_);
+        ui_.signals = signals_.open;
         for (const Action& a : controls_panel(ui_))
             if (!in_command_) act(a);
         return;
@@ -830,6 +866,8 @@ void App::draw() {
     if (frames_ % 15 == 0)
         ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
                              script::Session::format_time(session_.now()), fps_);
+    draw_signals_pane(signals_, session_);
+    ui_.signals = signals_.open;
     for (const Action& a : controls_panel(ui_))
         if (!in_command_) act(a);  // a script's command is under way: the buttons wait for its end
 }

@@ -32,6 +32,8 @@ struct GuiOptions {
     // attaches them, Machine::attach); the front end shows them from their descriptions alone.
     std::function<void(Machine&)> parts;
     std::string show_part;                    // --debug: the chip pane brings this part's tab forward
+    std::vector<std::string> signals;         // open the Signals pane on these pins (record signals' words)
+    int signals_ms = 10;                      // over the last this many ms (1 to 1000)
 };
 
 // Opens the window and runs until it is closed or an exit condition of `o` is met. Returns the

@@ -129,4 +129,15 @@ std::optional<int> source_row_at(float x, float y) {
     return std::nullopt;
 }
 
+Rect signals_row(int i) { return {kSignalsTraceX, kSignalsTop + static_cast<float>(i) * kSignalsRowH, kSignalsTraceW, kSignalsRowH}; }
+
+float signals_x(std::uint64_t t, std::uint64_t end, std::uint64_t span) {
+    const double from_end = static_cast<double>(end) - static_cast<double>(t);  // T-states before the right end
+    return static_cast<float>(kSignalsTraceX + kSignalsTraceW - from_end * kSignalsTraceW / static_cast<double>(span));
+}
+
+double signals_t(float x, std::uint64_t end, std::uint64_t span) {
+    return static_cast<double>(end) - static_cast<double>(kSignalsTraceX + kSignalsTraceW - x) * static_cast<double>(span) / kSignalsTraceW;
+}
+
 }  // namespace alp85::gui

@@ -56,6 +56,10 @@ inline constexpr Rgb kIdealLine{120, 255, 120};
 inline constexpr Rgb kTool{255, 0, 200};           // magenta: nothing else is drawn in it
 inline constexpr Rgb kCurrentLine{90, 80, 20};     // the debugger's source pane: the PC's line
 inline constexpr Rgb kBreakpoint{230, 40, 40};     // its breakpoint dots
+inline constexpr Rgb kSignal{80, 230, 110};         // the Signals pane: a logic pin's trace
+inline constexpr Rgb kSignalFloat{150, 150, 160};   // a pin not driven ('z')
+inline constexpr Rgb kCursorA{250, 200, 60};        // its cursors
+inline constexpr Rgb kCursorB{90, 200, 255};
 }  // namespace colour
 
 // The layout below is logical: kWindowWidth x kWindowHeight. The window may be any size (it is
@@ -127,6 +131,20 @@ inline constexpr int kSourceRows = 23;
 // Row `i` (0 = the first shown) of the source pane, and the row at a point.
 Rect source_row(int i);
 std::optional<int> source_row_at(float x, float y);
+
+// ---- the Signals pane: a logic analyzer over the chosen pins (in the table view's place, or the ----
+// source's with --debug). Time runs left to right over the span chosen; the right end is the
+// machine's present T-state. Each pin has a row: its name left, its trace right.
+inline constexpr Rect kSignalsRect{528, 8, 744, 400};
+inline constexpr float kSignalsTraceX = 624, kSignalsTraceW = 640;  // the span: 624 (its start) to 1264 (now)
+inline constexpr float kSignalsTop = 96, kSignalsRowH = 26;         // the first row's top, the rows' pitch
+inline constexpr float kSignalsHigh = 5, kSignalsLow = 20;          // a row's high and low lines, from its top
+inline constexpr int kSignalsRows = 11;
+// Row i (0 = the first pin) of the trace area, kSignalsTraceW wide.
+Rect signals_row(int i);
+// The x of T-state t in a span of `span` T-states ending at `end`; the T-state at x (the inverse).
+float signals_x(std::uint64_t t, std::uint64_t end, std::uint64_t span);
+double signals_t(float x, std::uint64_t end, std::uint64_t span);
 
 // Millimetres of the table to pixels of kTableRect: the bounds fitted with equal scale on both
 // axes, centred, Y up.

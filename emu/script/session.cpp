@@ -730,6 +730,15 @@ Session::Outcome Session::record(const std::filesystem::path& csv, std::uint64_t
     c.period = period;
     return execute(c);
 }
+Session::Outcome Session::trace_signals(const std::vector<std::string>& pins, std::uint64_t span) {
+    try {
+        pane_trace_.start(*machine_, pins, span);
+    } catch (const std::exception& x) {
+        return {Status::Failed, x.what()};
+    }
+    return {};
+}
+
 Session::Outcome Session::record_signals(const std::filesystem::path& vcd, const std::vector<std::string>& pins,
                                          std::uint64_t period) {
     Command c = typed(Op::Record, vcd.string());

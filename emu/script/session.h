@@ -20,6 +20,7 @@
 #include "emu/board/machine.h"
 #include "emu/debug/debugger.h"
 #include "emu/debug/signal_record.h"
+#include "emu/debug/signal_trace.h"
 #include "emu/debug/tool_record.h"
 #include "emu/script/command.h"
 #include "emu/script/parser.h"
@@ -99,6 +100,15 @@ public:
     Outcome record_signals(const std::filesystem::path& vcd, const std::vector<std::string>& pins,
                            std::uint64_t period = kDefaultSignalPeriod);
     Outcome record_stop();
+    // The window's Signals pane (docs/signals.md): the chosen pins (the words of record signals)
+    // kept in memory over the last `span` T-states while the machine runs, beside any recording;
+    // a trace already open is replaced. trace_stop closes it (the board then pays nothing).
+    Outcome trace_signals(const std::vector<std::string>& pins, std::uint64_t span);
+    void trace_stop() { pane_trace_.stop(); }
+    const debug::SignalTrace& signal_trace() const { return pane_trace_; }
+    void set_trace_span(std::uint64_t span) { pane_trace_.set_span(span); }
+    // Every pin a recording or a trace can name, in a recording's order (the pane's picker).
+    std::vector<debug::PinTap::PinName> pin_names() const { return debug::PinTap::pin_names(*machine_); }
     Outcome plot_toolpath(const std::filesystem::path& out);
     Outcome set_motor(periph::MachineTool::MotorModel model);
     Outcome new_workpiece();  // the operator's set-up of a new workpiece (the script's `new workpiece`)
@@ -195,6 +205,7 @@ private:
     std::optional<std::uint64_t> mark_;  // `mark`: the time `print time` also counts from
     debug::ToolRecorder recorder_;
     debug::SignalRecorder signals_;
+    debug::SignalTrace pane_trace_;  // after machine_: closed (its probe off the board) before the machine goes
     Command signals_command_;
     std::function<void(std::uint64_t)> pace_;
     std::uint64_t pace_slice_ = 0;
