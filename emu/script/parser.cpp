@@ -95,8 +95,14 @@ private:
                     return false;
                 }
             } else {
-                while (i < line_.size() && !std::isspace(static_cast<unsigned char>(line_[i])) && line_[i] != '"')
+                // A word; blanks inside parentheses or brackets belong to it: (X1 + 1) is one value.
+                int depth = 0;
+                while (i < line_.size() && line_[i] != '"' &&
+                       (depth > 0 || !std::isspace(static_cast<unsigned char>(line_[i])))) {
+                    if (line_[i] == '(' || line_[i] == '[') ++depth;
+                    else if ((line_[i] == ')' || line_[i] == ']') && depth > 0) --depth;
                     t.text += line_[i++];
+                }
             }
             tokens_.push_back(std::move(t));
         }
@@ -550,7 +556,7 @@ private:
             ++pos_;
             Value v;
             if (!value(v, "0 or 1")) return false;
-            if (!v.symbol.empty() || (v.number != 0 && v.number != 1))
+            if (v.expression || (v.number != 0 && v.number != 1))
                 return error(v.col, "a flag is 0 or 1"), false;
             c.values.push_back(v);
             return true;
@@ -793,40 +799,48 @@ std::optional<Value> parse_value(std::string_view text, std::string_view what, b
     v.col = 1;
     v.text = std::string(text);
     error_col = 1;
-    // SYMBOL[(+|-)NUMBER] or NUMBER
-    const std::string s(text);
-    const std::size_t split = s.empty() ? std::string::npos : s.find_first_of("+-", 1);
-    const std::string head = s.substr(0, split);
-    std::int64_t offset = 0;
-    if (split != std::string::npos) {
-        const auto n = parse_number(std::string_view(s).substr(split + 1));
-        if (!n) {
-            error_col = static_cast<int>(split) + 2;
-            error = fmt::format("bad number '{}'", s.substr(split + 1));
-            return std::nullopt;
-        }
-        offset = s[split] == '-' ? -*n : *n;
-    }
-    if (!head.empty() && std::isdigit(static_cast<unsigned char>(head[0]))) {
+    // A word of letters and digits that begins with a digit is a number.
+    if (!text.empty() && std::isdigit(static_cast<unsigned char>(text[0])) &&
+        std::all_of(text.begin(), text.end(), [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)); })) {
         if (address) {
-            if (std::string why = ambiguous_address(head); !why.empty()) {
+            if (std::string why = ambiguous_address(text); !why.empty()) {
                 error = std::move(why);
                 return std::nullopt;
             }
         }
-        const auto n = parse_number(head);
+        const auto n = parse_number(text);
         if (!n) {
-            error = fmt::format("bad number '{}'", head);
+            error = fmt::format("bad number '{}'", text);
             return std::nullopt;
         }
-        v.number = *n + offset;
-    } else if (!head.empty() && (std::isalpha(static_cast<unsigned char>(head[0])) || head[0] == '_' ||
-                                 head[0] == '?' || head[0] == '@' || head[0] == '.')) {
-        v.symbol = to_upper(head);
-        v.number = offset;
-    } else {
-        error = fmt::format("expected {}, found '{}'", what, s);
+        v.number = *n;
+        return v;
+    }
+    // Anything else is the debugger's expression (debug::Expr), a bare name a symbol first.
+    debug::ExprError why;
+    const auto shape = debug::Expr::shape(text, why);
+    if (!shape) {
+        error_col = std::max(why.col, 1);
+        error = why.col <= 1 && !text.empty() && why.message.starts_with("unexpected")
+                    ? fmt::format("expected {}, found '{}'", what, text)
+                    : why.message;
         return std::nullopt;
+    }
+    if (shape->constant) {
+        v.number = *shape->constant;
+        return v;
+    }
+    v.expression = true;
+    v.names = shape->names;
+    // SYMBOL+-N, the form scripts have always written: its parts name it in messages.
+    const std::size_t split = text.find_first_of("+-", 1);
+    const std::string_view head = text.substr(0, split);
+    if (shape->names.size() == 1 && shape->names[0].col == 1 && shape->names[0].name.size() == head.size()) {
+        const auto n = split == std::string_view::npos ? std::optional<std::int64_t>(0) : parse_number(text.substr(split + 1));
+        if (n) {
+            v.symbol = shape->names[0].name;
+            v.number = split != std::string_view::npos && text[split] == '-' ? -*n : *n;
+        }
     }
     return v;
 }

@@ -40,8 +40,10 @@ std::optional<std::uint64_t> parse_time(std::string_view text);      // 3070t, 2
 // image (0800 = 0320H, inside the monitor). Returns the error message with the hint to write
 // 0800H, or an empty string when `text` is not such a number.
 std::string ambiguous_address(std::string_view text);
-// NUMBER or SYMBOL[(+|-)NUMBER], `what` naming it in messages; with `address`, the leading-zero
-// rule above. On error: nullopt, the message, and its 1-based column within `text`.
+// A NUMBER, or any other value as a debug::Expr (SYMBOL, SYMBOL+N, (X1 + 1)*2; a bare name a
+// symbol first), `what` naming it in messages; with `address`, the leading-zero rule above. An
+// expression that reads nothing (2*3) is a number. On error: nullopt, the message, and its 1-based
+// column within `text`.
 std::optional<Value> parse_value(std::string_view text, std::string_view what, bool address, std::string& error,
                                  int& error_col);
 std::optional<KeyRef> parse_key(std::string_view text);

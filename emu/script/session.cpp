@@ -94,17 +94,27 @@ std::filesystem::path Session::resolve_output(const std::string& path) const {
 }
 
 std::optional<std::int64_t> Session::resolve(const Value& v, std::string& error) const {
-    if (v.symbol.empty()) return v.number;
-    const auto value = debugger_.program().value_of(v.symbol);
-    if (!value) {
-        error = fmt::format("unknown symbol '{}'", v.symbol);
+    if (!v.expression) return v.number;
+    // The debugger's expression, against the symbols and the machine of now.
+    debug::ExprError why;
+    const auto e = debug::Expr::parse(v.text, debugger_.program(), why, debug::Expr::Names::SymbolsFirst);
+    if (!e) {
+        error = why.message;
         return std::nullopt;
     }
-    // A symbol moved by its offset stays a 16-bit value: AUS-70000 is no address (it would wrap to F438H).
-    const std::int64_t sum = *value + v.number;
+    std::int64_t sum = 0;
+    try {
+        sum = e->eval(*machine_);
+    } catch (const debug::ExprError& x) {
+        error = fmt::format("{}: {}", v.text, x.message);
+        return std::nullopt;
+    }
+    // A value stays a 16-bit one: AUS-70000 is no address (it would wrap to F438H).
     if (sum < 0 || sum > 0xFFFF) {
-        error = fmt::format("{} is {:04X}H {} {} = {}, outside 0000H-0FFFFH", v.text, *value, v.number < 0 ? '-' : '+',
-                            v.number < 0 ? -v.number : v.number, sum);
+        const auto symbol = v.symbol.empty() ? std::nullopt : debugger_.program().value_of(v.symbol);
+        error = symbol ? fmt::format("{} is {:04X}H {} {} = {}, outside 0000H-0FFFFH", v.text, *symbol, v.number < 0 ? '-' : '+',
+                                     v.number < 0 ? -v.number : v.number, sum)
+                       : fmt::format("{} is {}, outside 0000H-0FFFFH", v.text, sum);
         return std::nullopt;
     }
     return sum;
@@ -180,8 +190,11 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
         return p == std::string::npos ? c.where.col : static_cast<int>(p) + 1;
     };
     auto check_value = [&](const Command& c, const Value& v, std::int64_t lo, std::int64_t hi, const char* what) {
-        if (!v.symbol.empty()) {
-            if (!known.count(v.symbol)) err(c, v.col, fmt::format("unknown symbol '{}' (no source loaded before this line defines it)", v.symbol));
+        if (v.expression) {  // each name a symbol loaded before this line, or a register or flag
+            for (const debug::Expr::Name& n : v.names)
+                if (!known.count(n.name) && (n.symbol_only || !n.machine))
+                    err(c, v.col + n.col - 1,
+                        fmt::format("unknown symbol '{}' (no source loaded before this line defines it)", n.name));
             return;
         }
         if (v.number < lo || v.number > hi) err(c, v.col, fmt::format("{} {} is out of range ({}..{})", what, v.text, lo, hi));
@@ -204,11 +217,11 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 try {
                     LoadOptions lo;
                     if (c.address)  // a number is checked where it goes; a symbol's address is known at run time
-                        lo.address = c.address->symbol.empty() && c.address->number >= 0 && c.address->number <= 0xFFFF
+                        lo.address = !c.address->expression && c.address->number >= 0 && c.address->number <= 0xFFFF
                                          ? static_cast<std::uint16_t>(c.address->number)
                                          : std::uint16_t{0};
                     LoadedImage img = read_image(path, lo);
-                    if (!c.address || c.address->symbol.empty()) check_board_regions(img, path);
+                    if (!c.address || !c.address->expression) check_board_regions(img, path);
                     for (const std::string& w : img.warnings)
                         if (std::find(warnings_.begin(), warnings_.end(), w) == warnings_.end()) warnings_.push_back(w);
                     for (const auto& s : img.symbols) known.insert(s.name);
