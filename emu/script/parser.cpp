@@ -39,26 +39,52 @@ public:
         c.line = std::string(line_);
         const std::string verb = to_upper(tokens_[0].text);
         pos_ = 1;
-        static const std::map<std::string, std::function<bool(LineParser&, Command&)>> verbs = {
-            {"LOAD", &LineParser::load},       {"MONITOR", &LineParser::monitor},
-            {"RESET", &LineParser::reset},     {"PRESS", &LineParser::press},
-            {"TYPE", &LineParser::type},       {"KEYDOWN", &LineParser::keydown},
-            {"KEYUP", &LineParser::keyup},     {"RUN", &LineParser::run},
-            {"WAIT", &LineParser::wait},       {"STEP", &LineParser::step},
-            {"BREAK", &LineParser::brk},       {"DELETE", &LineParser::del},
-            {"EXPECT", &LineParser::expect},   {"SET", &LineParser::set},
-            {"SAVE", &LineParser::save},       {"RESTORE", &LineParser::restore},
-            {"PRINT", &LineParser::print},     {"FIRMWARE", &LineParser::firmware},
-            {"MOTOR", &LineParser::motor},     {"RECORD", &LineParser::record},
-            {"PLOT", &LineParser::plot},       {"FEEDBACK", &LineParser::feedback},
-            {"MARK", &LineParser::mark},       {"OPTION", &LineParser::option},
-            {"NEW", &LineParser::new_workpiece},
-        };
-        const auto it = verbs.find(verb);
-        if (it == verbs.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
-        if (!it->second(*this, c)) return std::nullopt;
+        const auto& table = verbs();
+        const auto it = std::find_if(table.begin(), table.end(), [&](const Verb& v) { return to_upper(v.info.name) == verb; });
+        if (it == table.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
+        if (!(this->*(it->parse))(c)) return std::nullopt;
         if (pos_ < tokens_.size()) return fail(tokens_[pos_], fmt::format("unexpected '{}'", tokens_[pos_].text));
         return c;
+    }
+
+    // The language's commands: one row each, what the line parser runs and what help, completion
+    // and the docs list (script::commands()).
+    struct Verb {
+        CommandInfo info;
+        bool (LineParser::*parse)(Command&);
+    };
+    static const std::vector<Verb>& verbs() {
+        using F = std::vector<std::string_view>;
+        static const std::vector<Verb> table = {
+            {{"load", "load FILE [at ADDR]: an .asm (assembled, its symbols and lines kept), .hex or .bin (at ADDR) image", {}, true}, &LineParser::load},
+            {{"monitor", "monitor: the ALP 85 monitor ROM at 0000H and its symbols", {}, false}, &LineParser::monitor},
+            {{"firmware", "firmware NAME: built-in firmware with its symbols and lines (thesis, thesis-fixed, master, monitor)", {}, false}, &LineParser::firmware},
+            {{"reset", "reset: RESET IN now (CPU, 8155, 8279); expect time counts from here", {}, false}, &LineParser::reset},
+            {{"press", "press KEY [hold TIME] [gap TIME]: a key pressed, held (30ms), released, then the gap (30ms) run", {}, false}, &LineParser::press},
+            {{"type", "type KEY...: each key pressed in turn (type R 7 0800 EXEC)", {}, false}, &LineParser::type},
+            {{"keydown", "keydown KEY: a key down now, without running", {}, false}, &LineParser::keydown},
+            {{"keyup", "keyup KEY: a key up now, without running", {}, false}, &LineParser::keyup},
+            {{"run", "run TIME | run until ADDR [timeout TIME] | run until axis X|Y|Z steps [OP] N [timeout TIME]: run for TIME, or until the PC reaches ADDR (passing breakpoints) or the axis its position", F{"UNTIL"}, false}, &LineParser::run},
+            {{"wait", "wait display \"TEXT\" [timeout TIME]: run until the display reads TEXT (5s)", {}, false}, &LineParser::wait},
+            {{"step", "step [N]: N instructions", {}, false}, &LineParser::step},
+            {{"break", "break ADDR: a breakpoint (the debugger's break is taken at its prompt)", {}, false}, &LineParser::brk},
+            {{"delete", "delete ADDR|all: breakpoints (the debugger's delete is taken at its prompt)", {}, false}, &LineParser::del},
+            {{"expect", "expect display|mem|word|reg|flag|port|symbol|time|halted|running|axis|count|lost ...: fails unless the machine shows it (docs/scripting.md)",
+              F{"DISPLAY", "MEM", "WORD", "REG", "FLAG", "PORT", "SYMBOL", "TIME", "HALTED", "RUNNING", "AXIS", "COUNT", "LOST"}, false}, &LineParser::expect},
+            {{"set", "set mem ADDR VALUE... | set reg REG VALUE: memory or a register", F{"MEM", "REG"}, false}, &LineParser::set},
+            {{"save", "save FILE: a snapshot of the whole machine", {}, true}, &LineParser::save},
+            {{"restore", "restore FILE: the machine as a snapshot holds it", {}, true}, &LineParser::restore},
+            {{"print", "print display [text] | print axes | print time | print \"TEXT\"...: the display, the tool's axes, the time, a message",
+              F{"\"", "DISPLAY", "AXES", "TIME"}, false}, &LineParser::print},
+            {{"motor", "motor ideal|physical: the stepper motors' model from now on", {}, false}, &LineParser::motor},
+            {{"feedback", "feedback scale|commanded: what the transducers read from now on", {}, false}, &LineParser::feedback},
+            {{"new", "new workpiece: every table wound back to its power-on position", {}, false}, &LineParser::new_workpiece},
+            {{"mark", "mark: the time print time also counts from", {}, false}, &LineParser::mark},
+            {{"option", "option expansion on|off: the 4 KB expansion EPROM at 3000H", {}, false}, &LineParser::option},
+            {{"record", "record FILE.csv [every TIME] | record signals FILE.vcd [PIN...] [every TIME] | record stop: the tool or the pins", {}, true}, &LineParser::record},
+            {{"plot", "plot toolpath|time FILE.svg|FILE.png [from X,Y to X,Y]: what record FILE.csv recorded", {}, true}, &LineParser::plot},
+        };
+        return table;
     }
 
 private:
@@ -674,6 +700,15 @@ private:
 };
 
 }  // namespace
+
+const std::vector<CommandInfo>& commands() {
+    static const std::vector<CommandInfo> list = [] {
+        std::vector<CommandInfo> out;
+        for (const auto& v : LineParser::verbs()) out.push_back(v.info);
+        return out;
+    }();
+    return list;
+}
 
 std::string ParseError::format() const {
     if (where.line == 0) return fmt::format("{}: error: {}\n", where.file, message);  // the whole file

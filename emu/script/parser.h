@@ -23,6 +23,18 @@ std::string place_of(const Command& c);
 // The same chain alone, each " (included from FILE:LINE)": appended to a message about the line.
 std::string included_from(const Command& c);
 
+// A command of the language, as the debugger's help and completion list it and docs/scripting.md
+// documents it (tests/scripts/command_table_test.cpp holds the docs to this list).
+struct CommandInfo {
+    std::string_view name;  // as written, lower case
+    std::string_view help;  // "usage: what it does"
+    // Where the debugger has a command of the same name (run, expect, set, print), the words after
+    // the name that make a line this one's ("\"": a quoted string); empty: the debugger's takes it.
+    std::vector<std::string_view> forms;
+    bool takes_file = false;  // names a file: completion offers file names after it
+};
+const std::vector<CommandInfo>& commands();
+
 // One line. An empty or comment-only line gives nullopt and no error.
 std::optional<Command> parse_line(std::string_view line, const std::string& file, int line_no,
                                   std::vector<ParseError>& errors);
