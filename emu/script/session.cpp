@@ -975,8 +975,10 @@ Session::Outcome Session::run_command(const Command& c) {
             const auto v = value();
             return v ? expect_reg(*c.reg, static_cast<std::uint16_t>(*v)) : fail(e);
         }
-        case Op::ExpectFlag: {
-            const cpu::Flag* f = cpu::description().find_flag(c.flag_name);
+        case Op::ExpectFlag: {  // the flag of the parsed bit, named as written
+            const auto& flags = cpu::description().flags;
+            const auto f = std::find_if(flags.begin(), flags.end(), [&](const cpu::Flag& x) { return x.bit == c.flag; });
+            if (f == flags.end()) return fail(fmt::format("no flag of bit {:02X}H", c.flag));
             return expect_flag(*f, c.values[0].number != 0, c.flag_name);
         }
         case Op::ExpectPort: {
