@@ -3,6 +3,7 @@
 // sources, the script's folder, and the time of the last reset.
 #pragma once
 
+#include <array>
 #include <bitset>
 #include <cstdint>
 #include <filesystem>
@@ -109,7 +110,8 @@ public:
     void set_trace_span(std::uint64_t span) { pane_trace_.set_span(span); }
     // Every pin a recording or a trace can name, in a recording's order (the pane's picker).
     std::vector<debug::PinTap::PinName> pin_names() const { return debug::PinTap::pin_names(*machine_); }
-    Outcome plot_toolpath(const std::filesystem::path& out);
+    // The recorded X-Y path and the ideal line between two points (mm; default the path's ends).
+    Outcome plot_toolpath(const std::filesystem::path& out, const std::optional<std::array<double, 4>>& ideal_line = {});
     Outcome set_motor(periph::MachineTool::MotorModel model);
     Outcome new_workpiece();  // the operator's set-up of a new workpiece (the script's `new workpiece`)
     // A key pressed or released now, or at machine time `at` (a user at the keypad, a press held
@@ -127,8 +129,52 @@ public:
     // The machine's time in T-states (board::kCpuHz a second).
     std::uint64_t now() const { return machine_->now(); }
 
-    // Runs one command. Failed expectations and commands that cannot be carried out (a load that
-    // falls off the board, a snapshot that is refused, a run-until that times out) give Failed.
+    // Every other command of the language, one call each (docs/scripting.md names them by their
+    // command): the script's lines are parsed, their values resolved, then these do the work.
+    // Keys, runs and breakpoints:
+    Outcome key_now(Button button, periph::Key key, bool down);  // keydown/keyup: changed and delivered now
+    Outcome press(Button button, periph::Key key, std::uint64_t hold = kDefaultHold, std::uint64_t gap = kDefaultGap);
+    Outcome type(const std::vector<KeyRef>& keys, std::uint64_t hold = kDefaultHold, std::uint64_t gap = kDefaultGap);
+    Outcome run(std::uint64_t tstates);
+    Outcome run_until(std::uint16_t address, std::uint64_t timeout = kDefaultUntil);  // passes breakpoints
+    Outcome wait_display(const std::string& text, std::uint64_t timeout = kDefaultWait);
+    Outcome step(unsigned count = 1);
+    Outcome add_breakpoint(std::uint16_t address);
+    Outcome delete_breakpoints(std::uint16_t address);
+    Outcome delete_all_breakpoints();
+    // Changing the machine:
+    Outcome set_mem(std::uint16_t address, const std::vector<std::uint8_t>& bytes);
+    Outcome set_reg(const cpu::Register& reg, std::uint16_t value);  // the value is masked to its width
+    Outcome set_option(bool expansion_eprom);  // option expansion on|off (board::kBoardOptions)
+    Outcome set_feedback(periph::MachineTool::Feedback feedback);
+    Outcome mark();
+    // Showing (as Output events):
+    Outcome print(const std::string& text);
+    Outcome print_display(bool as_text);
+    Outcome print_axes();
+    Outcome print_time();
+    Outcome plot_time(const std::filesystem::path& out);
+    // Expectations: Failed (and an ExpectFailed event) with what was expected and what was found.
+    Outcome expect_display(const std::string& text);
+    Outcome expect_mem(std::uint16_t address, const std::vector<std::uint8_t>& bytes);
+    Outcome expect_word(std::uint16_t address, std::uint16_t value);
+    Outcome expect_reg(const cpu::Register& reg, std::uint16_t value);
+    Outcome expect_flag(const cpu::Flag& flag, bool set, const std::string& name);  // name: as written (C for CY)
+    Outcome expect_port(char port, std::uint8_t value);  // 'A', 'B' or 'C'
+    Outcome expect_symbol(const std::string& name, std::uint16_t value);
+    Outcome expect_time(Compare compare, std::uint64_t tstates);
+    Outcome expect_halted(bool halted);
+    // The machine tool's axes (0 X, 1 Y, 2 Z); steps are whole steps, the nearest one.
+    Outcome expect_axis_steps(std::uint8_t axis, Compare compare, std::int64_t steps);
+    Outcome expect_axis_mm(std::uint8_t axis, Compare compare, double mm, double within);
+    Outcome expect_count(std::uint8_t axis, Compare compare, std::int64_t count);
+    Outcome expect_lost(std::uint8_t axis, Compare compare, std::int64_t lost);
+    Outcome run_until_axis(std::uint8_t axis, Compare compare, std::int64_t steps, std::uint64_t timeout = kDefaultUntil);
+
+    // Runs one command of the language: its values resolved against the symbols of now, then the
+    // typed call above. Failed expectations and commands that cannot be carried out (a load that
+    // falls off the board, a snapshot that is refused, a run-until that times out) give Failed,
+    // the message naming the script line.
     Outcome execute(const Command& command);
     // When set, the files a script writes or keeps between runs (save, restore, record, plot)
     // are relative to this folder instead of the script's (alp85 script --out-dir: tests keep the
@@ -179,24 +225,34 @@ private:
     std::filesystem::path resolve(const std::string& path) const;
     std::filesystem::path resolve_output(const std::string& path) const;
     std::optional<std::int64_t> resolve(const Value& v, std::string& error) const;
-    Outcome fail(const Command& c, std::string what) const;
-    debug::Origin origin(const Command& c) const { return {c.where.file, c.where.line}; }
-    void output(const Command& c, std::string text) const {
-        debugger_.emit({debug::Event::Kind::Output, {}, std::move(text), origin(c)});
+    // Failures name the script line running (execute), if any: its place, its text and the
+    // machine's state; a front end's typed call gets `what` alone.
+    Outcome fail(std::string what) const { return fail_at(line_, std::move(what)); }
+    Outcome fail_at(const Command* line, std::string what) const;
+    debug::Origin origin() const;
+    void output(std::string text) const {
+        debugger_.emit({debug::Event::Kind::Output, {}, std::move(text), origin()});
     }
-    Outcome fail_expect(const Command& c, const std::string& expected, const std::string& actual) const;
+    Outcome fail_expect(const std::string& expected, const std::string& actual) const;
+    // A run that reached --max-time failed, whatever it was for.
+    Outcome ran(Outcome o);
     Outcome run_command(const Command& c);
-    Outcome load(const Command& c, const Boot* boot = nullptr);
+    Outcome load_image(const std::filesystem::path& file, std::optional<std::uint16_t> address,
+                       const std::vector<std::pair<std::string, std::string>>& defines);  // a boot's images
     void placed(const std::vector<ImageSegment>& segments);  // marks them in a boot's report
     Outcome boot_steps(const Boot& b);
-    Outcome press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap);
-    Outcome expect(const Command& c);
-    Outcome tool_command(const Command& c);
     Outcome write_recording();
     Outcome write_signals();
     Outcome stop_recordings();
-    debug::Stop run_paced(std::uint64_t until, const std::function<bool()>& condition, const debug::Origin& o);
+    debug::Stop run_paced(std::uint64_t until, const std::function<bool()>& condition);
     std::string axes_text() const;
+    periph::MachineTool& tool_now();  // the tool caught up with the machine's time
+    // The state a typed call changed outside a run: reverse execution's history ends there.
+    struct Changed {
+        debug::Debugger& d;
+        bool new_timeline = false;
+        ~Changed() { d.state_changed(new_timeline); }
+    };
 
     SessionOptions options_;
     std::unique_ptr<Machine> machine_;
@@ -206,11 +262,12 @@ private:
     debug::ToolRecorder recorder_;
     debug::SignalRecorder signals_;
     debug::SignalTrace pane_trace_;  // after machine_: closed (its probe off the board) before the machine goes
-    Command signals_command_;
+    const Command* line_ = nullptr;           // the script line execute() runs; none during a typed call
+    std::optional<Command> signals_line_;     // the line that started the recordings, for their failures
     std::function<void(std::uint64_t)> pace_;
     std::uint64_t pace_slice_ = 0;
     std::filesystem::path record_path_;
-    Command record_command_;
+    std::optional<Command> record_line_;
     std::map<std::string, LoadedImage> assembled_;  // from check(), by resolved path
     std::vector<std::string> warnings_;
     std::uint64_t time_origin_ = 0;
