@@ -753,14 +753,25 @@ std::string Console::cmd_rn(std::string_view, int) { return report(d_.reverse_ne
 std::string Console::cmd_rfin(std::string_view, int) { return report(d_.reverse_finish()); }
 std::string Console::cmd_rc(std::string_view, int) { return report(d_.reverse_continue()); }
 
+// A console command's help, and that of the added command of the same name whose forms it hands
+// over (help print: the debugger's print, then the script's print display ...), as one text.
+std::string Console::whole_help(const CommandDef& c) const {
+    std::string out(c.help);
+    if (!c.handler) return out;
+    const std::string w = to_upper(c.name);
+    for (const CommandDef& d : table_)
+        if (!d.handler && to_upper(d.name) == w) out += fmt::format("; as in scripts: {}", d.help);
+    return out;
+}
+
 std::string Console::cmd_help(std::string_view a, int col) {
     if (!a.empty()) {
-        // The console's command (by name, alias or prefix), then an added one of the same name
-        // (help print: the debugger's print, then the script's print display ...).
         std::string err;
         const CommandDef* c = find_command(a, err);
-        std::string out = c ? std::string(c->help) + '\n' : "";
-        const std::string w = to_upper(c ? c->name : a);
+        if (c) return whole_help(*c) + '\n';
+        // A command of the script's alone (each of its entries: expect has several).
+        std::string out;
+        const std::string w = to_upper(a);
         for (const CommandDef& d : table_)
             if (!d.handler && to_upper(d.name) == w) out += std::string(d.help) + '\n';
         if (out.empty()) return error(col, err.empty() ? fmt::format("no command '{}'", a) : err);
@@ -773,7 +784,8 @@ std::string Console::cmd_help(std::string_view a, int col) {
         for (std::string_view al : c.aliases) names += fmt::format(", {}", al);
         std::string out = fmt::format("  {}\n", names);
         std::string line(kIndent, ' ');
-        std::string_view rest = c.help;
+        const std::string text = whole_help(c);
+        std::string_view rest = text;
         while (!rest.empty()) {
             const std::size_t sp = rest.find(' ');
             const std::string_view word = rest.substr(0, sp);

@@ -166,6 +166,7 @@ private:
     std::string cmd_output(std::string_view a, int col);
     std::string cmd_expect(std::string_view a, int col);
     std::string cmd_help(std::string_view a, int col);
+    std::string whole_help(const CommandDef& c) const;
     std::string cmd_quit(std::string_view a, int col);
     // info ...
     std::string info_registers();
