@@ -108,13 +108,7 @@ public:
     const Params& params() const { return p_; }
     const Load& load() const { return load_; }
     double step_angle() const { return step_angle_; }
-    double supply_v() const { return vs_; }
-    double torque_constant() const { return kt_; }
-    double total_inertia() const { return j_; }
-    double on_current() const { return i_on_; }  // steady current of an ON half-winding
     double stiffness() const;                    // small-signal k about a two-phase equilibrium
-    double tau_on() const { return p_.inductance_h / r_on_; }
-    double tau_off() const { return p_.inductance_h / r_off_; }
 
     // A rotor at rest at `theta` with `phases` applied long ago.
     void init_at_rest(State& s, double theta, std::uint8_t phases) const;

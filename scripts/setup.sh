@@ -80,14 +80,15 @@ packages=(
 # Only the tests: clang (the fuzz targets), the window under Xvfb, the Debian package and its test
 # (scripts/package.sh, tests/install: dpkg-shlibdeps, man -l, the man pages from --help, the
 # package check, the bash completion's helpers, fish for its completion), the web page
-# (scripts/web.sh, tests/web: emscripten, whose tools need node-acorn, and a browser), and
-# sigrok-cli, which reads every VCD the tests record (tests/signals).
+# (scripts/web.sh, tests/web: emscripten, whose tools need node-acorn, and a browser),
+# sigrok-cli, which reads every VCD the tests record (tests/signals), and GTKWave, whose window
+# on the thesis's pulses a test grabs for docs/signals.md (File > Grab To File: no other tool).
 test_packages=(
   clang libclang-rt-14-dev
   xvfb xauth
   dpkg-dev man-db help2man lintian bash-completion fish
   emscripten node-acorn chromium
-  sigrok-cli
+  sigrok-cli gtkwave
 )
 if [ $tests -eq 1 ]; then
   packages+=("${test_packages[@]}")

@@ -1,7 +1,8 @@
 // The web page's handle on the board (embind): one script Session, driven through its typed calls
 // and the Debugger's resumable run, exactly as the window (emu/gui) drives it. The page draws;
-// nothing here builds command text or decodes instructions. The key map, the presses, the pacing
-// and the toolpath with its ideal line are the window's own (emu/gui: keys, pacer, toolpath).
+// nothing here builds command text or decodes instructions. The key map, the presses, the pacing,
+// the toolpath with its ideal line and the views of the board are the front ends' shared library
+// (emu/front), the window's too.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -15,13 +16,13 @@
 #include <vector>
 
 #include "asm/asm85.h"
-#include "emu/board/board_map.h"
 #include "emu/debug/tool_record.h"
 #include "emu/gcode/gcode.h"
 #include "emu/gcode/path_table.h"
-#include "emu/gui/keys.h"
-#include "emu/gui/pacer.h"
-#include "emu/gui/toolpath.h"
+#include "emu/front/keys.h"
+#include "emu/front/pacer.h"
+#include "emu/front/toolpath.h"
+#include "emu/front/views.h"
 #include "emu/program/firmware.h"
 #include "emu/script/session.h"
 
@@ -29,7 +30,7 @@ namespace alp85::web {
 namespace {
 
 using emscripten::val;
-using gui::HostClock;
+using front::HostClock;
 
 // Files the page hands the board live in the module's memory file system (MEMFS), under /work;
 // the firmware sources the editor's INCLUDEs reach are packed under /src (web/CMakeLists.txt).
@@ -87,7 +88,7 @@ public:
     void start() {
         if (session_.debugger().running()) return;
         if (const auto s = session_.debugger().begin_continue(~std::uint64_t{0}, false)) stopped(*s);
-        pacer_.rebase(session_.machine().now(), HostClock::now());
+        pacer_.rebase(session_.now(), HostClock::now());
     }
     void pause() {
         if (session_.debugger().running()) stopped(session_.debugger().pause());
@@ -95,35 +96,34 @@ public:
     bool running() { return session_.debugger().running(); }
 
     // speed: 1 real time, 10, ... ; 0 as fast as possible.
-    void set_speed(double speed) { pacer_.set_speed(speed, session_.machine().now(), HostClock::now()); }
+    void set_speed(double speed) { pacer_.set_speed(speed, session_.now(), HostClock::now()); }
 
     // One frame's slice: runs the machine to where the pacer says it should be by now, for at
     // most `seconds` of host time. Returns the T-states run.
     double frame(double seconds) {
-        Machine& m = session_.machine();
-        const std::uint64_t before = m.now();
+        const std::uint64_t before = session_.now();
         debug::Debugger& d = session_.debugger();
         if (!d.running()) return 0;
-        const std::uint64_t goal = pacer_.target(m.now(), HostClock::now());
-        if (goal > m.now()) {
+        const std::uint64_t goal = pacer_.target(before, HostClock::now());
+        if (goal > before) {
             debug::Budget b;
-            b.tstates = goal - m.now();
+            b.tstates = goal - before;
             b.seconds = seconds;
             if (const auto s = d.resume(b)) stopped(*s);
         }
-        return static_cast<double>(m.now() - before);
+        return static_cast<double>(session_.now() - before);
     }
 
     // A board key by its name (find_pad_key: "0"-"F", "EXEC", "NEXT", "RESET", "VECT", ...), down
     // or up, or a PC key by the key map's name (KeyboardEvent.key: "Enter", "a", "Escape").
     bool key(const std::string& name, bool down) {
-        const auto k = gui::find_pad_key(name);
+        const auto k = front::find_pad_key(name);
         if (!k) return false;
         press(*k, down);
         return true;
     }
     std::string pc_key(const std::string& pc_name, bool down) {
-        const auto k = gui::pad_key_for_pc(pc_name);
+        const auto k = front::pad_key_for_pc(pc_name);
         if (!k) return {};
         press(*k, down);
         return pad_name(*k);
@@ -132,11 +132,11 @@ public:
     // The keypad as the window lays it out: name, caption, PC key, row, column.
     val keypad() const {
         val out = val::array();
-        for (const gui::PadKey& k : gui::pad_keys()) {
+        for (const front::PadKey& k : front::pad_keys()) {
             val o = val::object();
             o.set("name", pad_name(k));
-            o.set("cap", std::string(gui::cap_label(k)));
-            o.set("pc", std::string(gui::pc_key_label(k)));
+            o.set("cap", std::string(front::cap_label(k)));
+            o.set("pc", std::string(front::pc_key_label(k)));
             o.set("row", k.row);
             o.set("col", k.col);
             o.set("fn", k.pad != Button::Matrix || static_cast<int>(k.key) >= static_cast<int>(periph::Key::Exec));
@@ -146,7 +146,7 @@ public:
     }
     val key_map() const {
         val out = val::array();
-        for (const gui::KeyMapRow& r : gui::key_map_rows(false)) {
+        for (const front::KeyMapRow& r : front::key_map_rows(false)) {
             if (r.keys.find("drag") != std::string_view::npos || r.keys.find("wheel") != std::string_view::npos ||
                 r.keys.find("Home") != std::string_view::npos || r.keys.find("End") != std::string_view::npos)
                 continue;  // the window's table view; the page has its own
@@ -159,36 +159,36 @@ public:
     }
 
     // The eight digits as text (the nearest character each, '.' for a dot).
-    std::string display_text() const { return session_.machine().display_text(); }
+    std::string display_text() const { return front::display_view(session_).text; }
 
     // What the page draws, in one array it reads without a call per figure (kSnap* below): time,
     // PC, the run, the eight digits' segments (with a count of their changes), the axes, the
     // toolpath's length and the ideal line. A view of the module's memory, filled in place.
     val snapshot() {
-        const Machine& m = session_.machine();
+        const front::CpuView cpu = front::cpu_view(session_);
         auto& v = snap_;
-        v[kSnapT] = static_cast<double>(m.now());
-        v[kSnapPc] = m.cpu().regs().pc;
+        v[kSnapT] = static_cast<double>(session_.now());
+        v[kSnapPc] = cpu.pc;
         v[kSnapRunning] = running() ? 1 : 0;
-        v[kSnapHalted] = m.cpu().halted() ? 1 : 0;  // after a HLT: the run goes on (RESET, interrupts), the CPU waits
+        v[kSnapHalted] = cpu.halted ? 1 : 0;  // after a HLT: the run goes on (RESET, interrupts), the CPU waits
         v[kSnapStops] = static_cast<double>(stops_);
-        const auto digits = m.display();
+        const auto digits = front::display_view(session_).segments;
         if (digits != digits_) {
             digits_ = digits;
             ++display_changes_;
         }
         v[kSnapDisplayChanges] = static_cast<double>(display_changes_);
         for (std::size_t i = 0; i < 8; ++i) v[kSnapDigits + i] = digits[i];
-        const debug::ToolSample s = debug::sample_tool(m.tool(), m.now());
+        const front::ToolView tool = front::tool_view(session_);
         for (std::size_t i = 0; i < 3; ++i) {
-            const debug::AxisSample& a = s.axes[i];
+            const front::AxisView& a = tool.axes[i];
             v[kSnapAxes + 4 * i] = static_cast<double>(a.commanded);
             v[kSnapAxes + 4 * i + 1] = a.mm;
             v[kSnapAxes + 4 * i + 2] = static_cast<double>(a.count);
             v[kSnapAxes + 4 * i + 3] = static_cast<double>(a.lost);
         }
         v[kSnapPathSize] = static_cast<double>(path_.points().size());
-        const auto l = path_.ideal(m);
+        const auto l = path_.ideal(session_);
         v[kSnapIdeal] = l ? 1 : 0;
         if (l) v[kSnapIdeal + 1] = l->from.x, v[kSnapIdeal + 2] = l->from.y, v[kSnapIdeal + 3] = l->to.x, v[kSnapIdeal + 4] = l->to.y;
         v[kSnapLog] = static_cast<double>(log_.size());
@@ -313,14 +313,14 @@ public:
     }
 
 private:
-    static std::string pad_name(const gui::PadKey& k) {
+    static std::string pad_name(const front::PadKey& k) {
         if (k.pad == Button::Reset) return "RESET";
         if (k.pad == Button::Vect) return "VECT";
         return std::string(periph::Keypad::info(k.key).name);
     }
-    void press(const gui::PadKey& k, bool down) {
-        if (down) presser_.down(k, session_.machine());
-        else presser_.up(k, session_.machine());
+    void press(const front::PadKey& k, bool down) {
+        if (down) presser_.down(k, session_);
+        else presser_.up(k, session_);
     }
     void stopped(const debug::Stop& s) {
         ++stops_;
@@ -331,14 +331,13 @@ private:
     void after_load() {
         const auto& sym = session_.symbols();
         path_.set_variables(sym.value_of("X2") && sym.value_of("Y2") ? sym.value_of("X1") : std::nullopt);
-        Machine& m = session_.machine();
-        m.set_sampler(kSamplePeriod, [this, &m](std::uint64_t t) { path_.observe(debug::sample_tool(m.tool(), t), m); });
+        session_.sample_tool(kSamplePeriod, [this](const debug::ToolSample& t) { path_.observe(t, session_); });
     }
 
     script::Session session_;
-    gui::Presser presser_;
-    gui::Pacer pacer_;
-    gui::Toolpath path_;
+    front::Presser presser_;
+    front::Pacer pacer_;
+    front::Toolpath path_;
     std::vector<std::string> log_;
     std::string stop_;
     std::uint64_t stops_ = 0;

@@ -232,14 +232,24 @@ void Machine::drive(board::CpuPin pin, bool level, std::uint64_t t) {
     probe_look(t);
 }
 
-void Machine::set_probe(PinProbe* probe) {
-    probe_ = probe;
+void Machine::add_probe(PinProbe* probe) {
+    if (!probe || has_probe(probe)) return;
+    probes_.push_back(probe);
     update_sod();
+}
+
+void Machine::remove_probe(PinProbe* probe) {
+    std::erase(probes_, probe);
+    update_sod();
+}
+
+bool Machine::has_probe(const PinProbe* probe) const {
+    return std::find(probes_.begin(), probes_.end(), probe) != probes_.end();
 }
 
 void Machine::update_sod() {
     // SIM changes SOD inside an instruction: seen at that instruction's first T-state.
-    if (probe_ || serial_)
+    if (!probes_.empty() || serial_)
         cpu_.on_sod = [this](bool level) {
             const std::uint64_t t = cpu_.tstates();
             if (serial_) serial_->sod(level, t);
@@ -264,14 +274,19 @@ void Machine::connect_serial(periph::SerialTerminal& terminal) {
 
 void Machine::serial_at(std::uint8_t value, std::uint64_t at) { inputs_.schedule(at, InputKind::Serial, value, true); }
 
+// Each probe's own clock (a sample period, a part's next pin change) up to t: the parts are
+// advanced to the earliest time a probe asks for, and every probe due then looks.
 void Machine::probe_clock(std::uint64_t t) {
-    while (probe_) {
-        const std::uint64_t at = probe_->next();
+    while (!probes_.empty()) {
+        std::uint64_t at = periph::Part::kNever;
+        for (const PinProbe* p : probes_) at = std::min(at, p->next());
         if (at > t) return;
         for (periph::Part* p : parts_) p->advance(std::max(at, p->now()));
         if (sampler_paused_) return;  // a debugger re-running the past: looked at the first time
-        probe_->look(at);
-        if (probe_->next() <= at) return;  // a probe must move on; never spin here
+        for (PinProbe* p : probes_)
+            if (p->next() <= at) p->look(at);
+        for (const PinProbe* p : probes_)
+            if (p->next() <= at) return;  // a probe must move on; never spin here
     }
 }
 
@@ -413,7 +428,7 @@ Machine::RunEnd Machine::run_until(std::uint64_t until, const std::function<bool
         const std::uint64_t t = now();
         deliver_inputs(t);
         if (next_sample_ <= t) sample(t);
-        if (probe_) probe_clock(t);
+        if (!probes_.empty()) probe_clock(t);
         sync_parts(t);
         if (condition && condition()) return RunEnd::Condition;
         if (t >= until) return RunEnd::Deadline;

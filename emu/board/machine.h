@@ -58,8 +58,9 @@ public:
     virtual bool at_fence(const I8085& cpu) { return before_instruction(cpu); }
 };
 
-// A logic analyzer on the board's pins (Machine::set_probe). While none is installed the board
-// pays nothing for it: no call, and no look at the probe in the instruction loop.
+// A logic analyzer on the board's pins (Machine::add_probe): a VCD recording, the window's Signals
+// pane; several may look at once. While none is installed the board pays nothing for them: no
+// call, and no look at a probe in the instruction loop.
 class PinProbe {
 public:
     virtual ~PinProbe() = default;
@@ -195,14 +196,16 @@ public:
     // now on.
     void connect_serial(periph::SerialTerminal& terminal);
     periph::SerialTerminal* serial() const { return serial_; }
-    // Installs a logic analyzer (nullptr removes it; it must outlive its installation); see PinProbe.
-    void set_probe(PinProbe* probe);
-    PinProbe* probe() const { return probe_; }
+    // Installs a logic analyzer (it must outlive its installation; installed twice it is still
+    // one), and takes one off; see PinProbe.
+    void add_probe(PinProbe* probe);
+    void remove_probe(PinProbe* probe);
+    bool has_probe(const PinProbe* probe) const;
     // The 8085's pins a logic analyzer shows (scope "8085"): SOD, SID, TRAP, RST7_5, RST6_5,
     // RST5_5, INTR, INTA (active low: high, INTR is not wired on this board), HLT (the halt state,
     // seen at instruction boundaries: sampled).
     void cpu_pins(periph::Pins& p) const;
-    // While paused the sampler (and the probe) is not called (a debugger re-executing the past: those samples
+    // While paused the sampler (and the probes) is not called (a debugger re-executing the past: those samples
     // were taken the first time).
     void pause_sampler(bool paused) { sampler_paused_ = paused; }
 
@@ -227,13 +230,14 @@ private:
     }
     std::uint64_t next_part_event() const {
         std::uint64_t next = next_sample_;
-        if (probe_) next = std::min(next, probe_->next());
+        for (const PinProbe* p : probes_) next = std::min(next, p->next());
         for (const periph::Part* p : parts_) next = std::min(next, p->next_event());
         return next;
     }
     void probe_clock(std::uint64_t t);
     void probe_look(std::uint64_t t) {
-        if (probe_ && !sampler_paused_) probe_->look(t);
+        if (sampler_paused_) return;
+        for (PinProbe* p : probes_) p->look(t);
     }
     void drive_tool(std::uint64_t t);          // port A's pins to the sequencers
     std::uint8_t sense_tool(std::uint64_t t);  // the transducers to port B's pins
@@ -260,7 +264,7 @@ private:
     std::uint64_t next_sample_ = periph::Part::kNever;
     std::function<void(std::uint64_t)> sampler_;
     bool sampler_paused_ = false;
-    PinProbe* probe_ = nullptr;
+    std::vector<PinProbe*> probes_;
     periph::SerialTerminal* serial_ = nullptr;
     std::vector<periph::Part*> parts_;
 

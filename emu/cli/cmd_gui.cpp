@@ -11,7 +11,9 @@
 
 #include <fmt/format.h>
 
+#include "emu/board/machine.h"
 #include "emu/cli/commands.h"
+#include "emu/debug/pin_tap.h"
 #include "emu/gui/app.h"
 #include "emu/gui/controls.h"
 
@@ -77,6 +79,12 @@ void add_gui_command(CLI::App& app, int& status) {
                     "screen allows, at most 1 (the window can be resized)")
         ->check(CLI::Range(0.25, 4.0));
     cmd->add_flag("--key-map", args->o.key_map, "Show the key map (F1 or ? toggles it)");
+    cmd->add_option("--signals", args->o.signals,
+                    "Open the Signals pane (a logic analyzer: docs/signals.md) on these pins, named as record signals "
+                    "names them: PA0, 8155.PA0, X.PULSE, or a whole part (8155, X)");
+    cmd->add_option("--signals-ms", args->o.signals_ms, "The Signals pane shows the last this many ms of machine time (1 to 1000)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
     cmd->add_flag("--stats", args->o.stats, "Print frames per second and the process's CPU use at exit");
     cmd->add_option("--speed", args->speed,
                     "0.1, 1 (real time), 10, 100 or max; a --script runs at it too, so that its moves are seen (max to hurry)")
@@ -93,6 +101,7 @@ void add_gui_command(CLI::App& app, int& status) {
         "  alp85 gui --script scripts/demo/thesis.alp                 the walk-through at real time\n"
         "  alp85 gui --script scripts/demo/thesis.alp --speed max --screenshot gui.png\n"
         "  alp85 gui firmware/demo/echo85.asm --serial 9600   type R 7 0800 EXEC, then type in the Terminal pane\n"
+        "  alp85 gui --signals PA0 PA1 X.A X.B --signals-ms 20   port A and a sequencer on a logic analyzer\n"
         "Without a display it exits with status 2; use `alp85 run` or `alp85 script` there.\n"
         "Exit status: 0, 1 the script or --expect-display failed or the screenshot cannot be written,\n"
         "2 a usage error (a bad number or --serial rate, a --screenshot that is an input) or no display; SIGTERM or\n"
@@ -126,6 +135,12 @@ void add_gui_command(CLI::App& app, int& status) {
                 status = kUsageError;
                 return;
             }
+        // Pins the board does not have: refused before a window opens.
+        if (const std::string why = debug::PinTap::check_selection(Machine{}, args->o.signals); !why.empty()) {
+            std::cerr << "alp85 gui: --signals: " << why << '\n';
+            status = kUsageError;
+            return;
+        }
         args->o.firmware.insert(args->o.firmware.begin(), args->firmware.begin(), args->firmware.end());
         std::vector<NamedPath> inputs = {{args->o.script, "the script"}};
         for (const std::string& f : args->o.firmware)  // a file, not a built-in name

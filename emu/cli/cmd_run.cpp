@@ -166,7 +166,7 @@ void add_run_command(CLI::App& app, int& status) {
         so.out = &report;
         if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
         script::Session session(so);
-        session.machine().tool().set_model(motor_model_of(args->motor));
+        session.set_motor(motor_model_of(args->motor));
         if (line) {
             session.connect_serial(*line, gap);
             session.serial()->on_receive([](const periph::UartChar& c) {
@@ -286,7 +286,7 @@ void add_run_command(CLI::App& app, int& status) {
                 status = 1;
                 return;
             }
-        report << fmt::format("{} simulated, PC={:04X}H\n", script::Session::format_time(session.machine().now()),
+        report << fmt::format("{} simulated, PC={:04X}H\n", script::Session::format_time(session.now()),
                               session.machine().cpu().regs().pc);
         // Where the machine tool's tables are, after the display.
         if (const auto o = session.execute(command(Op::PrintAxes)); o.status != script::Session::Status::Ok) {

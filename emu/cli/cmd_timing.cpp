@@ -69,7 +69,7 @@ int run_timing(const TimingArgs& a) {
     std::string why;
     int col = 1;
     const auto at = script::parse_value(a.at, "an address", true, why, col);
-    if (!at || !at->symbol.empty() || at->number < 0 || at->number > 0xFFFF) {
+    if (!at || at->expression || at->number < 0 || at->number > 0xFFFF) {
         std::cerr << cli::argument_error("alp85 timing", a.at,
                                     why.empty() ? fmt::format("'{}' is not an address (0000H-0FFFFH)", a.at) : why);
         return kUsageError;

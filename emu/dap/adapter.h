@@ -24,6 +24,7 @@
 #include "emu/dap/launch.h"
 #include "emu/dap/machine_view.h"
 #include "emu/debug/debugger.h"
+#include "emu/front/pacer.h"
 #include "emu/script/debug_shell.h"
 #include "emu/script/session.h"
 
@@ -172,8 +173,7 @@ private:
     // The run in progress (the Debugger's): how its end is reported, and real-time pacing.
     struct Run {
         std::string step_reason = "step";
-        std::uint64_t started_at = 0;  // machine time at the start
-        double host_start = 0;         // host seconds at the start
+        front::Pacer pacer;            // real time from the run's start (the window's pacer)
         // Begun in the debug console: as fast as the host can (as `alp85 debug` runs it), its end
         // told as the console tells it, and the stop's console commands run.
         bool console = false;

@@ -2,9 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "emu/board/key_press.h"
 #include "emu/program/firmware.h"
-#include "emu/program/image_loader.h"
 #include "emu/script/parser.h"
 #include "emu/util/input_file.h"
 #include "emu/util/text.h"
@@ -18,11 +16,6 @@ std::uint64_t time_arg(const Json& args, std::string_view key, std::uint64_t fal
     const auto t = script::parse_time(*text);
     if (!t) throw RequestError(fmt::format("argument '{}': bad time '{}' (a number with a unit: t, us, ms or s)", key, *text));
     return *t;
-}
-
-void mark(ProgramMap& map, const std::vector<ImageSegment>& segments) {
-    for (const ImageSegment& s : segments)
-        for (std::size_t i = 0; i < s.bytes.size(); ++i) map.code.set((s.address + i) & 0xFFFF);
 }
 
 }  // namespace
@@ -69,32 +62,20 @@ LaunchConfig parse_launch(const Json& args) {
 
 void load_program(const LaunchConfig& config, script::Session& session, ProgramMap& map,
                   std::vector<std::string>& warnings) {
-    Machine& m = session.machine();
-    SymbolTable& symbols = session.debugger().program();
-    m.tool().set_model(config.motor);
+    script::Session::Boot boot;
+    boot.motor = config.motor;
+    boot.monitor = config.monitor;
+    boot.pc_at_program = !config.monitor;
+    if (config.monitor && !firmware::have_monitor())
+        throw RequestError("this alp85 was built without the monitor ROM (set \"monitor\": false)");
     map = {};
-    for (const board::MemoryRegion& r : m.memory_map())
-        if (r.kind == board::MemoryKind::Ram)
-            for (unsigned a = r.base; a < r.base + r.size; ++a) map.code.set(a);
-    if (config.monitor) {
-        if (!firmware::have_monitor()) throw RequestError("this alp85 was built without the monitor ROM (set \"monitor\": false)");
-        const firmware::Firmware rom = firmware::monitor();
-        m.load(rom.segments);
-        symbols.add_table(rom.symbols);
-        mark(map, rom.segments);
-    }
-    std::optional<std::uint16_t> start;  // without the monitor, the program runs from here
     if (!config.firmware.empty()) {
-        const auto fw = firmware::find(config.firmware);
-        if (!fw) {
+        if (!firmware::find(config.firmware)) {
             std::string names;
             for (const auto& e : firmware::builtin()) names += (names.empty() ? "" : ", ") + std::string(e.name);
             throw RequestError(fmt::format("no firmware '{}' in this alp85 (built in: {})", config.firmware, names));
         }
-        m.load(fw->segments);
-        symbols.add_table(fw->symbols);
-        mark(map, fw->segments);
-        if (!fw->segments.empty()) start = fw->segments.front().address;
+        boot.firmware.push_back(config.firmware);
     }
     if (!config.program.empty()) {
         std::filesystem::path path = config.program;
@@ -102,36 +83,26 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
         map.program_path = path.string();
         if (const std::string why = program_file_problem(path); !why.empty()) throw RequestError(why);
         session.add_input(path, "the launched program");  // the REPL's save, record, plot must not replace it
-        LoadOptions lo;
-        lo.assembler.defines = config.defines;
-        try {
-            LoadedImage img = load_image(m, path, lo);
-            warnings.insert(warnings.end(), img.warnings.begin(), img.warnings.end());
-            if (img.assembly) symbols.add_assembly(*img.assembly);
-            mark(map, img.segments);
-            if (img.start) start = img.start;
-            else if (!img.segments.empty()) start = img.segments.front().address;
-        } catch (const LoadError& e) {
-            throw RequestError(e.what());
-        } catch (const std::out_of_range& e) {
-            throw RequestError(fmt::format("{}: {}", path.string(), e.what()));
-        }
+        boot.images.push_back({std::filesystem::absolute(path), std::nullopt});  // not again from the session's cwd
+        boot.defines = config.defines;
         if (!config.map.empty()) {
             std::filesystem::path mp = config.map;
             if (mp.is_relative()) mp = config.cwd / mp;
             session.add_input(mp, "the launched program's map");
-            if (const std::string err = symbols.load_map_file(mp.string()); !err.empty()) throw RequestError(err);
+            boot.maps.push_back(std::filesystem::absolute(mp));
         }
     }
-    m.reset();
-    if (!config.monitor && start) m.cpu().regs().pc = *start;
     if (!config.keys.empty()) {
         std::string why;
         std::size_t at = 0;
-        std::uint64_t t = m.now() + config.boot;
-        const auto keys = script::parse_key_list(config.keys, why, at).value_or(std::vector<script::KeyRef>{});
-        for (const script::KeyRef& k : keys) t = schedule_press(m, k.kind, k.key, kKeyHold, kKeyGap, t);
+        boot.keys = script::parse_key_list(config.keys, why, at).value_or(std::vector<script::KeyRef>{});
+        boot.boot_time = config.boot;
     }
+    script::Session::BootReport report;
+    const script::Session::Outcome o = session.boot(boot, &report);
+    warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
+    if (o.status != script::Session::Status::Ok) throw RequestError(o.message);
+    map.code = report.code;
 }
 
 }  // namespace alp85::dap

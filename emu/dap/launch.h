@@ -12,7 +12,6 @@
 
 #include "emu/dap/protocol.h"
 #include "emu/script/session.h"
-#include "peripherals/machine_tool.h"
 
 namespace alp85::dap {
 

@@ -8,9 +8,8 @@
 #include <fmt/format.h>
 
 #include "asm/isa.h"
-#include "emu/core/cpu_registers.h"
+#include "emu/script/session.h"  // the CPU's description (cpu::description) with the rest of the board
 #include "emu/util/text.h"
-#include "peripherals/seven_segment.h"
 
 namespace alp85::dap {
 namespace {

@@ -32,7 +32,7 @@ void Adapter::read_memory(const Json& args, Json& body) {
     const std::int64_t first = std::clamp<std::int64_t>(base, 0, 0x10000);
     const std::int64_t last = std::clamp<std::int64_t>(base + count, 0, 0x10000);
     std::string bytes;
-    for (std::int64_t a = first; a < last; ++a) bytes += static_cast<char>(machine().peek(static_cast<std::uint16_t>(a)));
+    for (std::int64_t a = first; a < last; ++a) bytes += static_cast<char>(session_->peek(static_cast<std::uint16_t>(a)));
     body = {{"address", hex4(static_cast<std::uint16_t>(std::min<std::int64_t>(first, 0xFFFF)))},
             {"data", base64_encode(bytes)}};
     if (const std::int64_t missing = count - (last - first); missing > 0) body["unreadableBytes"] = missing;
@@ -47,7 +47,7 @@ void Adapter::write_memory(const Json& args, Json& body) {
         throw RequestError("the bytes would run outside 0000H-FFFFH");
     std::int64_t written = 0;
     for (const char c : *data) {
-        if (!machine().poke(static_cast<std::uint16_t>(base + written), static_cast<std::uint8_t>(c))) break;
+        if (!session_->poke(static_cast<std::uint16_t>(base + written), static_cast<std::uint8_t>(c))) break;
         ++written;
     }
     if (written == 0 && !data->empty())

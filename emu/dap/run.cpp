@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "emu/dap/adapter.h"
+#include "emu/front/views.h"
 #include "emu/script/parser.h"
 #include "emu/util/text.h"
 
@@ -60,8 +61,7 @@ void Adapter::started(std::optional<debug::Stop> s, std::string_view step_reason
         return;
     }
     run_.step_reason = std::string(step_reason);
-    run_.started_at = machine().now();
-    run_.host_start = host_seconds();
+    run_.pacer.rebase(session_->now(), front::HostClock::now());
 }
 
 // How a run ended, as a stopped event.
@@ -165,8 +165,7 @@ void Adapter::goto_(const Json& args, Json&) {
     require_stopped();
     const std::int64_t id = need_int(args, "targetId");
     if (id < 1 || id > 0x10000) throw RequestError(fmt::format("no goto target {}", id));
-    machine().cpu().regs().pc = static_cast<std::uint16_t>(id - 1);
-    session_->debugger().state_changed();
+    session_->set_pc(static_cast<std::uint16_t>(id - 1));
     stopped("goto");
 }
 
@@ -264,7 +263,7 @@ std::optional<std::string> Adapter::begin_console_run(std::string_view line) {
         // gdb: continue N passes the breakpoint here N-1 more times.
         if (!args.empty())
             for (const debug::Breakpoint& b : d.breakpoints())
-                if (b.address == machine().cpu().regs().pc) d.set_ignore(b.number, static_cast<unsigned>(*n - 1));
+                if (b.address == front::cpu_view(*session_).pc) d.set_ignore(b.number, static_cast<unsigned>(*n - 1));
         text = "Continuing.";
         s = d.begin_continue(~std::uint64_t{0});  // as the continue request: until a stop or a pause
     } else if (*name == "step" || *name == "next" || *name == "nexti" || *name == "stepi") {
@@ -295,8 +294,7 @@ std::optional<std::string> Adapter::begin_console_run(std::string_view line) {
         } else if (*name == "advance") {
             s = d.begin_advance(*to);
         } else {
-            machine().cpu().regs().pc = *to;
-            d.state_changed();  // the timeline changes here: history after now is another run's
+            session_->set_pc(*to);
             const auto routine = d.program().routine_at(*to);
             text = fmt::format("Continuing at {:04X}H{}.", *to, routine ? fmt::format(" ({})", *routine) : "");
             s = d.begin_continue(~std::uint64_t{0});
@@ -314,8 +312,7 @@ std::optional<std::string> Adapter::begin_console_run(std::string_view line) {
     } else {
         return std::nullopt;
     }
-    run.started_at = machine().now();
-    run.host_start = host_seconds();
+    run.pacer.rebase(session_->now(), front::HostClock::now());
     run_ = run;
     if (s) {
         if (const auto told = ended(*s); told && !told->empty()) text += (text.empty() ? "" : "\n") + *told;
@@ -325,7 +322,6 @@ std::optional<std::string> Adapter::begin_console_run(std::string_view line) {
 
 int Adapter::advance() {
     if (!running()) return -1;
-    Machine& m = machine();
     debug::Debugger& d = session_->debugger();
     const bool paced = config_.real_time && !run_.console;  // the console's runs go as fast as they can
     debug::Budget budget;
@@ -343,9 +339,7 @@ int Adapter::advance() {
     }
     if (!paced) return 0;
     // Paced: the board's 3.072 MHz against the host's clock since the run began.
-    const double ahead = static_cast<double>(m.now() - run_.started_at) / board::kCpuHz -
-                         (host_seconds() - run_.host_start);
-    return ahead > 0 ? static_cast<int>(ahead * 1000) : 0;
+    return static_cast<int>(run_.pacer.ahead(session_->now(), front::HostClock::now()).count());
 }
 
 }  // namespace alp85::dap

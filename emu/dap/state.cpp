@@ -9,6 +9,7 @@
 #include "asm/isa.h"
 #include "emu/dap/adapter.h"
 #include "emu/dap/machine_view.h"
+#include "emu/front/views.h"
 #include "emu/script/parser.h"
 #include "emu/util/text.h"
 
@@ -132,15 +133,15 @@ void Adapter::evaluate(const Json& args, Json& body) {
         body = {{"result", *text}, {"variablesReference", 0}};
         return;
     }
-    const std::uint64_t before = machine().now();
-    const std::uint16_t pc = machine().cpu().regs().pc;
+    const std::uint64_t before = session_->now();
+    const std::uint16_t pc = front::cpu_view(*session_).pc;
     const int errors = shell_->console().errors();
     capturing_ = true;  // the console gathers the debugger's output itself
     std::string text = shell_->execute(expression);
     capturing_ = false;
     captured_.clear();
     while (!text.empty() && text.back() == '\n') text.pop_back();
-    const bool moved = machine().now() != before || machine().cpu().regs().pc != pc;
+    const bool moved = session_->now() != before || front::cpu_view(*session_).pc != pc;
     if (shell_->console().errors() > errors) {
         if (moved) stopped("step", "after the console command");
         throw RequestError(text);

@@ -35,7 +35,7 @@ std::pair<std::string_view, std::string_view> split_if(std::string_view s, int& 
 }
 }  // namespace
 
-Console::Console(Debugger& d) : d_(d), vars_(d.variables()) {
+Console::Console(Debugger& d) : d_(d), table_(own_commands()), vars_(d.variables()) {
     read_source_ = [](const std::string& file) -> std::optional<std::string> {
         std::ifstream in(file, std::ios::binary);
         if (!in) return std::nullopt;
@@ -62,8 +62,14 @@ Console::Console(Debugger& d) : d_(d), vars_(d.variables()) {
     });
 }
 
-const std::vector<Console::CommandDef>& Console::commands() {
-    static const std::vector<CommandDef> defs = {
+std::vector<Console::CommandDef> Console::own_commands() {
+    struct Own {
+        std::string_view name;
+        std::vector<std::string_view> aliases;
+        Handler handler;
+        std::string_view help;
+    };
+    static const std::vector<Own> defs = {
         {"break", {"b", "br", "brea"}, &Console::cmd_break, "break [LOCATION] [if EXPR]: stop before the instruction at LOCATION (address, symbol, FILE:LINE)"},
         {"tbreak", {"tb"}, &Console::cmd_tbreak, "tbreak [LOCATION] [if EXPR]: a breakpoint deleted at its first stop"},
         {"watch", {"wa"}, &Console::cmd_watch, "watch WHAT [if EXPR]: stop after WHAT changes (memory written with a new value, a port, the machine tool, a chip register)"},
@@ -111,7 +117,34 @@ const std::vector<Console::CommandDef>& Console::commands() {
         {"help", {"h"}, &Console::cmd_help, "help [COMMAND]"},
         {"quit", {"q", "exit"}, &Console::cmd_quit, "quit"},
     };
-    return defs;
+    std::vector<CommandDef> out;
+    for (const Own& o : defs) {
+        CommandDef c;
+        c.name = o.name;
+        c.aliases = o.aliases;
+        c.handler = o.handler;
+        c.help = o.help;
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+void Console::add_commands(const std::vector<CommandDef>& defs) {
+    for (CommandDef c : defs) {
+        c.handler = nullptr;
+        table_.push_back(std::move(c));
+    }
+}
+
+const Console::CommandDef* Console::added_form(const CommandDef& own, std::string_view rest) const {
+    const std::string up = to_upper(trim_blanks(rest));
+    const std::string next = up.substr(0, up.find(' '));
+    for (const CommandDef& c : table_) {
+        if (c.handler || c.name != own.name) continue;
+        for (std::string_view f : c.forms)
+            if (f == "\"" ? up.starts_with('"') : next == f) return &c;
+    }
+    return nullptr;
 }
 
 const Console::CommandDef* Console::find_command(std::string_view word, std::string& error) const {
@@ -120,15 +153,17 @@ const Console::CommandDef* Console::find_command(std::string_view word, std::str
         std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
         return s;
     }();
-    for (const CommandDef& c : commands()) {
+    // The console's own commands, by name, alias or prefix; an added one is the fallback's.
+    for (const CommandDef& c : table_) {
+        if (!c.handler) continue;
         if (c.name == w) return &c;
         for (std::string_view a : c.aliases)
             if (a == w) return &c;
     }
     // gdb: a unique prefix of a command's name
     const CommandDef* found = nullptr;
-    for (const CommandDef& c : commands()) {
-        if (w.size() >= 2 && c.name.substr(0, w.size()) == w) {
+    for (const CommandDef& c : table_) {
+        if (c.handler && w.size() >= 2 && c.name.substr(0, w.size()) == w) {
             if (found) {
                 error = fmt::format("ambiguous command '{}' ({}, {}, ...)", word, found->name, c.name);
                 return nullptr;
@@ -173,20 +208,9 @@ std::string Console::execute(std::string_view line) {
     std::string err;
     const CommandDef* c = find_command(word, err);
     if (!err.empty()) return error(col, err);
-    // Script commands that share a name with a debugger command: print "text", print display,
-    // set mem, set reg, delete all, run until.
-    if (c) {
-        const std::string rest = to_upper(trim_blanks(t.substr(word.size())));
-        const std::string next = rest.substr(0, rest.find(' '));
-        const bool script_form = (c->handler == &Console::cmd_print && (rest.starts_with("\"") || next == "DISPLAY" || next == "AXES" || next == "TIME")) ||
-                                 (c->handler == &Console::cmd_set && (next == "MEM" || next == "REG")) ||
-                                 (c->handler == &Console::cmd_run && next == "UNTIL") ||
-                                 (c->handler == &Console::cmd_expect &&
-                                  (next == "DISPLAY" || next == "MEM" || next == "WORD" || next == "REG" || next == "FLAG" ||
-                                   next == "PORT" || next == "SYMBOL" || next == "TIME" || next == "HALTED" ||
-                                   next == "RUNNING" || next == "AXIS" || next == "COUNT" || next == "LOST"));
-        if (script_form) c = nullptr;
-    }
+    // Added commands that share a name with one of the console's take their own forms: the
+    // script's print "text", print display, set mem, set reg, run until, expect reg ...
+    if (c && added_form(*c, t.substr(word.size()))) c = nullptr;
     if (!c) {
         // The script's run until passes breakpoints (Debugger::run_to): say so, and where it ended.
         const std::string up = to_upper(t);
@@ -729,23 +753,39 @@ std::string Console::cmd_rn(std::string_view, int) { return report(d_.reverse_ne
 std::string Console::cmd_rfin(std::string_view, int) { return report(d_.reverse_finish()); }
 std::string Console::cmd_rc(std::string_view, int) { return report(d_.reverse_continue()); }
 
+// A console command's help, and that of the added command of the same name whose forms it hands
+// over (help print: the debugger's print, then the script's print display ...), as one text.
+std::string Console::whole_help(const CommandDef& c) const {
+    std::string out(c.help);
+    if (!c.handler) return out;
+    const std::string w = to_upper(c.name);
+    for (const CommandDef& d : table_)
+        if (!d.handler && to_upper(d.name) == w) out += fmt::format("; as in scripts: {}", d.help);
+    return out;
+}
+
 std::string Console::cmd_help(std::string_view a, int col) {
-    std::string out;
     if (!a.empty()) {
         std::string err;
         const CommandDef* c = find_command(a, err);
-        if (!c) return error(col, err.empty() ? fmt::format("no command '{}'", a) : err);
-        return std::string(c->help) + '\n';
+        if (c) return whole_help(*c) + '\n';
+        // A command of the script's alone (each of its entries: expect has several).
+        std::string out;
+        const std::string w = to_upper(a);
+        for (const CommandDef& d : table_)
+            if (!d.handler && to_upper(d.name) == w) out += std::string(d.help) + '\n';
+        if (out.empty()) return error(col, err.empty() ? fmt::format("no command '{}'", a) : err);
+        return out;
     }
-    out += "Debugger commands (gdb's names; docs/debugging.md); help COMMAND for one:\n";
     // Each command whole: its names, then its help wrapped at 100 columns under the names.
     constexpr std::size_t kWidth = 100, kIndent = 6;
-    for (const CommandDef& c : commands()) {
+    auto entry = [&](const CommandDef& c) {
         std::string names(c.name);
         for (std::string_view al : c.aliases) names += fmt::format(", {}", al);
-        out += fmt::format("  {}\n", names);
+        std::string out = fmt::format("  {}\n", names);
         std::string line(kIndent, ' ');
-        std::string_view rest = c.help;
+        const std::string text = whole_help(c);
+        std::string_view rest = text;
         while (!rest.empty()) {
             const std::size_t sp = rest.find(' ');
             const std::string_view word = rest.substr(0, sp);
@@ -757,10 +797,16 @@ std::string Console::cmd_help(std::string_view a, int col) {
             line += word;
             rest = sp == std::string_view::npos ? std::string_view{} : rest.substr(sp + 1);
         }
-        out += line + '\n';
+        return out + line + '\n';
+    };
+    std::string out = "Debugger commands (gdb's names; docs/debugging.md); help COMMAND for one:\n";
+    for (const CommandDef& c : table_)
+        if (c.handler) out += entry(c);
+    if (std::any_of(table_.begin(), table_.end(), [](const CommandDef& c) { return !c.handler; })) {
+        out += "Script commands (docs/scripting.md), at this prompt too:\n";
+        for (const CommandDef& c : table_)
+            if (!c.handler) out += entry(c);
     }
-    out += "Every command of the script language works too (docs/scripting.md): firmware, load, press, type,\n"
-           "run until, wait display, expect, save, restore, print display, print axes, ...\n";
     return out;
 }
 
@@ -802,21 +848,14 @@ std::vector<std::string> file_names(std::string_view word) {
 std::vector<std::string> Console::complete(std::string_view word, bool first_word, std::string_view command) const {
     std::vector<std::string> out;
     const std::string up = to_upper(word);
-    static constexpr std::string_view kFileCommands[] = {"load", "save", "restore", "record", "plot"};
-    const std::string cmd = [&] {
-        std::string c(command);
-        std::transform(c.begin(), c.end(), c.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-        return c;
-    }();
-    const bool file_command = std::find(std::begin(kFileCommands), std::end(kFileCommands), cmd) != std::end(kFileCommands);
+    const std::string cmd = to_upper(command);
+    const bool file_command = std::any_of(table_.begin(), table_.end(),
+                                          [&](const CommandDef& c) { return c.takes_file && to_upper(c.name) == cmd; });
     if (!first_word && (file_command || word.find('/') != std::string_view::npos || word.starts_with('.') || word.starts_with('"'))) {
         out = file_names(word);
     } else if (first_word) {
-        for (const CommandDef& c : commands())
+        for (const CommandDef& c : table_)
             if (to_upper(c.name).starts_with(up)) out.emplace_back(c.name);
-        for (std::string_view s : {"firmware", "load", "monitor", "press", "type", "keydown", "keyup", "wait", "expect",
-                                   "save", "restore", "reset", "record", "plot", "motor", "feedback", "mark", "option"})
-            if (to_upper(s).starts_with(up)) out.emplace_back(s);
     } else {
         for (const auto& [name, value] : d_.program().names())
             if (name.starts_with(up)) out.push_back(name);

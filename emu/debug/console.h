@@ -10,8 +10,8 @@
 //   PART axis line frame symbol) history echo output help quit/q
 //
 // A line it does not know goes to the fallback: `alp85 debug` passes it to the script language
-// (docs/scripting.md: load, firmware, press, type, run until, wait display, expect, save,
-// restore, ...), so every script command works at the prompt too.
+// and adds the script's commands to the console's one table (add_commands), so every script
+// command works at the prompt too and help and completion list it.
 #pragma once
 
 #include <functional>
@@ -69,21 +69,37 @@ public:
     // A line of a loaded program's source (read once, kept), or nullopt.
     std::optional<std::string> source_line(const SourceLine& l);
 
+    // One command of the prompt: the console's own (with its handler) or one a layer above added
+    // (the fallback runs it: alp85 debug adds the script language's, script::commands()).
+    using Handler = std::string (Console::*)(std::string_view args, int col);
+    struct CommandDef {
+        std::string_view name;
+        std::vector<std::string_view> aliases;
+        Handler handler = nullptr;  // null: an added command
+        std::string_view help;      // "usage: what it does"
+        // An added command whose name the console has too: the words after the name that make a
+        // line the added one's ("\"": a quoted string). None: the console's takes every line.
+        std::vector<std::string_view> forms;
+        bool takes_file = false;    // completion offers file names after it
+    };
+    // Commands the fallback runs, matched by their whole name (the console's own also by alias and
+    // by a unique prefix). Views into `defs` are kept: its strings must outlive the console.
+    void add_commands(const std::vector<CommandDef>& defs);
+    // The one list of commands: the console's, then the added ones. help, completion and
+    // docs/debugging.md's table come from it.
+    const std::vector<CommandDef>& commands() const { return table_; }
+
 private:
     struct Display {
         int number = 0;
         char format = 0;
         Expr expr;
     };
-    using Handler = std::string (Console::*)(std::string_view args, int col);
-    struct CommandDef {
-        std::string_view name;
-        std::vector<std::string_view> aliases;
-        Handler handler;
-        std::string_view help;
-    };
-    static const std::vector<CommandDef>& commands();
+    static std::vector<CommandDef> own_commands();
     const CommandDef* find_command(std::string_view word, std::string& error) const;
+    // The added command that takes a line the console's command `own` would (print "text", set
+    // mem, run until, expect reg, ...), or null.
+    const CommandDef* added_form(const CommandDef& own, std::string_view rest) const;
 
     std::string error(int col, std::string message);
     // TEXT (at column `col`) parsed and evaluated now, into `out`; or this line's error: a parse
@@ -150,6 +166,7 @@ private:
     std::string cmd_output(std::string_view a, int col);
     std::string cmd_expect(std::string_view a, int col);
     std::string cmd_help(std::string_view a, int col);
+    std::string whole_help(const CommandDef& c) const;
     std::string cmd_quit(std::string_view a, int col);
     // info ...
     std::string info_registers();
@@ -171,6 +188,7 @@ private:
     std::string show_display(const Display& d);
 
     Debugger& d_;
+    std::vector<CommandDef> table_;
     Fallback fallback_;
     SourceReader read_source_;
     std::map<std::string, std::vector<std::string>> sources_;  // file -> lines

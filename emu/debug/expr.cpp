@@ -12,7 +12,9 @@
 namespace alp85::debug {
 
 namespace {
-bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '?' || c == '@'; }
+// A name as asm85 spells a symbol: a letter, _ ? @ or . first; digits and $ after it.
+bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '?' || c == '@' || c == '.'; }
+bool is_name_char(char c) { return is_name_start(c) || std::isdigit(static_cast<unsigned char>(c)) || c == '$'; }
 
 // Parsing and evaluating recurse: a bound on the depth keeps a hostile text ("((((...", a
 // 200 000-term sum) from exhausting the stack. No expression a person types comes near it.
@@ -36,9 +38,12 @@ bool read_only_named(std::string_view n) { return n == "T" || n == "TIME"; }
 // Recursive descent, one level per precedence (C's order).
 class ExprParser {
 public:
-    ExprParser(std::string_view text, const SymbolTable& symbols, Expr::Names names, int col_base, ExprError& error,
-               const Expr::Variables* variables)
-        : s_(text), symbols_(symbols), names_(names), base_(col_base), error_(error), vars_(variables) {}
+    // symbols null: the names are collected into `deferred` (Expr::shape), each read as 0.
+    ExprParser(std::string_view text, const SymbolTable* symbols, Expr::Names names, int col_base, ExprError& error,
+               const Expr::Variables* variables, std::vector<Expr::Name>* deferred = nullptr)
+        : s_(text), symbols_(symbols), names_(names), base_(col_base), error_(error), vars_(variables), deferred_(deferred) {}
+
+    bool reads_machine() const { return reads_machine_; }
 
     std::optional<Expr> run() {
         Expr e;
@@ -77,6 +82,10 @@ private:
         while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
     }
     int add(Expr::Node n) {
+        switch (n.kind) {
+            case K::Reg: case K::Flag: case K::Time: case K::Mem8: case K::Mem16: case K::Var: reads_machine_ = true; break;
+            default: break;
+        }
         int d = 1;
         if (n.a >= 0) d = std::max(d, depth_of(n.a) + 1);
         if (n.b >= 0) d = std::max(d, depth_of(n.b) + 1);
@@ -224,7 +233,8 @@ private:
         const bool dollar = c == '$', amp = c == '&';
         if (dollar || amp) ++i_;
         std::size_t j = i_;
-        while (j < s_.size() && is_name_char(s_[j])) ++j;
+        if (j < s_.size() && (dollar ? is_name_char(s_[j]) : is_name_start(s_[j])))
+            while (j < s_.size() && is_name_char(s_[j])) ++j;
         if (j == i_) return fail(i_ < s_.size() ? fmt::format("unexpected '{}'", s_.substr(i_, 1)) : "expected a value");
         const std::string name = to_upper(s_.substr(i_, j - i_));
         i_ = j;
@@ -240,7 +250,12 @@ private:
             return -1;
         };
         auto symbol = [&]() -> int {
-            if (const auto v = symbols_.value_of(name)) return add({K::Number, *v, -1, -1, col});
+            if (!symbols_) {  // shape: resolved later
+                deferred_->push_back({name, base_ + col + 1, amp,
+                                      cpu::description().find(name) != nullptr || flag_named(name).has_value()});
+                return add({K::Number, 0, -1, -1, col});
+            }
+            if (const auto v = symbols_->value_of(name)) return add({K::Number, *v, -1, -1, col});
             return -1;
         };
         if (dollar) {
@@ -263,7 +278,7 @@ private:
     }
 
     std::string_view s_;
-    const SymbolTable& symbols_;
+    const SymbolTable* symbols_;
     Expr::Names names_;
     int base_;
     ExprError& error_;
@@ -272,16 +287,32 @@ private:
     std::size_t i_ = 0;
     int nesting_ = 0;
     std::vector<int> depth_;  // of each node's subtree, parallel to e_->nodes_
+    std::vector<Expr::Name>* deferred_;
+    bool reads_machine_ = false;
 };
 
 std::optional<Expr> Expr::parse(std::string_view text, const SymbolTable& symbols, ExprError& error, Names names,
                                 int col_base, const Variables* variables) {
-    return ExprParser(text, symbols, names, col_base, error, variables).run();
+    return ExprParser(text, &symbols, names, col_base, error, variables).run();
 }
 
-std::int64_t Expr::eval(const Machine& m) const { return eval(m, root_); }
+std::optional<Expr::Shape> Expr::shape(std::string_view text, ExprError& error, int col_base) {
+    Shape out;
+    ExprParser p(text, nullptr, Names::SymbolsFirst, col_base, error, nullptr, &out.names);
+    const std::optional<Expr> e = p.run();
+    if (!e) return std::nullopt;
+    if (out.names.empty() && !p.reads_machine()) {
+        try {
+            out.constant = e->eval(nullptr, e->root_);
+        } catch (const ExprError& x) {
+            error = {col_base + x.col, x.message};
+            return std::nullopt;
+        }
+    }
+    return out;
+}
 
-std::int64_t Expr::eval(const Machine& m, int i) const {
+std::int64_t Expr::eval(const Machine* m, int i) const {
     const Node& n = nodes_[static_cast<std::size_t>(i)];
     auto a = [&] { return eval(m, n.a); };
     auto b = [&] { return eval(m, n.b); };
@@ -293,13 +324,13 @@ std::int64_t Expr::eval(const Machine& m, int i) const {
             if (it == vars_->end()) throw ExprError{n.col, fmt::format("no variable '${}'", name)};
             return it->second;
         }
-        case Kind::Reg: return cpu::description().registers[static_cast<std::size_t>(n.value)].read(m.cpu().regs());
-        case Kind::Flag: return (flag_byte(m.cpu().regs()) & n.value) ? 1 : 0;
-        case Kind::Time: return static_cast<std::int64_t>(m.now());
-        case Kind::Mem8: return m.peek(static_cast<std::uint16_t>(a()));
+        case Kind::Reg: return cpu::description().registers[static_cast<std::size_t>(n.value)].read(m->cpu().regs());
+        case Kind::Flag: return (flag_byte(m->cpu().regs()) & n.value) ? 1 : 0;
+        case Kind::Time: return static_cast<std::int64_t>(m->now());
+        case Kind::Mem8: return m->peek(static_cast<std::uint16_t>(a()));
         case Kind::Mem16: {
             const auto addr = static_cast<std::uint16_t>(a());
-            return m.peek(addr) | m.peek(static_cast<std::uint16_t>(addr + 1)) << 8;
+            return m->peek(addr) | m->peek(static_cast<std::uint16_t>(addr + 1)) << 8;
         }
         case Kind::Neg: return wrap(0 - u(a()));
         case Kind::Not: return a() == 0;
@@ -355,9 +386,9 @@ std::string Expr::assign(Machine& m, std::int64_t v) const {
             f->write(x, static_cast<std::uint16_t>(v ? now | n.value : now & ~n.value));
             return {};
         }
-        case Kind::Mem8: return poke(static_cast<std::uint16_t>(eval(m, n.a)), lo);
+        case Kind::Mem8: return poke(static_cast<std::uint16_t>(eval(&m, n.a)), lo);
         case Kind::Mem16: {
-            const auto addr = static_cast<std::uint16_t>(eval(m, n.a));
+            const auto addr = static_cast<std::uint16_t>(eval(&m, n.a));
             std::string e = poke(addr, lo);
             return e.empty() ? poke(static_cast<std::uint16_t>(addr + 1), static_cast<std::uint8_t>(word >> 8)) : e;
         }

@@ -5,7 +5,8 @@
 //             M (= [HL]), or with a $ ($A, $PC)
 //   flags     S Z AC P CY V K (X5 for K) (0 or 1), or $S ...
 //             $T: the T-state counter; $NAME: a variable
-//   symbols   OUT  YAC+1  &Z   (a bare name is a register or flag first: &NAME is always the symbol)
+//   symbols   OUT  YAC+1  &Z   (a bare name is a register or flag first: &NAME is always the symbol),
+//             spelled as asm85 spells them (a letter, _ ? @ or . first; then digits and $ too)
 //   memory    [HL]  byte[1B30H]  word[YAC]  (little-endian 16 bits)
 //   operators unary - ! ~; * / %; + -; << >>; < <= > >=; == !=; &; ^; |; &&; ||; parentheses
 //
@@ -44,8 +45,25 @@ public:
                                      Names names = Names::RegistersFirst, int col_base = 0,
                                      const Variables* variables = nullptr);
 
+    // What a text reads before any symbol is known (the script language checks a script before its
+    // loads have run): its names, each with its column (plus `col_base`) and whether it must be a
+    // symbol (&NAME) or may be a register or flag; and its value when it reads no name, register,
+    // flag, memory or time. A bare name is a symbol first (Names::SymbolsFirst). nullopt and `error`
+    // when `text` is not an expression (1/0 included).
+    struct Name {
+        std::string name;  // upper case
+        int col = 0;
+        bool symbol_only = false;  // &NAME
+        bool machine = false;      // also the name of a register or flag
+    };
+    struct Shape {
+        std::vector<Name> names;
+        std::optional<std::int64_t> constant;
+    };
+    static std::optional<Shape> shape(std::string_view text, ExprError& error, int col_base = 0);
+
     // The value now; throws ExprError for a division by zero.
-    std::int64_t eval(const Machine& m) const;
+    std::int64_t eval(const Machine& m) const { return eval(&m, root_); }
     // Width of the value in bits, for printing: 8 (a byte register, a flag's byte, byte[...]) or 16.
     int width() const { return width_; }
     const std::string& text() const { return text_; }
@@ -69,7 +87,7 @@ public:
     };
 
 private:
-    std::int64_t eval(const Machine& m, int node) const;
+    std::int64_t eval(const Machine* m, int node) const;  // m: null for a constant (shape)
 
     std::vector<Node> nodes_;
     std::vector<std::string> var_names_;       // Var nodes: their names (value: the index)

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "emu/board/machine.h"
+#include "emu/debug/pin_tap.h"
 #include "emu/util/atomic_file.h"
 
 namespace alp85::debug {
@@ -29,15 +30,14 @@ class SignalRecorder final : public PinProbe {
 public:
     static constexpr std::uint64_t kDefaultPeriod = 96;  // 31.25 us: four samples of the 125 us motor grid
 
-    struct PinName {
-        std::string scope, name;
-        bool real = false, exact = true;
-    };
+    using PinName = PinTap::PinName;
     // Every pin of `machine`, in the file's order.
-    static std::vector<PinName> pin_names(const Machine& machine);
+    static std::vector<PinName> pin_names(const Machine& machine) { return PinTap::pin_names(machine); }
     // "" when every word of `selection` names a pin ("PA0", "8155.PA0"), every pin of that name
     // ("PULSE": X, Y and Z's) or a scope ("8155", "X"), case-insensitive; else why not.
-    static std::string check_selection(const Machine& machine, const std::vector<std::string>& selection);
+    static std::string check_selection(const Machine& machine, const std::vector<std::string>& selection) {
+        return PinTap::check_selection(machine, selection);
+    }
 
     SignalRecorder() = default;
     SignalRecorder(const SignalRecorder&) = delete;
@@ -62,27 +62,14 @@ public:
     std::uint64_t next() const override;
 
 private:
-    // One reader of pins: the 8085 (part == nullptr) or a part.
-    struct Source {
-        periph::Part* part = nullptr;
-        periph::Pins pins;
-        std::vector<std::size_t> selected;  // indices into pins
-        std::vector<std::string> ids;       // per selected pin
-        std::vector<char> level;            // per selected pin: last written
-        std::vector<double> real;
-        bool self_timed = false;            // a selected exact pin may change by itself (next_pin_change)
-    };
-    void read(Source& s, std::uint64_t t);
     void write_time(std::uint64_t t);
     void detach();
 
     Machine* machine_ = nullptr;
     std::filesystem::path path_;
     std::unique_ptr<AtomicOutput> file_;
-    std::vector<Source> sources_;
-    std::uint64_t period_ = kDefaultPeriod;
-    bool sampled_ = false;       // a selected pin needs the sample clock
-    std::uint64_t next_sample_ = 0;
+    PinTap tap_;
+    std::vector<std::string> ids_;  // per channel of the tap: its VCD identifier
     std::uint64_t last_t_ = 0;   // the latest T-state looked at (the file never goes back)
     std::uint64_t written_t_ = ~std::uint64_t{0};  // the time of the last `#` line
     std::uint64_t start_t_ = 0;

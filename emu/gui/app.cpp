@@ -27,11 +27,13 @@
 #include "emu/gui/controls.h"
 #include "emu/gui/debug_panes.h"
 #include "emu/gui/input.h"
-#include "emu/gui/pacer.h"
 #include "emu/gui/screenshot.h"
+#include "emu/gui/signals_pane.h"
 #include "emu/gui/terminal_pane.h"
 #include "emu/gui/tool_view.h"
-#include "emu/gui/toolpath.h"
+#include "emu/front/pacer.h"
+#include "emu/front/toolpath.h"
+#include "emu/front/views.h"
 #include "emu/plot/plot.h"
 #include "emu/program/firmware.h"
 #include "emu/script/parser.h"
@@ -86,8 +88,8 @@ public:
     App(const GuiOptions& o, SDL_Window* w)
         : o_(o), window_(w), shell_(session_options(o)), session_(shell_.session()) {
         if (!o.out_dir.empty()) session_.set_out_dir(o.out_dir);
-        machine().tool().set_model(o.motor);
-        if (o.parts) o.parts(machine());
+        session_.set_motor(o.motor);
+        if (o.parts) o.parts(session_.machine());
         // The terminal leaves a character's time between the characters it sends (as alp85 run).
         if (o.serial) done(session_.connect_serial(*o.serial, o.serial->frame_tstates(board::kCpuHz)));
         panes_.shown_part = o.show_part;
@@ -96,7 +98,7 @@ public:
         for (std::size_t i = 0; i < ui_.firmware_names.size(); ++i)
             if (ui_.firmware_names[i] == "thesis-fixed") ui_.firmware = static_cast<int>(i);
         ui_.speed = o.speed;
-        pacer_.set_speed(kSpeeds[static_cast<std::size_t>(o.speed)].factor, machine().now(), HostClock::now());
+        pacer_.set_speed(kSpeeds[static_cast<std::size_t>(o.speed)].factor, session_.now(), HostClock::now());
         clicks_ = o.clicks;
         key_map_ = o.key_map;
         session_.debugger().set_poll([this] { poll_during_reverse(); });
@@ -112,7 +114,6 @@ public:
     bool canvas_ok() { return canvas_.init(kWindowWidth, kWindowHeight); }
 
 private:
-    Machine& machine() { return session_.machine(); }
     bool done(const script::Session::Outcome& o);
     // Runs: Continue/Run begin one that stops at breakpoints (and, debugging, at HLT); each frame
     // resumes it within the frame's budget; Pause ends it. The same Debugger run as DAP's.
@@ -153,6 +154,7 @@ private:
     script::DebugShell shell_;
     script::Session& session_;
     DebugPanes panes_;
+    SignalsPane signals_;
     std::size_t line_click_pos_ = 0, command_pos_ = 0;
     bool debug_hooks_done() const {
         return line_click_pos_ >= o_.click_lines.size() && command_pos_ >= o_.debug_commands.size() && hook_wait_ == 0 &&
@@ -190,7 +192,7 @@ private:
     bool quit_ = false;
     double fps_ = 0;
     Canvas canvas_;
-    AxesReadout axes_{};
+    ToolView axes_{};
     long presented_ = 0;  // frames that changed the picture
     bool expose_ = true;
     double machine_s_ = 0, render_s_ = 0;  // host time in the machine and in drawing (--stats)
@@ -232,15 +234,20 @@ void App::after_commands() {
     if (rec) {
         my_sampler_ = false;
         const auto& s = session_.recorder().samples();
-        for (; rec_seen_ < s.size(); ++rec_seen_) path_.observe(s[rec_seen_], machine());
+        for (; rec_seen_ < s.size(); ++rec_seen_) path_.observe(s[rec_seen_], session_);
     } else if (!my_sampler_) {
-        Machine& m = machine();
-        m.set_sampler(kSamplePeriod, [this, &m](std::uint64_t t) { path_.observe(debug::sample_tool(m.tool(), t), m); });
+        session_.sample_tool(kSamplePeriod, [this](const debug::ToolSample& t) { path_.observe(t, session_); });
         my_sampler_ = true;
     }
 }
 
 int App::start() {
+    if (!o_.signals.empty()) {
+        if (const auto r = open_signals(signals_, session_, o_.signals, o_.signals_ms); r.status != script::Session::Status::Ok) {
+            std::cerr << "alp85 gui: --signals: " << r.message << '\n';
+            return 2;
+        }
+    }
     if (!o_.script.empty()) {
         std::vector<script::ParseError> errors;
         script::RunnerOptions ro;
@@ -267,7 +274,7 @@ int App::start() {
         script_active_ = true;
         // At the speed chosen (--speed, real time by default) the script's runs are drawn as they go.
         session_.set_pace([this](std::uint64_t) { pace_script(); }, kPaceSlice);
-        pacer_.rebase(machine().now(), HostClock::now());
+        pacer_.rebase(session_.now(), HostClock::now());
         ui_.add_log("script " + std::filesystem::path(o_.script).filename().string());  // no folder of the user's in the picture
         after_commands();
         return 0;
@@ -306,11 +313,12 @@ void App::update_fit() {
 // double click frames the toolpath; Home frames it too, End returns to the automatic fit.
 // Returns true when the event was the view's.
 bool App::table_input(const SDL_Event& e, const ImGuiIO& io) {
-    const TableView fitted = table_view(machine(), path_);
+    const ToolView tool = tool_view(session_);
+    const TableView fitted = table_view(tool, path_, session_);
     auto frame_path = [&] {
         Bounds b = Bounds::none();
         for (const PointMm& p : path_.points()) b.add(p.x, p.y);
-        if (b.empty()) b.add(machine().tool().table_mm(periph::MachineTool::Axis::X), machine().tool().table_mm(periph::MachineTool::Axis::Y));
+        if (b.empty()) b.add(tool[Axis::X].mm, tool[Axis::Y].mm);
         b.x0 -= 1, b.y0 -= 1, b.x1 += 1, b.y1 += 1;  // a millimetre around it
         camera_.frame(b);
     };
@@ -366,6 +374,12 @@ void App::handle(const SDL_Event& event) {
         const Vec2 p = window_to_logical(static_cast<float>(e.motion.x), static_cast<float>(e.motion.y));
         e.motion.x = static_cast<int>(std::floor(p.x)), e.motion.y = static_cast<int>(std::floor(p.y));
     }
+    // The Signals pane lies over the table view (and the source pane): clicks and the wheel there are its own.
+    if (signals_.open && (e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP || e.type == SDL_MOUSEWHEEL)) {
+        const float x = e.type == SDL_MOUSEWHEEL ? io.MousePos.x : static_cast<float>(e.button.x);
+        const float y = e.type == SDL_MOUSEWHEEL ? io.MousePos.y : static_cast<float>(e.button.y);
+        if (kSignalsRect.contains(x, y)) return;
+    }
     if (!o_.debug && table_input(e, io)) return;
     switch (e.type) {
         case SDL_QUIT: quit_ = true; break;
@@ -383,12 +397,12 @@ void App::handle(const SDL_Event& event) {
             }
             if (e.button.button == SDL_BUTTON_LEFT) {
                 mouse_key_ = key_at(static_cast<float>(e.button.x), static_cast<float>(e.button.y));
-                if (mouse_key_) presser_.down(*mouse_key_, machine());
+                if (mouse_key_) presser_.down(*mouse_key_, session_);
             }
             break;
         case SDL_MOUSEBUTTONUP:
             if (e.button.button == SDL_BUTTON_LEFT && mouse_key_) {
-                presser_.up(*mouse_key_, machine());
+                presser_.up(*mouse_key_, session_);
                 mouse_key_.reset();
             }
             break;
@@ -400,8 +414,8 @@ void App::handle(const SDL_Event& event) {
                 break;
             }
             if (const auto k = pad_key_for(e.key.keysym.sym)) {
-                if (e.type == SDL_KEYDOWN) presser_.down(*k, machine());
-                else presser_.up(*k, machine());
+                if (e.type == SDL_KEYDOWN) presser_.down(*k, session_);
+                else presser_.up(*k, session_);
             }
             break;
         default: break;
@@ -418,11 +432,11 @@ void App::step_script(HostClock::time_point until) {
                 status_ = 1;
             } else if (status_ == 0) {
                 std::cout << fmt::format("PASS {} ({} commands, {} simulated)\n", o_.script, script_.size(),
-                                         script::Session::format_time(machine().now()));
+                                         script::Session::format_time(session_.now()));
             }
             script_active_ = false;
             session_.set_pace({}, 0);
-            pacer_.rebase(machine().now(), HostClock::now());
+            pacer_.rebase(session_.now(), HostClock::now());
             after_commands();
             if (!o_.debug) begin_run(false);
             return;
@@ -447,7 +461,7 @@ void App::begin_run(bool stop_at_halt) {
         return;
     }
     ui_.running = true;
-    pacer_.rebase(machine().now(), HostClock::now());
+    pacer_.rebase(session_.now(), HostClock::now());
     pause_asked_.reset();
 }
 
@@ -480,18 +494,18 @@ void App::report(const debug::Stop& s) {
 }
 
 void App::run_machine(HostClock::time_point until) {
-    Machine& m = machine();
     debug::Debugger& d = session_.debugger();
     if (!d.running()) {
         ui_.running = false;
         return;
     }
-    std::uint64_t goal = pacer_.target(m.now(), HostClock::now());
-    if (!script_active_ && click_pos_ < clicks_.size()) goal = std::min(goal, std::max(click_t_, m.now()));
+    const std::uint64_t now = session_.now();
+    std::uint64_t goal = pacer_.target(now, HostClock::now());
+    if (!script_active_ && click_pos_ < clicks_.size()) goal = std::min(goal, std::max(click_t_, now));
     const double left = std::chrono::duration<double>(until - HostClock::now()).count();
-    if (goal > m.now() && left > 0) {
+    if (goal > now && left > 0) {
         debug::Budget b;
-        b.tstates = goal - m.now();
+        b.tstates = goal - now;
         b.seconds = left;
         if (const auto s = d.resume(b)) report(*s);
     }
@@ -506,7 +520,7 @@ void App::debug_request(DebugPanes::Request r) {
             report(*s);
         } else {
             ui_.running = true;
-            pacer_.rebase(machine().now(), HostClock::now());
+            pacer_.rebase(session_.now(), HostClock::now());
         }
     };
     switch (r) {
@@ -547,7 +561,7 @@ void App::plot_drawn(const std::string& file) {
     plot::Series drawn{"table (X, Y)", {}};
     for (const PointMm& p : path_.points()) drawn.points.push_back({p.x, p.y});
     std::optional<std::pair<plot::Point, plot::Point>> line;
-    if (const auto l = path_.ideal(machine())) line = std::make_pair(plot::Point{l->from.x, l->from.y}, plot::Point{l->to.x, l->to.y});
+    if (const auto l = path_.ideal(session_)) line = std::make_pair(plot::Point{l->from.x, l->from.y}, plot::Point{l->to.x, l->to.y});
     try {
         plot::write_toolpath(file, "Toolpath", {drawn}, line);
         ui_.add_log("plotted " + file);
@@ -594,7 +608,7 @@ void App::act(const Action& a) {
         case K::Reset: done(session_.reset()); break;
         case K::Speed:
             ui_.speed = a.speed;
-            pacer_.set_speed(kSpeeds[static_cast<std::size_t>(a.speed)].factor, machine().now(), host);
+            pacer_.set_speed(kSpeeds[static_cast<std::size_t>(a.speed)].factor, session_.now(), host);
             break;
         case K::Firmware:
             if (done(session_.load_firmware(a.arg)) && done(session_.reset())) {
@@ -612,7 +626,7 @@ void App::act(const Action& a) {
             if (done(session_.restore(absolute(a.arg)))) {  // a refused snapshot leaves the drawing as it was
                 ui_.add_log("restored " + absolute(a.arg));
                 path_.restored();
-                pacer_.rebase(machine().now(), host);
+                pacer_.rebase(session_.now(), host);
             }
             break;
         case K::Screenshot: pending_shot_ = absolute(a.arg); break;
@@ -626,6 +640,10 @@ void App::act(const Action& a) {
                 path_.clear();  // the last job's path and its workpiece are no longer on the table
                 camera_.reset();
             }
+            break;
+        case K::Signals:
+            if (signals_.open) close_signals(signals_, session_);
+            else show_signals(signals_, session_);
             break;
         case K::Plot:
             // Without a recording, what the table view draws: the toolpath since the last boot,
@@ -641,7 +659,7 @@ void App::act(const Action& a) {
 // time (held kKeyHold, then kClickGap before the next), and the machine is not run past the next
 // one, so that a slow host gives the same presses as a fast one.
 void App::drive_clicks() {
-    if (click_pos_ >= clicks_.size() || machine().now() < click_t_) return;
+    if (click_pos_ >= clicks_.size() || session_.now() < click_t_) return;
     const auto k = find_pad_key(clicks_[click_pos_]);
     if (!k) {
         std::cerr << "alp85 gui: --click " << clicks_[click_pos_] << ": no such key\n";
@@ -650,7 +668,7 @@ void App::drive_clicks() {
         return;
     }
     push_button(key_rect(*k).centre(), !click_down_);  // handled at the start of the next frame, before the machine runs
-    click_t_ = machine().now() + (click_down_ ? kClickGap : kKeyHold);
+    click_t_ = session_.now() + (click_down_ ? kClickGap : kKeyHold);
     if (click_down_) ++click_pos_;
     click_down_ = !click_down_;
 }
@@ -671,7 +689,7 @@ void App::drive_debug_hooks() {
         }
         const SourceLine l{shell_.debugger().program().line_of(loc.addresses.front())->file, std::atoi(spec.c_str() + colon + 1)};
         panes_.show(l);
-        panes_.last_pc = machine().cpu().regs().pc;  // the pane stays on this line until the PC moves
+        panes_.last_pc = cpu_view(session_).pc;  // the pane stays on this line until the PC moves
         const Vec2 c = source_row(l.line - panes_.first).centre();
         for (const bool down : {true, false}) push_button(c, down);
         return;
@@ -716,7 +734,8 @@ void App::drive_debug_hooks() {
         // debug.continue, debug.step, ...), "frames:N" lets N frames pass, "status" prints whether
         // the board runs and its time, "toolpath" how many points the drawn path has and its ideal line, "clickrow:N"
         // clicks source row N as shown, "source" prints the file and first line the pane shows,
-        // "where:NAME" a button's centre in screen coordinates.
+        // "where:NAME" a button's centre in screen coordinates, "clickat:X,Y" clicks a point of the
+        // picture, "signals" prints what the Signals pane's cursors read.
         if (line.starts_with("click:")) {
             const auto it = drawn_buttons().find(line.substr(6));
             if (it == drawn_buttons().end()) {
@@ -776,8 +795,23 @@ void App::drive_debug_hooks() {
                       << std::flush;
             return;
         }
+        if (line.starts_with("clickat:")) {  // a click at a point of the picture (logical pixels), as a user's
+            float x = 0, y = 0;
+            if (std::sscanf(line.c_str() + 8, "%f,%f", &x, &y) != 2) {
+                std::cerr << "alp85 gui: --debug-command " << line << ": expected clickat:X,Y\n";
+                status_ = 2;
+                return;
+            }
+            push_click({x, y}, true);
+            button_up_ = Vec2{x, y};
+            return;
+        }
+        if (line == "signals") {  // what the Signals pane's cursors read
+            std::cout << "[gui] signals: " << cursor_readout(signals_) << '\n' << std::flush;
+            return;
+        }
         if (line == "toolpath") {
-            const auto l = path_.ideal(machine());
+            const auto l = path_.ideal(session_);
             std::cout << fmt::format("[gui] toolpath: {} points, {}\n", path_.points().size(),
                                      l ? fmt::format("ideal line from {:g},{:g} to {:g},{:g} mm", l->from.x, l->from.y, l->to.x, l->to.y)
                                        : std::string("no ideal line"))
@@ -786,7 +820,7 @@ void App::drive_debug_hooks() {
         }
         if (line == "status") {
             std::cout << fmt::format("[gui] status: {} t={}\n", session_.debugger().running() ? "running" : "stopped",
-                                     machine().now())
+                                     session_.now())
                       << std::flush;
             return;
         }
@@ -840,12 +874,13 @@ void App::draw() {
     // Each view in its own window, so that the canvas sees which one changed.
     draw_keypad(begin_layer("##keypad", kBoardRect), presser_);
     ImGui::End();
-    draw_display(begin_layer("##display", kDisplayRect), backdrop_, machine().display());
+    const DisplayView display = display_view(session_);
+    draw_display(begin_layer("##display", kDisplayRect), backdrop_, display.segments);
     ImGui::End();
+    const ToolView tool = tool_view(session_);
     {
         ImDrawList* dl = begin_layer("##hint", kHintRect);
-        if (const auto hint = feed_prompt_hint(machine().display_text(),
-                                               machine().tool().model() == periph::MachineTool::MotorModel::Physical))
+        if (const auto hint = feed_prompt_hint(display.text, tool.model == MotorModel::Physical))
             dl->AddText({kHintRect.x, kHintRect.y + 2}, IM_COL32(235, 235, 235, 255), hint->data(), hint->data() + hint->size());
         ImGui::End();
     }
@@ -856,27 +891,31 @@ void App::draw() {
         if (panes_.request != DebugPanes::Request::None && !in_command_) debug_request(std::exchange(panes_.request, DebugPanes::Request::None));
         if (frames_ % 15 == 0)
             ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
-                                     script::Session::format_time(machine().now()), fps_);
+                                     script::Session::format_time(session_.now()), fps_);
+        draw_signals_pane(signals_, session_);
+        ui_.signals = signals_.open;
         for (const Action& a : controls_panel(ui_))
             if (!in_command_) act(a);
         return;
     }
-    const TableView view = camera_.apply(table_view(machine(), path_));
-    draw_table(begin_layer("##table", kTableRect), backdrop_, machine(), path_, view);
+    const TableView view = camera_.apply(table_view(tool, path_, session_));
+    draw_table(begin_layer("##table", kTableRect), backdrop_, path_, session_, view);
     ImGui::End();
-    draw_toolpath(begin_layer("##toolpath", kTableRect), machine(), path_, view);
+    draw_toolpath(begin_layer("##toolpath", kTableRect), tool, path_, session_, view);
     ImGui::End();
     draw_z_gauge(begin_layer("##z", {kZGaugeRect.x - 8, kTableRect.y, kWindowWidth - kZGaugeRect.x + 8, kTableRect.h}), backdrop_,
-                 machine());
+                 tool);
     ImGui::End();
-    draw_travel_strip(begin_layer("##strip", kStripRect), backdrop_, machine());
+    draw_travel_strip(begin_layer("##strip", kStripRect), backdrop_, tool);
     ImGui::End();
-    if (frames_ % 4 == 0) axes_ = read_axes(machine());
-    if (const auto model = axes_panel(axes_, machine().tool().model()); model && !in_command_) done(session_.set_motor(*model));
+    if (frames_ % 4 == 0) axes_ = tool;
+    if (const auto model = axes_panel(axes_, tool.model); model && !in_command_) done(session_.set_motor(*model));
     // Four times a second: a clock that changes every frame would redraw its panel every frame.
     if (frames_ % 15 == 0)
         ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
-                             script::Session::format_time(machine().now()), fps_);
+                             script::Session::format_time(session_.now()), fps_);
+    draw_signals_pane(signals_, session_);
+    ui_.signals = signals_.open;
     for (const Action& a : controls_panel(ui_))
         if (!in_command_) act(a);  // a script's command is under way: the buttons wait for its end
 }
@@ -909,7 +948,7 @@ void App::present(bool painted) {
 // and the host waits, so that a script runs at the speed chosen. Only closing the window is heard
 // meanwhile; the buttons wait for the command's end.
 void App::pace_script() {
-    while (!quit_ && !pacer_.max_speed() && machine().now() > pacer_.target(machine().now(), HostClock::now())) {
+    while (!quit_ && !pacer_.max_speed() && session_.now() > pacer_.target(session_.now(), HostClock::now())) {
         SDL_Event e;
         while (SDL_PollEvent(&e)) {
             ImGui_ImplSDL2_ProcessEvent(&e);
@@ -1000,7 +1039,7 @@ int App::loop() {
     const double wall = std::chrono::duration<double>(HostClock::now() - start).count();
     if (o_.stats) finish_stats(wall, cpu_seconds() - cpu0);
     if (!o_.expect_display.empty()) {
-        const std::string got = trim_right(machine().display_text());
+        const std::string got = trim_right(display_view(session_).text);
         if (got != trim_right(o_.expect_display)) {
             std::cout << fmt::format("FAIL display: expected \"{}\", found \"{}\"\n", o_.expect_display, got);
             if (status_ == 0) status_ = 1;
@@ -1012,7 +1051,7 @@ int App::loop() {
 }
 
 void App::finish_stats(double wall, double cpu) const {
-    const double sim = board::ms_from_tstates(session_.machine().now()) / 1000;
+    const double sim = board::ms_from_tstates(session_.now()) / 1000;
     std::cout << fmt::format("stats: renderer {}\n", canvas_.renderer());
     std::cout << fmt::format("stats: {} frames in {:.2f} s = {:.1f} fps ({} of them changed the picture); CPU {:.2f} s = {:.1f}% of one core; "
                              "simulated {:.3f} s ({:.2f}x real time); speed {}; per frame {:.2f} ms emulating, {:.2f} ms drawing; "

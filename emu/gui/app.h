@@ -7,12 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "peripherals/machine_tool.h"
-#include "peripherals/uart.h"
-
-namespace alp85 {
-class Machine;
-}
+#include "emu/script/session.h"
 
 namespace alp85::gui {
 
@@ -39,6 +34,8 @@ struct GuiOptions {
     std::string show_part;                    // --debug: the chip pane brings this part's tab forward
     // --serial: a terminal on SID/SOD and its Terminal pane (emu/gui/terminal_pane.h).
     std::optional<periph::UartFormat> serial;
+    std::vector<std::string> signals;         // open the Signals pane on these pins (record signals' words)
+    int signals_ms = 10;                      // over the last this many ms (1 to 1000)
 };
 
 // Opens the window and runs until it is closed or an exit condition of `o` is met. Returns the

@@ -68,6 +68,10 @@ std::vector<Action> controls_panel(ControlsState& s) {
             drawn_buttons()["controls.new-workpiece"] = {a.x, a.y, b.x, b.y};
             ImGui::EndMenu();
         }
+        // The logic analyzer's pane (signals_pane.h), over the table view or the source pane.
+        if (ImGui::MenuItem("Signals", nullptr, s.signals)) out.push_back({K::Signals, {}});
+        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        drawn_buttons()["controls.signals"] = {a.x, a.y, b.x, b.y};
         ImGui::EndMenuBar();
     }
     if (named_button("controls.run", s.running ? "Pause###run" : "Run###run", 60)) out.push_back({K::RunPause, {}});

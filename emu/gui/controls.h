@@ -19,7 +19,7 @@ inline constexpr std::array<Speed, 5> kSpeeds{{
     {"x0.1", 0.1}, {"real time (3.072 MHz)", 1}, {"x10", 10}, {"x100", 100}, {"as fast as possible", 0}}};
 
 struct Action {
-    enum class Kind { RunPause, Reset, Speed, Firmware, LoadFile, SaveSnapshot, LoadSnapshot, Screenshot, RecordStart, RecordStop, Plot, NewWorkpiece };
+    enum class Kind { RunPause, Reset, Speed, Firmware, LoadFile, SaveSnapshot, LoadSnapshot, Screenshot, RecordStart, RecordStop, Plot, NewWorkpiece, Signals };
     Kind kind;
     std::string arg;  // firmware name or a path (as typed)
     int speed = 1;    // index into kSpeeds
@@ -29,6 +29,7 @@ struct ControlsState {
     bool running = true;
     int speed = 1;
     bool recording = false;
+    bool signals = false;  // the Signals pane is open (the menu bar's Signals toggles it)
     int firmware = 0;  // index into the built-in list
     std::vector<std::string> firmware_names;
     std::string file = "program.asm", snapshot = "alp85.snap", screenshot = "alp85.png";

@@ -7,7 +7,6 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "emu/core/cpu_registers.h"
 #include "emu/gui/controls.h"
 #include "emu/gui/layout.h"
 

@@ -5,7 +5,8 @@
 
 #include <SDL.h>
 
-#include "emu/gui/keys.h"
+#include "emu/front/keys.h"
+#include "emu/gui/layout.h"
 
 namespace alp85::gui {
 

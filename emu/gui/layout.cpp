@@ -47,58 +47,15 @@ Vec2 dp_centre(unsigned digit) {
     return {kDigitX0 + kDigitPitch * static_cast<float>(digit) + kDigitW + 7, kDigitY0 + kDigitH - kDpRadius};
 }
 
-namespace {
-using periph::Key;
-constexpr std::array<PadKey, 26> kPad{{
-    {Button::Reset, Key::K0, 0, 0}, {Button::Vect, Key::K0, 0, 1}, {Button::Matrix, Key::R, 0, 2},
-    {Button::Matrix, Key::KC, 0, 3}, {Button::Matrix, Key::KD, 0, 4}, {Button::Matrix, Key::KE, 0, 5},
-    {Button::Matrix, Key::KF, 0, 6},
-    {Button::Matrix, Key::Reg, 1, 0}, {Button::Matrix, Key::Mem, 1, 1}, {Button::Matrix, Key::Go, 1, 2},
-    {Button::Matrix, Key::K8, 1, 3}, {Button::Matrix, Key::K9, 1, 4}, {Button::Matrix, Key::KA, 1, 5},
-    {Button::Matrix, Key::KB, 1, 6},
-    {Button::Matrix, Key::Step, 2, 0}, {Button::Matrix, Key::Prev, 2, 1}, {Button::Matrix, Key::Next, 2, 2},
-    {Button::Matrix, Key::K4, 2, 3}, {Button::Matrix, Key::K5, 2, 4}, {Button::Matrix, Key::K6, 2, 5},
-    {Button::Matrix, Key::K7, 2, 6},
-    {Button::Matrix, Key::Exec, 3, 2}, {Button::Matrix, Key::K0, 3, 3}, {Button::Matrix, Key::K1, 3, 4},
-    {Button::Matrix, Key::K2, 3, 5}, {Button::Matrix, Key::K3, 3, 6},
-}};
-
-bool iequal(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
-           });
-}
-}  // namespace
-
-std::span<const PadKey> pad_keys() { return kPad; }
-
 Rect key_rect(const PadKey& k) {
     return {kKeyX0 + kKeyPitchX * static_cast<float>(k.col), kKeyY0 + kKeyPitchY * static_cast<float>(k.row), kKeyW,
             kKeyH};
 }
 
 std::optional<PadKey> key_at(float x, float y) {
-    for (const PadKey& k : kPad)
+    for (const PadKey& k : pad_keys())
         if (key_rect(k).contains(x, y)) return k;
     return std::nullopt;
-}
-
-std::optional<PadKey> find_pad_key(std::string_view name) {
-    if (iequal(name, "RESET")) return kPad[0];
-    if (iequal(name, "VECT") || iequal(name, "VECT INTR") || iequal(name, "VECTINTR")) return kPad[1];
-    const auto key = periph::Keypad::find(name);
-    if (!key) return std::nullopt;
-    for (const PadKey& k : kPad)
-        if (k.pad == Button::Matrix && k.key == *key) return k;
-    return std::nullopt;
-}
-
-void Bounds::add(double x, double y) {
-    if (empty()) {
-        *this = {x, y, x, y};
-        return;
-    }
-    x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
 }
 
 TableView TableView::fit(const Bounds& b, const Rect& r) {
@@ -170,6 +127,17 @@ std::optional<int> source_row_at(float x, float y) {
     for (int i = 0; i < kSourceRows; ++i)
         if (source_row(i).contains(x, y)) return i;
     return std::nullopt;
+}
+
+Rect signals_row(int i) { return {kSignalsTraceX, kSignalsTop + static_cast<float>(i) * kSignalsRowH, kSignalsTraceW, kSignalsRowH}; }
+
+float signals_x(std::uint64_t t, std::uint64_t end, std::uint64_t span) {
+    const double from_end = static_cast<double>(end) - static_cast<double>(t);  // T-states before the right end
+    return static_cast<float>(kSignalsTraceX + kSignalsTraceW - from_end * kSignalsTraceW / static_cast<double>(span));
+}
+
+double signals_t(float x, std::uint64_t end, std::uint64_t span) {
+    return static_cast<double>(end) - static_cast<double>(kSignalsTraceX + kSignalsTraceW - x) * static_cast<double>(span) / kSignalsTraceW;
 }
 
 }  // namespace alp85::gui

@@ -10,10 +10,13 @@
 #include <span>
 #include <utility>
 
-#include "emu/board/key_press.h"
-#include "peripherals/keypad.h"
+#include "emu/front/keys.h"
+#include "emu/front/toolpath.h"
 
 namespace alp85::gui {
+
+// The front ends' shared library (emu/front: keys, pacing, the toolpath, views) is the window's own.
+using namespace front;
 
 struct Vec2 {
     float x = 0, y = 0;
@@ -53,6 +56,10 @@ inline constexpr Rgb kIdealLine{120, 255, 120};
 inline constexpr Rgb kTool{255, 0, 200};           // magenta: nothing else is drawn in it
 inline constexpr Rgb kCurrentLine{90, 80, 20};     // the debugger's source pane: the PC's line
 inline constexpr Rgb kBreakpoint{230, 40, 40};     // its breakpoint dots
+inline constexpr Rgb kSignal{80, 230, 110};         // the Signals pane: a logic pin's trace
+inline constexpr Rgb kSignalFloat{150, 150, 160};   // a pin not driven ('z')
+inline constexpr Rgb kCursorA{250, 200, 60};        // its cursors
+inline constexpr Rgb kCursorB{90, 200, 255};
 }  // namespace colour
 
 // The layout below is logical: kWindowWidth x kWindowHeight. The window may be any size (it is
@@ -96,22 +103,11 @@ Vec2 segment_centre(unsigned digit, unsigned s);
 Vec2 dp_centre(unsigned digit);
 
 // ---- the board: keypad -----------------------------------------------------------------------------
-// The 24 matrix keys and RESET, VECT INTR, as docs/peripherals.md arranges them (front view):
-//   RESET VECT  R    C D E F
-//   REG   MEM   GO   8 9 A B
-//   STEP  PREV  NEXT 4 5 6 7
-//               EXEC 0 1 2 3
-struct PadKey {
-    Button pad = Button::Matrix;  // the board's button (emu/board/key_press.h)
-    periph::Key key = periph::Key::K0;  // for Matrix
-    int row = 0, col = 0;
-};
+// The keypad's buttons (front::pad_keys, in rows and columns) in the window.
 inline constexpr float kKeyX0 = 24, kKeyY0 = 160, kKeyW = 62, kKeyH = 50, kKeyPitchX = 68, kKeyPitchY = 58;
-std::span<const PadKey> pad_keys();  // 26 buttons
 Rect key_rect(const PadKey& k);
 // The button under a point, if any.
 std::optional<PadKey> key_at(float x, float y);
-std::optional<PadKey> find_pad_key(std::string_view name);  // "R", "EXEC", "RESET", "VECT", ...
 
 // ---- the machine tool --------------------------------------------------------------------------------
 inline constexpr Rect kTableRect{528, 8, 660, 440};   // the X-Y table from above
@@ -136,12 +132,19 @@ inline constexpr int kSourceRows = 23;
 Rect source_row(int i);
 std::optional<int> source_row_at(float x, float y);
 
-struct Bounds {
-    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // mm
-    void add(double x, double y);
-    bool empty() const { return x1 < x0; }
-    static Bounds none() { return {1, 1, 0, 0}; }
-};
+// ---- the Signals pane: a logic analyzer over the chosen pins (in the table view's place, or the ----
+// source's with --debug). Time runs left to right over the span chosen; the right end is the
+// machine's present T-state. Each pin has a row: its name left, its trace right.
+inline constexpr Rect kSignalsRect{528, 8, 744, 400};
+inline constexpr float kSignalsTraceX = 624, kSignalsTraceW = 640;  // the span: 624 (its start) to 1264 (now)
+inline constexpr float kSignalsTop = 96, kSignalsRowH = 26;         // the first row's top, the rows' pitch
+inline constexpr float kSignalsHigh = 5, kSignalsLow = 20;          // a row's high and low lines, from its top
+inline constexpr int kSignalsRows = 11;
+// Row i (0 = the first pin) of the trace area, kSignalsTraceW wide.
+Rect signals_row(int i);
+// The x of T-state t in a span of `span` T-states ending at `end`; the T-state at x (the inverse).
+float signals_x(std::uint64_t t, std::uint64_t end, std::uint64_t span);
+double signals_t(float x, std::uint64_t end, std::uint64_t span);
 
 // Millimetres of the table to pixels of kTableRect: the bounds fitted with equal scale on both
 // axes, centred, Y up.

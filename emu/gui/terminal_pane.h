@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "peripherals/serial_terminal.h"
+#include "emu/script/session.h"
 
 namespace alp85::gui {
 

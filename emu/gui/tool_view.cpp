@@ -12,16 +12,15 @@
 namespace alp85::gui {
 namespace {
 
-using Axis = periph::MachineTool::Axis;
-ImVec2 v(Vec2 p) { return {p.x, p.y}; }
+ImVec2 im(Vec2 p) { return {p.x, p.y}; }  // not board_view.cpp's v(): one unit in unity builds
 
 }  // namespace
 
-Bounds table_bounds(const Machine& m, const Toolpath& path) {
-    Bounds b = path.workpiece(m);
-    if (const auto l = path.ideal(m)) b.add(l->from.x, l->from.y), b.add(l->to.x, l->to.y);
+Bounds table_bounds(const ToolView& tool, const Toolpath& path, const script::Session& s) {
+    Bounds b = path.workpiece(s);
+    if (const auto l = path.ideal(s)) b.add(l->from.x, l->from.y), b.add(l->to.x, l->to.y);
     for (const PointMm& p : path.points()) b.add(p.x, p.y);
-    b.add(m.tool().table_mm(Axis::X), m.tool().table_mm(Axis::Y));
+    b.add(tool[Axis::X].mm, tool[Axis::Y].mm);
     return b;
 }
 
@@ -31,9 +30,11 @@ std::optional<float> grid_label_y(float line_y) {
     return y;
 }
 
-TableView table_view(const Machine& m, const Toolpath& path) { return TableView::fit(table_bounds(m, path)); }
+TableView table_view(const ToolView& tool, const Toolpath& path, const script::Session& s) {
+    return TableView::fit(table_bounds(tool, path, s));
+}
 
-void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& path, const TableView& view) {
+void draw_table(ImDrawList* dl, Backdrop& bd, const Toolpath& path, const script::Session& s, const TableView& view) {
     const Rect r = kTableRect;
     bd.fill(r, colour::kTableBed);
     dl->PushClipRect({r.x, r.y}, {r.x + r.w, r.y + r.h}, true);
@@ -50,17 +51,17 @@ void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& 
         dl->AddLine({r.x, p.y}, {r.x + r.w, p.y}, grid);
         if (const auto ly = grid_label_y(p.y)) dl->AddText({r.x + 2, *ly}, label, fmt::format("{:g}", y).c_str());
     }
-    const Bounds w = path.workpiece(m);
+    const Bounds w = path.workpiece(s);
     const Vec2 w0 = view.to_px(w.x0, w.y1), w1 = view.to_px(w.x1, w.y0);
     bd.fill_clipped({w0.x, w0.y, w1.x - w0.x, w1.y - w0.y}, r, colour::kWorkpieceFill);
-    dl->AddRect(v(w0), v(w1), to_imu32(colour::kWorkpiece), 0, 0, 2);
+    dl->AddRect(im(w0), im(w1), to_imu32(colour::kWorkpiece), 0, 0, 2);
     dl->AddText({w0.x + 4, w0.y + 2}, IM_COL32(230, 210, 170, 255), "workpiece");
     dl->PopClipRect();
     // The title fits the view (the Z gauge starts where the table ends); F1 tells the mouse's zoom and pan.
     dl->AddText({r.x + 6, r.y + 4}, IM_COL32(230, 230, 230, 255), kTableTitle);
 }
 
-void draw_toolpath(ImDrawList* dl, const Machine& m, const Toolpath& path, const TableView& view) {
+void draw_toolpath(ImDrawList* dl, const ToolView& tool, const Toolpath& path, const script::Session& s, const TableView& view) {
     const Rect r = kTableRect;
     dl->PushClipRect({r.x, r.y}, {r.x + r.w, r.y + r.h}, true);
     const auto& pts = path.points();
@@ -72,25 +73,25 @@ void draw_toolpath(ImDrawList* dl, const Machine& m, const Toolpath& path, const
         for (std::size_t i = 1; i < pts.size(); ++i) {
             if (i + 1 < pts.size() && std::hypot(pts[i].x - last_mm.x, pts[i].y - last_mm.y) < step_mm) continue;
             const Vec2 p = view.to_px(pts[i].x, pts[i].y);
-            dl->AddLine(v(last), v(p), to_imu32(colour::kToolpath), 2);
+            dl->AddLine(im(last), im(p), to_imu32(colour::kToolpath), 2);
             last = p, last_mm = pts[i];
         }
     }
-    if (const auto l = path.ideal(m)) {
+    if (const auto l = path.ideal(s)) {
         const ImU32 c = to_imu32(colour::kIdealLine, l->started ? 255 : 140);
-        dl->AddLine(v(view.to_px(l->from.x, l->from.y)), v(view.to_px(l->to.x, l->to.y)), c, 1.0f);
-        dl->AddCircle(v(view.to_px(l->to.x, l->to.y)), 4, c);
+        dl->AddLine(im(view.to_px(l->from.x, l->from.y)), im(view.to_px(l->to.x, l->to.y)), c, 1.0f);
+        dl->AddCircle(im(view.to_px(l->to.x, l->to.y)), 4, c);
     }
-    const Vec2 tool = view.to_px(m.tool().table_mm(Axis::X), m.tool().table_mm(Axis::Y));
-    dl->AddCircle(v(tool), kToolRadius + 1.5f, IM_COL32(0, 0, 0, 255), 20, 2);
-    dl->AddCircleFilled(v(tool), kToolRadius, to_imu32(colour::kTool), 20);
+    const Vec2 at = view.to_px(tool[Axis::X].mm, tool[Axis::Y].mm);
+    dl->AddCircle(im(at), kToolRadius + 1.5f, IM_COL32(0, 0, 0, 255), 20, 2);
+    dl->AddCircleFilled(im(at), kToolRadius, to_imu32(colour::kTool), 20);
     dl->PopClipRect();
 }
 
-void draw_z_gauge(ImDrawList* dl, Backdrop& bd, const Machine& m) {
+void draw_z_gauge(ImDrawList* dl, Backdrop& bd, const ToolView& tool) {
     const Rect r = kZGaugeRect;
-    const double travel = m.tool().params().axes[2].table.travel_mm;
-    const double z = m.tool().table_mm(Axis::Z);
+    const double travel = tool[Axis::Z].travel_mm;
+    const double z = tool[Axis::Z].mm;
     dl->AddText({r.x + 4, r.y - 20}, IM_COL32(230, 230, 230, 255), "Z (mm)");
     bd.fill({r.x + 18, r.y, 24, r.h}, colour::kTableBed);
     const float frac = static_cast<float>(std::clamp(z / travel, 0.0, 1.0));
@@ -104,34 +105,21 @@ void draw_z_gauge(ImDrawList* dl, Backdrop& bd, const Machine& m) {
     dl->AddText({r.x, r.y + r.h + 4}, IM_COL32(230, 230, 230, 255), fmt::format("{:.2f}", z).c_str());
 }
 
-void draw_travel_strip(ImDrawList* dl, Backdrop& bd, const Machine& m) {
+void draw_travel_strip(ImDrawList* dl, Backdrop& bd, const ToolView& tool) {
     const Rect r = kStripRect;
-    const double tx = m.tool().params().axes[0].table.travel_mm, ty = m.tool().params().axes[1].table.travel_mm;
+    const double tx = tool[Axis::X].travel_mm, ty = tool[Axis::Y].travel_mm;
     const float h = r.h - 18, w = std::min(r.w, static_cast<float>(h * tx / ty));
     dl->AddText({r.x, r.y}, IM_COL32(230, 230, 230, 255),
                 fmt::format("whole travel: X {:g} mm, Y {:g} mm", tx, ty).c_str());
     const float x0 = r.x, y0 = r.y + 16;
     bd.fill({x0, y0, w, h}, colour::kTableBed);
     // Whole pixels: a dot moving by less than one does not repaint the strip.
-    const float px = std::round(x0 + static_cast<float>(std::clamp(m.tool().table_mm(Axis::X) / tx, 0.0, 1.0)) * w);
-    const float py = std::round(y0 + h - static_cast<float>(std::clamp(m.tool().table_mm(Axis::Y) / ty, 0.0, 1.0)) * h);
+    const float px = std::round(x0 + static_cast<float>(std::clamp(tool[Axis::X].mm / tx, 0.0, 1.0)) * w);
+    const float py = std::round(y0 + h - static_cast<float>(std::clamp(tool[Axis::Y].mm / ty, 0.0, 1.0)) * h);
     dl->AddCircleFilled({px, py}, 4, to_imu32(colour::kTool), 12);
 }
 
-AxesReadout read_axes(const Machine& m) {
-    AxesReadout r;
-    const auto& tool = m.tool();
-    for (int a = 0; a < 3; ++a) {
-        const auto axis = static_cast<Axis>(a);
-        r[static_cast<std::size_t>(a)] = {tool.table_mm(axis),         tool.table_steps(axis),
-                                          tool.rotor_angle_deg(axis),  tool.commanded_steps(axis),
-                                          tool.transducer_count(axis), tool.lost_steps(axis),
-                                          tool.end_stop(axis).at,      tool.phase_pattern(axis)};
-    }
-    return r;
-}
-
-std::optional<periph::MachineTool::MotorModel> axes_panel(const AxesReadout& axes, periph::MachineTool::MotorModel motor) {
+std::optional<MotorModel> axes_panel(const ToolView& axes, MotorModel motor) {
     const Rect r = kAxesRect;
     ImGui::SetNextWindowPos({r.x, r.y});
     ImGui::SetNextWindowSize({r.w, r.h});
@@ -147,7 +135,7 @@ std::optional<periph::MachineTool::MotorModel> axes_panel(const AxesReadout& axe
         }
         ImGui::TableHeadersRow();
         for (int a = 0; a < 3; ++a) {
-            const AxisReadout& x = axes[static_cast<std::size_t>(a)];
+            const AxisView& x = axes.axes[static_cast<std::size_t>(a)];
             ImGui::TableNextRow();
             ImGui::TableNextColumn(); ImGui::TextUnformatted(a == 0 ? "X" : a == 1 ? "Y" : "Z");
             ImGui::TableNextColumn(); ImGui::Text("%.3f", x.mm);
@@ -170,13 +158,13 @@ std::optional<periph::MachineTool::MotorModel> axes_panel(const AxesReadout& axe
         }
         ImGui::EndTable();
     }
-    std::optional<periph::MachineTool::MotorModel> pick;
-    int model = motor == periph::MachineTool::MotorModel::Ideal ? 0 : 1;
+    std::optional<MotorModel> pick;
+    int model = motor == MotorModel::Ideal ? 0 : 1;
     ImGui::TextUnformatted("Motors:");
     ImGui::SameLine();
-    if (ImGui::RadioButton("ideal (1.8 deg per pulse)", &model, 0)) pick = periph::MachineTool::MotorModel::Ideal;
+    if (ImGui::RadioButton("ideal (1.8 deg per pulse)", &model, 0)) pick = MotorModel::Ideal;
     ImGui::SameLine();
-    if (ImGui::RadioButton("physical (currents, inertia)", &model, 1)) pick = periph::MachineTool::MotorModel::Physical;
+    if (ImGui::RadioButton("physical (currents, inertia)", &model, 1)) pick = MotorModel::Physical;
     ImGui::End();
     return pick;
 }

@@ -14,33 +14,26 @@
 
 #include <imgui.h>
 
-#include "emu/board/machine.h"
 #include "emu/gui/backdrop.h"
-#include "emu/gui/toolpath.h"
+#include "emu/front/toolpath.h"
+#include "emu/front/views.h"
+#include "emu/gui/layout.h"
 
 namespace alp85::gui {
 
 // What the table view fits: the workpiece, the ideal line, the toolpath and the tool.
-Bounds table_bounds(const Machine& m, const Toolpath& path);
-TableView table_view(const Machine& m, const Toolpath& path);
+Bounds table_bounds(const ToolView& tool, const Toolpath& path, const script::Session& s);
+TableView table_view(const ToolView& tool, const Toolpath& path, const script::Session& s);
 // The table: bed, mm grid, workpiece (changes only when the view does).
-void draw_table(ImDrawList* dl, Backdrop& bd, const Machine& m, const Toolpath& path, const TableView& view);
+void draw_table(ImDrawList* dl, Backdrop& bd, const Toolpath& path, const script::Session& s, const TableView& view);
 // Over it, in a window of its own (what moves): the toolpath, the ideal line, the tool.
-void draw_toolpath(ImDrawList* dl, const Machine& m, const Toolpath& path, const TableView& view);
-void draw_z_gauge(ImDrawList* dl, Backdrop& bd, const Machine& m);
-void draw_travel_strip(ImDrawList* dl, Backdrop& bd, const Machine& m);
-// What the axis panel shows, read from the tool. The app reads it 15 times a second (a readout
-// changing at 60 Hz cannot be read, and would repaint its panel every frame).
-struct AxisReadout {
-    double mm = 0, steps = 0, rotor_deg = 0;
-    std::int64_t commanded = 0, count = 0, lost = 0;
-    std::int8_t end_stop = 0;
-    std::uint8_t phases = 0;
-};
-using AxesReadout = std::array<AxisReadout, 3>;
-AxesReadout read_axes(const Machine& m);
-// An ImGui window at kAxesRect. Returns the motor model the user picked, if changed.
-std::optional<periph::MachineTool::MotorModel> axes_panel(const AxesReadout& axes, periph::MachineTool::MotorModel model);
+void draw_toolpath(ImDrawList* dl, const ToolView& tool, const Toolpath& path, const script::Session& s, const TableView& view);
+void draw_z_gauge(ImDrawList* dl, Backdrop& bd, const ToolView& tool);
+void draw_travel_strip(ImDrawList* dl, Backdrop& bd, const ToolView& tool);
+// An ImGui window at kAxesRect: the axes of a view of the tool (front::tool_view; the app takes one
+// 15 times a second: a readout changing at 60 Hz cannot be read, and would repaint its panel every
+// frame). Returns the motor model the user picked, if changed.
+std::optional<MotorModel> axes_panel(const ToolView& axes, MotorModel model);
 
 inline constexpr float kToolRadius = 7;
 // The title's band at the top of the table view (the title is drawn at 4 px, 13 px of text):

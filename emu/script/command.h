@@ -10,6 +10,7 @@
 
 #include "emu/board/key_press.h"
 #include "emu/core/cpu_registers.h"
+#include "emu/debug/expr.h"
 #include "peripherals/keypad.h"
 
 namespace alp85::script {
@@ -20,12 +21,15 @@ struct Location {
     int col = 0;
 };
 
-// NUMBER, or SYMBOL with an optional +/- NUMBER. Resolved against the session's symbols.
+// A NUMBER, or an expression of the debugger's grammar (debug::Expr: SYMBOL, SYMBOL+N,
+// (X1 + 1)*2, word[YAC], ...), resolved against the session's symbols when the command runs.
 struct Value {
-    std::string symbol;  // upper case; empty for a plain number
-    std::int64_t number = 0;
+    std::string symbol;  // SYMBOL or SYMBOL+-N: the symbol, upper case (N in number); else empty
+    std::int64_t number = 0;  // a number's value, or a constant expression's
     int col = 0;
     std::string text;    // as written, for messages
+    bool expression = false;  // reads a name, a register or memory: evaluated when the command runs
+    std::vector<debug::Expr::Name> names = {};  // what it reads, for the check before the run (columns in text)
 };
 
 // A key as the script names it: the board's button (emu/board/key_press.h schedules it).

@@ -6,6 +6,17 @@ namespace alp85::script {
 
 DebugShell::DebugShell(SessionOptions options) : session_(std::move(options)), console_(session_.debugger()) {
     console_.set_fallback([this](std::string_view line, std::string& out) { return run_script_line(line, out); });
+    // The script's commands join the console's in its one list (help, completion).
+    std::vector<debug::Console::CommandDef> script;
+    for (const CommandInfo& c : commands()) {
+        debug::Console::CommandDef d;
+        d.name = c.name;
+        d.help = c.help;
+        d.forms = c.forms;
+        d.takes_file = c.takes_file;
+        script.push_back(std::move(d));
+    }
+    console_.add_commands(script);
 }
 
 bool DebugShell::run_script_line(std::string_view line, std::string& out) {

@@ -39,26 +39,52 @@ public:
         c.line = std::string(line_);
         const std::string verb = to_upper(tokens_[0].text);
         pos_ = 1;
-        static const std::map<std::string, std::function<bool(LineParser&, Command&)>> verbs = {
-            {"LOAD", &LineParser::load},       {"MONITOR", &LineParser::monitor},
-            {"RESET", &LineParser::reset},     {"PRESS", &LineParser::press},
-            {"TYPE", &LineParser::type},       {"KEYDOWN", &LineParser::keydown},
-            {"KEYUP", &LineParser::keyup},     {"RUN", &LineParser::run},
-            {"WAIT", &LineParser::wait},       {"STEP", &LineParser::step},
-            {"BREAK", &LineParser::brk},       {"DELETE", &LineParser::del},
-            {"EXPECT", &LineParser::expect},   {"SET", &LineParser::set},
-            {"SAVE", &LineParser::save},       {"RESTORE", &LineParser::restore},
-            {"PRINT", &LineParser::print},     {"FIRMWARE", &LineParser::firmware},
-            {"MOTOR", &LineParser::motor},     {"RECORD", &LineParser::record},
-            {"PLOT", &LineParser::plot},       {"FEEDBACK", &LineParser::feedback},
-            {"MARK", &LineParser::mark},       {"OPTION", &LineParser::option},
-            {"NEW", &LineParser::new_workpiece},
-        };
-        const auto it = verbs.find(verb);
-        if (it == verbs.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
-        if (!it->second(*this, c)) return std::nullopt;
+        const auto& table = verbs();
+        const auto it = std::find_if(table.begin(), table.end(), [&](const Verb& v) { return to_upper(v.info.name) == verb; });
+        if (it == table.end()) return fail(tokens_[0], fmt::format("unknown command '{}'", tokens_[0].text));
+        if (!(this->*(it->parse))(c)) return std::nullopt;
         if (pos_ < tokens_.size()) return fail(tokens_[pos_], fmt::format("unexpected '{}'", tokens_[pos_].text));
         return c;
+    }
+
+    // The language's commands: one row each, what the line parser runs and what help, completion
+    // and the docs list (script::commands()).
+    struct Verb {
+        CommandInfo info;
+        bool (LineParser::*parse)(Command&);
+    };
+    static const std::vector<Verb>& verbs() {
+        using F = std::vector<std::string_view>;
+        static const std::vector<Verb> table = {
+            {{"load", "load FILE [at ADDR]: an .asm (assembled, its symbols and lines kept), .hex or .bin (at ADDR) image", {}, true}, &LineParser::load},
+            {{"monitor", "monitor: the ALP 85 monitor ROM at 0000H and its symbols", {}, false}, &LineParser::monitor},
+            {{"firmware", "firmware NAME: built-in firmware with its symbols and lines (thesis, thesis-fixed, master, monitor)", {}, false}, &LineParser::firmware},
+            {{"reset", "reset: RESET IN now (CPU, 8155, 8279); expect time counts from here", {}, false}, &LineParser::reset},
+            {{"press", "press KEY [hold TIME] [gap TIME]: a key pressed, held (30ms), released, then the gap (30ms) run", {}, false}, &LineParser::press},
+            {{"type", "type KEY...: each key pressed in turn (type R 7 0800 EXEC)", {}, false}, &LineParser::type},
+            {{"keydown", "keydown KEY: a key down now, without running", {}, false}, &LineParser::keydown},
+            {{"keyup", "keyup KEY: a key up now, without running", {}, false}, &LineParser::keyup},
+            {{"run", "run TIME | run until ADDR [timeout TIME] | run until axis X|Y|Z steps [OP] N [timeout TIME]: run for TIME, or until the PC reaches ADDR (passing breakpoints) or the axis its position", F{"UNTIL"}, false}, &LineParser::run},
+            {{"wait", "wait display \"TEXT\" [timeout TIME]: run until the display reads TEXT (5s)", {}, false}, &LineParser::wait},
+            {{"step", "step [N]: N instructions", {}, false}, &LineParser::step},
+            {{"break", "break ADDR: a breakpoint (the debugger's break is taken at its prompt)", {}, false}, &LineParser::brk},
+            {{"delete", "delete ADDR|all: breakpoints (the debugger's delete is taken at its prompt)", {}, false}, &LineParser::del},
+            {{"expect", "expect display|mem|word|reg|flag|port|symbol|time|halted|running|axis|count|lost ...: fails unless the machine shows it (docs/scripting.md)",
+              F{"DISPLAY", "MEM", "WORD", "REG", "FLAG", "PORT", "SYMBOL", "TIME", "HALTED", "RUNNING", "AXIS", "COUNT", "LOST"}, false}, &LineParser::expect},
+            {{"set", "set mem ADDR VALUE... | set reg REG VALUE: memory or a register", F{"MEM", "REG"}, false}, &LineParser::set},
+            {{"save", "save FILE: a snapshot of the whole machine", {}, true}, &LineParser::save},
+            {{"restore", "restore FILE: the machine as a snapshot holds it", {}, true}, &LineParser::restore},
+            {{"print", "print display [text] | print axes | print time | print \"TEXT\"...: the display, the tool's axes, the time, a message",
+              F{"\"", "DISPLAY", "AXES", "TIME"}, false}, &LineParser::print},
+            {{"motor", "motor ideal|physical: the stepper motors' model from now on", {}, false}, &LineParser::motor},
+            {{"feedback", "feedback scale|commanded: what the transducers read from now on", {}, false}, &LineParser::feedback},
+            {{"new", "new workpiece: every table wound back to its power-on position", {}, false}, &LineParser::new_workpiece},
+            {{"mark", "mark: the time print time also counts from", {}, false}, &LineParser::mark},
+            {{"option", "option expansion on|off: the 4 KB expansion EPROM at 3000H", {}, false}, &LineParser::option},
+            {{"record", "record FILE.csv [every TIME] | record signals FILE.vcd [PIN...] [every TIME] | record stop: the tool or the pins", {}, true}, &LineParser::record},
+            {{"plot", "plot toolpath|time FILE.svg|FILE.png [from X,Y to X,Y]: what record FILE.csv recorded", {}, true}, &LineParser::plot},
+        };
+        return table;
     }
 
 private:
@@ -95,8 +121,14 @@ private:
                     return false;
                 }
             } else {
-                while (i < line_.size() && !std::isspace(static_cast<unsigned char>(line_[i])) && line_[i] != '"')
+                // A word; blanks inside parentheses or brackets belong to it: (X1 + 1) is one value.
+                int depth = 0;
+                while (i < line_.size() && line_[i] != '"' &&
+                       (depth > 0 || !std::isspace(static_cast<unsigned char>(line_[i])))) {
+                    if (line_[i] == '(' || line_[i] == '[') ++depth;
+                    else if ((line_[i] == ')' || line_[i] == ']') && depth > 0) --depth;
                     t.text += line_[i++];
+                }
             }
             tokens_.push_back(std::move(t));
         }
@@ -550,7 +582,7 @@ private:
             ++pos_;
             Value v;
             if (!value(v, "0 or 1")) return false;
-            if (!v.symbol.empty() || (v.number != 0 && v.number != 1))
+            if (v.expression || (v.number != 0 && v.number != 1))
                 return error(v.col, "a flag is 0 or 1"), false;
             c.values.push_back(v);
             return true;
@@ -668,6 +700,15 @@ private:
 };
 
 }  // namespace
+
+const std::vector<CommandInfo>& commands() {
+    static const std::vector<CommandInfo> list = [] {
+        std::vector<CommandInfo> out;
+        for (const auto& v : LineParser::verbs()) out.push_back(v.info);
+        return out;
+    }();
+    return list;
+}
 
 std::string ParseError::format() const {
     if (where.line == 0) return fmt::format("{}: error: {}\n", where.file, message);  // the whole file
@@ -793,40 +834,48 @@ std::optional<Value> parse_value(std::string_view text, std::string_view what, b
     v.col = 1;
     v.text = std::string(text);
     error_col = 1;
-    // SYMBOL[(+|-)NUMBER] or NUMBER
-    const std::string s(text);
-    const std::size_t split = s.empty() ? std::string::npos : s.find_first_of("+-", 1);
-    const std::string head = s.substr(0, split);
-    std::int64_t offset = 0;
-    if (split != std::string::npos) {
-        const auto n = parse_number(std::string_view(s).substr(split + 1));
-        if (!n) {
-            error_col = static_cast<int>(split) + 2;
-            error = fmt::format("bad number '{}'", s.substr(split + 1));
-            return std::nullopt;
-        }
-        offset = s[split] == '-' ? -*n : *n;
-    }
-    if (!head.empty() && std::isdigit(static_cast<unsigned char>(head[0]))) {
+    // A word of letters and digits that begins with a digit is a number.
+    if (!text.empty() && std::isdigit(static_cast<unsigned char>(text[0])) &&
+        std::all_of(text.begin(), text.end(), [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)); })) {
         if (address) {
-            if (std::string why = ambiguous_address(head); !why.empty()) {
+            if (std::string why = ambiguous_address(text); !why.empty()) {
                 error = std::move(why);
                 return std::nullopt;
             }
         }
-        const auto n = parse_number(head);
+        const auto n = parse_number(text);
         if (!n) {
-            error = fmt::format("bad number '{}'", head);
+            error = fmt::format("bad number '{}'", text);
             return std::nullopt;
         }
-        v.number = *n + offset;
-    } else if (!head.empty() && (std::isalpha(static_cast<unsigned char>(head[0])) || head[0] == '_' ||
-                                 head[0] == '?' || head[0] == '@' || head[0] == '.')) {
-        v.symbol = to_upper(head);
-        v.number = offset;
-    } else {
-        error = fmt::format("expected {}, found '{}'", what, s);
+        v.number = *n;
+        return v;
+    }
+    // Anything else is the debugger's expression (debug::Expr), a bare name a symbol first.
+    debug::ExprError why;
+    const auto shape = debug::Expr::shape(text, why);
+    if (!shape) {
+        error_col = std::max(why.col, 1);
+        error = why.col <= 1 && !text.empty() && why.message.starts_with("unexpected")
+                    ? fmt::format("expected {}, found '{}'", what, text)
+                    : why.message;
         return std::nullopt;
+    }
+    if (shape->constant) {
+        v.number = *shape->constant;
+        return v;
+    }
+    v.expression = true;
+    v.names = shape->names;
+    // SYMBOL+-N, the form scripts have always written: its parts name it in messages.
+    const std::size_t split = text.find_first_of("+-", 1);
+    const std::string_view head = text.substr(0, split);
+    if (shape->names.size() == 1 && shape->names[0].col == 1 && shape->names[0].name.size() == head.size()) {
+        const auto n = split == std::string_view::npos ? std::optional<std::int64_t>(0) : parse_number(text.substr(split + 1));
+        if (n) {
+            v.symbol = shape->names[0].name;
+            v.number = split != std::string_view::npos && text[split] == '-' ? -*n : *n;
+        }
     }
     return v;
 }

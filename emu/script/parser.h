@@ -23,6 +23,18 @@ std::string place_of(const Command& c);
 // The same chain alone, each " (included from FILE:LINE)": appended to a message about the line.
 std::string included_from(const Command& c);
 
+// A command of the language, as the debugger's help and completion list it and docs/scripting.md
+// documents it (tests/scripts/command_table_test.cpp holds the docs to this list).
+struct CommandInfo {
+    std::string_view name;  // as written, lower case
+    std::string_view help;  // "usage: what it does"
+    // Where the debugger has a command of the same name (run, expect, set, print), the words after
+    // the name that make a line this one's ("\"": a quoted string); empty: the debugger's takes it.
+    std::vector<std::string_view> forms;
+    bool takes_file = false;  // names a file: completion offers file names after it
+};
+const std::vector<CommandInfo>& commands();
+
 // One line. An empty or comment-only line gives nullopt and no error.
 std::optional<Command> parse_line(std::string_view line, const std::string& file, int line_no,
                                   std::vector<ParseError>& errors);
@@ -40,8 +52,10 @@ std::optional<std::uint64_t> parse_time(std::string_view text);      // 3070t, 2
 // image (0800 = 0320H, inside the monitor). Returns the error message with the hint to write
 // 0800H, or an empty string when `text` is not such a number.
 std::string ambiguous_address(std::string_view text);
-// NUMBER or SYMBOL[(+|-)NUMBER], `what` naming it in messages; with `address`, the leading-zero
-// rule above. On error: nullopt, the message, and its 1-based column within `text`.
+// A NUMBER, or any other value as a debug::Expr (SYMBOL, SYMBOL+N, (X1 + 1)*2; a bare name a
+// symbol first), `what` naming it in messages; with `address`, the leading-zero rule above. An
+// expression that reads nothing (2*3) is a number. On error: nullopt, the message, and its 1-based
+// column within `text`.
 std::optional<Value> parse_value(std::string_view text, std::string_view what, bool address, std::string& error,
                                  int& error_col);
 std::optional<KeyRef> parse_key(std::string_view text);

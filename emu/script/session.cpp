@@ -94,32 +94,53 @@ std::filesystem::path Session::resolve_output(const std::string& path) const {
 }
 
 std::optional<std::int64_t> Session::resolve(const Value& v, std::string& error) const {
-    if (v.symbol.empty()) return v.number;
-    const auto value = debugger_.program().value_of(v.symbol);
-    if (!value) {
-        error = fmt::format("unknown symbol '{}'", v.symbol);
+    if (!v.expression) return v.number;
+    // The debugger's expression, against the symbols and the machine of now.
+    debug::ExprError why;
+    const auto e = debug::Expr::parse(v.text, debugger_.program(), why, debug::Expr::Names::SymbolsFirst);
+    if (!e) {
+        error = why.message;
         return std::nullopt;
     }
-    // A symbol moved by its offset stays a 16-bit value: AUS-70000 is no address (it would wrap to F438H).
-    const std::int64_t sum = *value + v.number;
+    std::int64_t sum = 0;
+    try {
+        sum = e->eval(*machine_);
+    } catch (const debug::ExprError& x) {
+        error = fmt::format("{}: {}", v.text, x.message);
+        return std::nullopt;
+    }
+    // A value stays a 16-bit one: AUS-70000 is no address (it would wrap to F438H).
     if (sum < 0 || sum > 0xFFFF) {
-        error = fmt::format("{} is {:04X}H {} {} = {}, outside 0000H-0FFFFH", v.text, *value, v.number < 0 ? '-' : '+',
-                            v.number < 0 ? -v.number : v.number, sum);
+        const auto symbol = v.symbol.empty() ? std::nullopt : debugger_.program().value_of(v.symbol);
+        error = symbol ? fmt::format("{} is {:04X}H {} {} = {}, outside 0000H-0FFFFH", v.text, *symbol, v.number < 0 ? '-' : '+',
+                                     v.number < 0 ? -v.number : v.number, sum)
+                       : fmt::format("{} is {}, outside 0000H-0FFFFH", v.text, sum);
         return std::nullopt;
     }
     return sum;
 }
 
-Session::Outcome Session::fail(const Command& c, std::string what) const {
-    if (c.where.line == 0) return {Status::Failed, std::move(what)};  // a front end's typed call: no script line
-    return {Status::Failed, fmt::format("{}: {}\n  {}\n  {}", place_of(c), rtrim(c.line), what, where_now())};
+Session::Outcome Session::fail_at(const Command* c, std::string what) const {
+    if (!c || c->where.line == 0) return {Status::Failed, std::move(what)};  // a front end's typed call: no script line
+    return {Status::Failed, fmt::format("{}: {}\n  {}\n  {}", place_of(*c), rtrim(c->line), what, where_now())};
 }
 
-Session::Outcome Session::fail_expect(const Command& c, const std::string& expected, const std::string& actual) const {
+debug::Origin Session::origin() const {
+    if (!line_) return {"(front end)", 0};
+    return {line_->where.file, line_->where.line};
+}
+
+Session::Outcome Session::fail_expect(const std::string& expected, const std::string& actual) const {
     debugger_.emit({debug::Event::Kind::ExpectFailed, debugger_.here(debug::StopReason::Condition),
-                    fmt::format("expected: {}; actual: {}", expected, actual), origin(c)});
+                    fmt::format("expected: {}; actual: {}", expected, actual), origin()});
+    if (!line_) return {Status::Failed, fmt::format("expectation failed: expected: {}; actual: {}", expected, actual)};
     return {Status::Failed, fmt::format("{}: expectation failed: {}\n  expected: {}\n  actual:   {}\n  {}",
-                                        place_of(c), rtrim(c.line), expected, actual, where_now())};
+                                        place_of(*line_), rtrim(line_->line), expected, actual, where_now())};
+}
+
+Session::Outcome Session::ran(Outcome o) {
+    if (debugger_.take_time_limit_hit()) return fail(debugger_.time_limit_message());
+    return o;
 }
 
 void Session::add_input(const std::filesystem::path& path, std::string role) {
@@ -169,8 +190,11 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
         return p == std::string::npos ? c.where.col : static_cast<int>(p) + 1;
     };
     auto check_value = [&](const Command& c, const Value& v, std::int64_t lo, std::int64_t hi, const char* what) {
-        if (!v.symbol.empty()) {
-            if (!known.count(v.symbol)) err(c, v.col, fmt::format("unknown symbol '{}' (no source loaded before this line defines it)", v.symbol));
+        if (v.expression) {  // each name a symbol loaded before this line, or a register or flag
+            for (const debug::Expr::Name& n : v.names)
+                if (!known.count(n.name) && (n.symbol_only || !n.machine))
+                    err(c, v.col + n.col - 1,
+                        fmt::format("unknown symbol '{}' (no source loaded before this line defines it)", n.name));
             return;
         }
         if (v.number < lo || v.number > hi) err(c, v.col, fmt::format("{} {} is out of range ({}..{})", what, v.text, lo, hi));
@@ -193,11 +217,11 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 try {
                     LoadOptions lo;
                     if (c.address)  // a number is checked where it goes; a symbol's address is known at run time
-                        lo.address = c.address->symbol.empty() && c.address->number >= 0 && c.address->number <= 0xFFFF
+                        lo.address = !c.address->expression && c.address->number >= 0 && c.address->number <= 0xFFFF
                                          ? static_cast<std::uint16_t>(c.address->number)
                                          : std::uint16_t{0};
                     LoadedImage img = read_image(path, lo);
-                    if (!c.address || c.address->symbol.empty()) check_board_regions(img, path);
+                    if (!c.address || !c.address->expression) check_board_regions(img, path);
                     for (const std::string& w : img.warnings)
                         if (std::find(warnings_.begin(), warnings_.end(), w) == warnings_.end()) warnings_.push_back(w);
                     for (const auto& s : img.symbols) known.insert(s.name);
@@ -287,18 +311,93 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 err(c, col_of(c, c.text), why);
 }
 
-Session::Outcome Session::load(const Command& c) {
-    const auto path = resolve(c.text);
+// ---- the typed API: each call does its work; a script line reaches it through execute() -------
+
+void Session::placed(const std::vector<ImageSegment>& segments) {
+    if (!report_) return;
+    for (const ImageSegment& s : segments)
+        for (std::size_t i = 0; i < s.bytes.size(); ++i) report_->code.set((s.address + i) & 0xFFFF);
+}
+
+Session::Outcome Session::boot(const Boot& b, BootReport* report) {
+    if (report) {
+        *report = {};
+        for (const board::MemoryRegion& r : machine_->memory_map())
+            if (r.kind == board::MemoryKind::Ram)
+                for (unsigned a = r.base; a < r.base + r.size; ++a) report->code.set(a);
+    }
+    report_ = report;
+    const Outcome o = boot_steps(b);
+    report_ = nullptr;
+    return o;
+}
+
+Session::Outcome Session::boot_steps(const Boot& b) {
+    if (b.motor)
+        if (Outcome o = set_motor(*b.motor); o.status != Status::Ok) return o;
+    if (b.monitor)
+        if (Outcome o = load_monitor(); o.status != Status::Ok) return o;
+    std::optional<std::uint16_t> start;  // where a board without the monitor starts
+    for (const std::string& f : b.firmware) {
+        if (Outcome o = load_firmware(f); o.status != Status::Ok) return o;
+        if (const auto fw = firmware::find(f); fw && !fw->segments.empty()) start = fw->segments.front().address;
+    }
+    for (const Boot::Image& i : b.images) {
+        if (Outcome o = load_image(i.path, i.address, b.defines); o.status != Status::Ok) return o;
+        if (last_start_) start = last_start_;
+    }
+    for (const std::filesystem::path& m : b.maps) {
+        const auto map = resolve(m.string());
+        add_input(map, "a program's map");
+        if (std::string why = debugger_.program().load_map_file(map.string()); !why.empty()) return {Status::Failed, std::move(why)};
+    }
+    if (!b.reset) return {};
+    if (Outcome o = reset(); o.status != Status::Ok) return o;
+    if (b.pc_at_program && start) machine_->cpu().regs().pc = *start;
+    std::uint64_t t = machine_->now() + b.boot_time;
+    for (const KeyRef& k : b.keys) {
+        key(k.kind, k.key, true, t);
+        key(k.kind, k.key, false, t + kKeyHold);
+        t += kKeyHold + kKeyGap;
+    }
+    return {};
+}
+
+Session::Outcome Session::load_monitor() {
+    const Changed changed{debugger_};
+    if (!options_.monitor_rom) return fail("this alp85 was built without the monitor ROM");
+    const firmware::Firmware rom = options_.monitor_rom();
+    machine_->load(rom.segments);
+    debugger_.program().add_table(rom.symbols);
+    placed(rom.segments);
+    return {};
+}
+
+Session::Outcome Session::load_firmware(const std::string& name) {
+    const Changed changed{debugger_};
+    const auto fw = firmware::find(name);
+    if (!fw) return fail(fmt::format("no firmware '{}' in this alp85", name));
+    if (fw->expansion_eprom) machine_->set_expansion_eprom(true);  // the EPROM it is in goes in with it
+    machine_->load(fw->segments);
+    debugger_.program().add_table(fw->symbols);
+    placed(fw->segments);
+    return {};
+}
+
+Session::Outcome Session::load_image(const std::filesystem::path& file, std::optional<std::uint16_t> address) {
+    return load_image(file, address, {});
+}
+
+Session::Outcome Session::load_image(const std::filesystem::path& file, std::optional<std::uint16_t> address,
+                                     const std::vector<std::pair<std::string, std::string>>& defines) {
+    const Changed changed{debugger_};
+    const auto path = resolve(file.string());
     try {
         LoadOptions lo;
-        if (c.address) {
-            std::string e;
-            const auto a = resolve(*c.address, e);
-            if (!a) return fail(c, e);
-            lo.address = static_cast<std::uint16_t>(*a);
-        }
+        lo.address = address;
+        lo.assembler.defines = defines;
         const auto cached = assembled_.find(path.string());
-        LoadedImage img = cached != assembled_.end() && !lo.address ? cached->second : read_image(path, lo);
+        LoadedImage img = cached != assembled_.end() && !lo.address && defines.empty() ? cached->second : read_image(path, lo);
         check_board_regions(img, path);
         machine_->load(img.segments);
         add_input(path, "a program the session loaded");
@@ -306,17 +405,80 @@ Session::Outcome Session::load(const Command& c) {
             debugger_.program().add_assembly(*img.assembly);
         else
             for (const auto& s : img.symbols) debugger_.program().add(s.name, s.value, asm85::kind_name(s.kind));
+        placed(img.segments);
+        last_start_ = img.start;
+        if (!img.start && !img.segments.empty()) last_start_ = img.segments.front().address;
+        if (report_) report_->warnings.insert(report_->warnings.end(), img.warnings.begin(), img.warnings.end());
     } catch (const LoadError& e) {
-        return fail(c, e.what());
+        return fail(e.what());
     } catch (const std::out_of_range& e) {
-        return fail(c, fmt::format("{}: {}", path.string(), e.what()));
+        return fail(fmt::format("{}: {}", path.string(), e.what()));
     }
     return {};
 }
 
+Session::Outcome Session::reset() {
+    const Changed changed{debugger_};
+    machine_->reset();
+    time_origin_ = machine_->now();
+    return {};
+}
+
+Session::Outcome Session::save(const std::filesystem::path& file) {
+    const auto path = resolve_output(file.string());
+    if (const std::string why = output_problem(path, "save"); !why.empty()) return fail(why);
+    try {
+        machine_->save_snapshot(path);
+    } catch (const snapshot::SnapshotError& x) {
+        return fail(x.what());
+    }
+    written_.push_back(path.string());
+    return {};
+}
+
+Session::Outcome Session::restore(const std::filesystem::path& file) {
+    const Changed changed{debugger_, true};
+    const auto path = resolve_output(file.string());
+    try {
+        machine_->load_snapshot(path);
+    } catch (const snapshot::SnapshotError& x) {
+        return fail(x.what());
+    }
+    add_input(path, "a snapshot the session restored");
+    return {};
+}
+
+void Session::key(Button button, periph::Key k, bool down, std::optional<std::uint64_t> at) {
+    Machine& m = *machine_;
+    schedule_key(m, button, k, down, at.value_or(m.now()));
+    if (button == Button::Reset && down) time_origin_ = m.now();
+}
+
+void Session::set_pc(std::uint16_t pc) {
+    machine_->cpu().regs().pc = pc;
+    debugger_.state_changed();  // the timeline changes here: history after now is another run's
+}
+
+void Session::sample_tool(std::uint64_t period, std::function<void(const debug::ToolSample&)> sample) {
+    if (!sample) {
+        machine_->set_sampler(0, {});
+        return;
+    }
+    machine_->set_sampler(period, [this, sample = std::move(sample)](std::uint64_t t) {
+        sample(debug::sample_tool(machine_->tool(), t));
+    });
+}
+
+Session::Outcome Session::key_now(Button button, periph::Key k, bool down) {
+    key(button, k, down);
+    machine_->run_for(0);  // deliver it now
+    return ran({});
+}
+
 // A run in slices of pace_slice_ with the pace hook called between them (a window drawing the
 // machine at real time); the same instructions run as in one piece.
-debug::Stop Session::run_paced(std::uint64_t until, const std::function<bool()>& condition, const debug::Origin& o) {
+debug::Stop Session::run_paced(std::uint64_t until, const std::function<bool()>& condition) {
+    const debug::Origin o = origin();
     if (!pace_) return debugger_.run_until(until, condition, o);
     for (;;) {
         const std::uint64_t slice_end = std::min(until, machine_->now() + pace_slice_);
@@ -326,104 +488,153 @@ debug::Stop Session::run_paced(std::uint64_t until, const std::function<bool()>&
     }
 }
 
-Session::Outcome Session::press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap) {
+Session::Outcome Session::press(Button button, periph::Key k, std::uint64_t hold, std::uint64_t gap) {
     Machine& m = *machine_;
-    const Button button = key.kind;
     if (button == Button::Reset) time_origin_ = m.now();
-    run_paced(schedule_press(m, button, key.key, hold, gap), {}, origin(c));
+    run_paced(schedule_press(m, button, k, hold, gap), {});
+    return ran({});
+}
+
+Session::Outcome Session::type(const std::vector<KeyRef>& keys, std::uint64_t hold, std::uint64_t gap) {
+    for (const KeyRef& k : keys)
+        if (Outcome o = press(k.kind, k.key, hold, gap); o.status != Status::Ok) return o;
     return {};
 }
 
-Session::Outcome Session::expect(const Command& c) {
-    const Machine& m = *machine_;
-    std::string e;
-    auto value = [&](const Value& v) { return resolve(v, e); };
-    switch (c.op) {
-        case Op::ExpectDisplay: {
-            const std::string actual = m.display_text();
-            if (rtrim(actual) != rtrim(c.text)) return fail_expect(c, fmt::format("\"{}\"", c.text), fmt::format("\"{}\"", actual));
-            return {};
-        }
-        case Op::ExpectMem: {
-            const auto a = value(*c.address);
-            if (!a) return fail(c, e);
-            std::string exp, act;
-            bool same = true;
-            for (std::size_t i = 0; i < c.values.size(); ++i) {
-                const auto v = value(c.values[i]);
-                if (!v) return fail(c, e);
-                const std::uint8_t want = static_cast<std::uint8_t>(*v);
-                const std::uint8_t got = m.peek(static_cast<std::uint16_t>(*a + static_cast<std::int64_t>(i)));
-                same = same && want == got;
-                exp += (i ? " " : "") + hex(want, 2);
-                act += (i ? " " : "") + hex(got, 2);
-            }
-            if (!same) return fail_expect(c, fmt::format("{} at {}", exp, hex(*a, 4)), act);
-            return {};
-        }
-        case Op::ExpectWord: {
-            const auto a = value(*c.address);
-            const auto v = value(c.values[0]);
-            if (!a || !v) return fail(c, e);
-            const std::uint16_t got = static_cast<std::uint16_t>(m.peek(static_cast<std::uint16_t>(*a)) |
-                                                                 m.peek(static_cast<std::uint16_t>(*a + 1)) << 8);
-            if (got != static_cast<std::uint16_t>(*v)) return fail_expect(c, hex(static_cast<std::uint16_t>(*v), 4), hex(got, 4));
-            return {};
-        }
-        case Op::ExpectReg: {
-            const auto v = value(c.values[0]);
-            if (!v) return fail(c, e);
-            const int digits = c.reg->width > 8 ? 4 : 2;
-            const std::uint16_t want = static_cast<std::uint16_t>(*v & c.reg->mask());
-            const std::uint16_t got = c.reg->read(m.cpu().regs());
-            if (want != got) return fail_expect(c, fmt::format("{} = {}", c.reg->name, hex(want, digits)), hex(got, digits));
-            return {};
-        }
-        case Op::ExpectFlag: {
-            const bool want = c.values[0].number != 0;
-            const bool got = (cpu::description().flag_register()->read(m.cpu().regs()) & c.flag) != 0;
-            if (want != got) return fail_expect(c, fmt::format("{} = {}", c.flag_name, want ? 1 : 0), got ? "1" : "0");
-            return {};
-        }
-        case Op::ExpectPort: {
-            const auto v = value(c.values[0]);
-            if (!v) return fail(c, e);
-            const auto& latch = m.rio().state().latch;
-            const std::uint8_t got = latch[static_cast<std::size_t>(c.port - 'A')];
-            if (got != static_cast<std::uint8_t>(*v))
-                return fail_expect(c, fmt::format("port {} latch = {}", c.port, hex(*v, 2)), hex(got, 2));
-            return {};
-        }
-        case Op::ExpectSymbol: {
-            const auto v = value(c.values[0]);
-            if (!v) return fail(c, e);
-            const auto actual = debugger_.program().value_of(c.name);
-            if (!actual) return fail(c, fmt::format("unknown symbol '{}'", c.name));
-            if (*actual != static_cast<std::uint16_t>(*v)) return fail_expect(c, hex(*v & 0xFFFF, 4), hex(*actual, 4));
-            return {};
-        }
-        case Op::ExpectTime: {
-            const std::uint64_t t = elapsed();
-            bool ok = false;
-            const char* op = "";
-            switch (c.compare) {
-                case Compare::Lt: ok = t < c.time, op = "<"; break;
-                case Compare::Le: ok = t <= c.time, op = "<="; break;
-                case Compare::Eq: ok = t == c.time, op = "="; break;
-                case Compare::Ge: ok = t >= c.time, op = ">="; break;
-                case Compare::Gt: ok = t > c.time, op = ">"; break;
-            }
-            if (!ok) return fail_expect(c, fmt::format("time {} {}", op, format_time(c.time)), format_time(t));
-            return {};
-        }
-        case Op::ExpectHalted:
-            if (!m.cpu().halted()) return fail_expect(c, "the CPU halted", "running");
-            return {};
-        case Op::ExpectRunning:
-            if (m.cpu().halted()) return fail_expect(c, "the CPU running", "halted");
-            return {};
-        default: return {};
+Session::Outcome Session::run(std::uint64_t tstates) {
+    run_paced(machine_->now() + tstates, {});
+    return ran({});
+}
+
+Session::Outcome Session::run_until(std::uint16_t target, std::uint64_t timeout) {
+    if (debugger_.run_to(target, machine_->now() + timeout).reason != debug::StopReason::Target)
+        return ran(fail(fmt::format("the PC did not reach {} within {}", hex(target, 4), format_time(timeout))));
+    return ran({});
+}
+
+Session::Outcome Session::wait_display(const std::string& text, std::uint64_t timeout) {
+    Machine& m = *machine_;
+    const std::string want = rtrim(text);
+    const debug::Stop stop = run_paced(m.now() + timeout, [&] { return rtrim(m.display_text()) == want; });
+    if (stop.reason == debug::StopReason::Condition) return ran({});
+    if (stop.reason == debug::StopReason::Breakpoint || stop.reason == debug::StopReason::Watchpoint)
+        return ran(fail(fmt::format("stopped at {} {} before the display showed \"{}\"", debug::name(stop.reason),
+                                    hex(m.cpu().regs().pc, 4), text)));
+    if (stop.reason == debug::StopReason::Interrupted) return ran(fail("interrupted"));
+    return ran(fail(fmt::format("the display did not show \"{}\" within {}", text, format_time(timeout))));
+}
+
+Session::Outcome Session::step(unsigned count) {
+    for (unsigned i = 0; i < count; ++i) machine_->step();
+    return {};
+}
+
+Session::Outcome Session::add_breakpoint(std::uint16_t address) {
+    debugger_.add_breakpoint_at(address);
+    return {};
+}
+
+Session::Outcome Session::delete_breakpoints(std::uint16_t address) {
+    debugger_.remove_breakpoints_at(address);
+    return {};
+}
+
+Session::Outcome Session::delete_all_breakpoints() {
+    debugger_.remove_all();
+    return {};
+}
+
+Session::Outcome Session::set_mem(std::uint16_t address, const std::vector<std::uint8_t>& bytes) {
+    const Changed changed{debugger_};
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const auto addr = static_cast<std::uint16_t>(address + i);
+        if (!machine_->poke(addr, bytes[i])) return fail(fmt::format("no memory at {}", hex(addr, 4)));
     }
+    return {};
+}
+
+Session::Outcome Session::set_reg(const cpu::Register& reg, std::uint16_t value) {
+    const Changed changed{debugger_};
+    reg.write(machine_->cpu().regs(), static_cast<std::uint16_t>(value & reg.mask()));
+    return {};
+}
+
+Session::Outcome Session::set_option(bool expansion_eprom) {
+    const Changed changed{debugger_};
+    machine_->set_expansion_eprom(expansion_eprom);  // the one board option (board::kBoardOptions)
+    return {};
+}
+
+Session::Outcome Session::print(const std::string& text) {
+    output(text);
+    return {};
+}
+
+Session::Outcome Session::print_display(bool as_text) {
+    if (as_text) {
+        output('"' + machine_->display_text() + '"');
+    } else {
+        std::string art;
+        for (const std::string& line : machine_->display_art()) art += (art.empty() ? "" : "\n") + line;
+        output(art);
+    }
+    return {};
+}
+
+// ---- expectations -------------------------------------------------------------------------------
+
+Session::Outcome Session::expect_display(const std::string& text) {
+    const std::string actual = machine_->display_text();
+    if (rtrim(actual) != rtrim(text)) return fail_expect(fmt::format("\"{}\"", text), fmt::format("\"{}\"", actual));
+    return {};
+}
+
+Session::Outcome Session::expect_mem(std::uint16_t address, const std::vector<std::uint8_t>& bytes) {
+    std::string exp, act;
+    bool same = true;
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const std::uint8_t got = machine_->peek(static_cast<std::uint16_t>(address + i));
+        same = same && bytes[i] == got;
+        exp += (i ? " " : "") + hex(bytes[i], 2);
+        act += (i ? " " : "") + hex(got, 2);
+    }
+    if (!same) return fail_expect(fmt::format("{} at {}", exp, hex(address, 4)), act);
+    return {};
+}
+
+Session::Outcome Session::expect_word(std::uint16_t address, std::uint16_t value) {
+    const Machine& m = *machine_;
+    const std::uint16_t got = static_cast<std::uint16_t>(m.peek(address) | m.peek(static_cast<std::uint16_t>(address + 1)) << 8);
+    if (got != value) return fail_expect(hex(value, 4), hex(got, 4));
+    return {};
+}
+
+Session::Outcome Session::expect_reg(const cpu::Register& reg, std::uint16_t value) {
+    const int digits = reg.width > 8 ? 4 : 2;
+    const std::uint16_t want = static_cast<std::uint16_t>(value & reg.mask());
+    const std::uint16_t got = reg.read(machine_->cpu().regs());
+    if (want != got) return fail_expect(fmt::format("{} = {}", reg.name, hex(want, digits)), hex(got, digits));
+    return {};
+}
+
+Session::Outcome Session::expect_flag(const cpu::Flag& flag, bool set, const std::string& name) {
+    const bool got = (cpu::description().flag_register()->read(machine_->cpu().regs()) & flag.bit) != 0;
+    if (set != got) return fail_expect(fmt::format("{} = {}", name, set ? 1 : 0), got ? "1" : "0");
+    return {};
+}
+
+Session::Outcome Session::expect_port(char port, std::uint8_t value) {
+    const auto& latch = machine_->rio().state().latch;
+    const std::uint8_t got = latch[static_cast<std::size_t>(port - 'A')];
+    if (got != value) return fail_expect(fmt::format("port {} latch = {}", port, hex(value, 2)), hex(got, 2));
+    return {};
+}
+
+Session::Outcome Session::expect_symbol(const std::string& name, std::uint16_t value) {
+    const auto actual = debugger_.program().value_of(name);
+    if (!actual) return fail(fmt::format("unknown symbol '{}'", name));
+    if (*actual != value) return fail_expect(hex(value, 4), hex(*actual, 4));
+    return {};
 }
 
 namespace {
@@ -438,6 +649,7 @@ bool compare(T actual, Compare op, T want) {
     }
     return false;
 }
+// As a comparison reads before its value: "< ", "" for equality.
 const char* compare_text(Compare op) {
     switch (op) {
         case Compare::Lt: return "< ";
@@ -448,14 +660,38 @@ const char* compare_text(Compare op) {
     }
     return "";
 }
-periph::MachineTool::Axis tool_axis(const Command& c) { return static_cast<periph::MachineTool::Axis>(c.axis); }
-char axis_name(const Command& c) { return "XYZ"[c.axis % 3]; }
+// expect time's operator: "=" for equality.
+const char* compare_symbol(Compare op) {
+    switch (op) {
+        case Compare::Lt: return "<";
+        case Compare::Le: return "<=";
+        case Compare::Eq: return "=";
+        case Compare::Ge: return ">=";
+        case Compare::Gt: return ">";
+    }
+    return "";
+}
+periph::MachineTool::Axis tool_axis(std::uint8_t axis) { return static_cast<periph::MachineTool::Axis>(axis); }
+char axis_name(std::uint8_t axis) { return "XYZ"[axis % 3]; }
 // The table's position as whole steps: the nearest step (a settled physical rotor rests within a
 // fraction of a step of it).
 std::int64_t whole_steps(const periph::MachineTool& tool, periph::MachineTool::Axis a) {
     return std::llround(tool.table_steps(a));
 }
 }  // namespace
+
+Session::Outcome Session::expect_time(Compare op, std::uint64_t tstates) {
+    const std::uint64_t t = elapsed();
+    if (!compare(t, op, tstates)) return fail_expect(fmt::format("time {} {}", compare_symbol(op), format_time(tstates)), format_time(t));
+    return {};
+}
+
+Session::Outcome Session::expect_halted(bool halted) {
+    if (machine_->cpu().halted() == halted) return {};
+    return halted ? fail_expect("the CPU halted", "running") : fail_expect("the CPU running", "halted");
+}
+
+// ---- the machine tool ---------------------------------------------------------------------------
 
 std::string Session::axes_text() const {
     const periph::MachineTool& tool = machine_->tool();
@@ -473,33 +709,172 @@ std::string Session::axes_text() const {
     return out;
 }
 
+// The tool caught up with the machine's time before it is read or changed.
+periph::MachineTool& Session::tool_now() {
+    periph::MachineTool& tool = machine_->tool();
+    tool.advance(machine_->now());
+    return tool;
+}
+
+Session::Outcome Session::set_motor(periph::MachineTool::MotorModel model) {
+    const Changed changed{debugger_};
+    tool_now().set_model(model);
+    return {};
+}
+
+Session::Outcome Session::set_feedback(periph::MachineTool::Feedback feedback) {
+    const Changed changed{debugger_};
+    tool_now().set_feedback(feedback);
+    return {};
+}
+
+Session::Outcome Session::new_workpiece() {
+    const Changed changed{debugger_};
+    tool_now().set_up_workpiece(machine_->now());
+    return {};
+}
+
+Session::Outcome Session::print_axes() {
+    tool_now();
+    output(axes_text());
+    return {};
+}
+
+Session::Outcome Session::print_time() {
+    tool_now();
+    const std::uint64_t now = machine_->now();
+    output(mark_ ? fmt::format("time: {} since the mark, {} since the last reset", format_time(now - *mark_),
+                               format_time(elapsed()))
+                 : fmt::format("time: {} since the last reset", format_time(elapsed())));
+    return {};
+}
+
+Session::Outcome Session::mark() {
+    tool_now();
+    mark_ = machine_->now();
+    return {};
+}
+
+Session::Outcome Session::expect_axis_steps(std::uint8_t axis, Compare op, std::int64_t steps) {
+    const periph::MachineTool& tool = tool_now();
+    const std::int64_t now = whole_steps(tool, tool_axis(axis));
+    if (!compare(now, op, steps))
+        return fail_expect(fmt::format("axis {} at {}{} steps", axis_name(axis), compare_text(op), steps),
+                           fmt::format("{} steps ({:.3f})", now, tool.table_steps(tool_axis(axis))));
+    return {};
+}
+
+Session::Outcome Session::expect_axis_mm(std::uint8_t axis, Compare op, double want, double within) {
+    const double mm = tool_now().table_mm(tool_axis(axis));
+    const bool ok = op == Compare::Eq ? std::abs(mm - want) <= within : compare(mm, op, want);
+    if (!ok)
+        return fail_expect(fmt::format("axis {} at {}{:.4f} mm{}", axis_name(axis), compare_text(op), want,
+                                       op == Compare::Eq ? fmt::format(" within {} mm", within) : ""),
+                           fmt::format("{:.4f} mm", mm));
+    return {};
+}
+
+Session::Outcome Session::expect_count(std::uint8_t axis, Compare op, std::int64_t count) {
+    const std::int64_t v = tool_now().transducer_count(tool_axis(axis));
+    if (!compare(v, op, count))
+        return fail_expect(fmt::format("count {} {}{}", axis_name(axis), compare_text(op), count), std::to_string(v));
+    return {};
+}
+
+Session::Outcome Session::expect_lost(std::uint8_t axis, Compare op, std::int64_t lost) {
+    const std::int64_t v = tool_now().lost_steps(tool_axis(axis));
+    if (!compare(v, op, lost))
+        return fail_expect(fmt::format("lost steps {} {}{}", axis_name(axis), compare_text(op), lost), std::to_string(v));
+    return {};
+}
+
+Session::Outcome Session::run_until_axis(std::uint8_t axis, Compare op, std::int64_t steps, std::uint64_t timeout) {
+    const periph::MachineTool& tool = tool_now();
+    const auto a = tool_axis(axis);
+    const debug::Stop stop = run_paced(machine_->now() + timeout, [&] { return compare(whole_steps(tool, a), op, steps); });
+    if (stop.reason == debug::StopReason::Condition) return ran({});
+    if (stop.reason == debug::StopReason::Breakpoint)
+        return ran(fail(fmt::format("stopped at breakpoint {} before axis {} reached {}{} steps", hex(stop.pc, 4),
+                                    axis_name(axis), compare_text(op), steps)));
+    return ran(fail(fmt::format("axis {} did not reach {}{} steps within {} (it is at {} steps)", axis_name(axis),
+                                compare_text(op), steps, format_time(timeout), whole_steps(tool, a))));
+}
+
+Session::Outcome Session::record(const std::filesystem::path& csv, std::uint64_t period) {
+    tool_now();
+    if (recorder_.recording()) {
+        if (Outcome o = write_recording(); o.status != Status::Ok) return o;
+    }
+    const auto path = resolve_output(csv.string());
+    if (const std::string why = output_problem(path, "record"); !why.empty()) return fail(why);
+    record_path_ = path;
+    record_line_ = line_ ? std::optional<Command>(*line_) : std::nullopt;
+    recorder_.start(*machine_, period);
+    return {};
+}
+
+Session::Outcome Session::record_signals(const std::filesystem::path& vcd, const std::vector<std::string>& pins,
+                                         std::uint64_t period) {
+    tool_now();
+    if (signals_.recording()) {
+        if (Outcome o = write_signals(); o.status != Status::Ok) return o;
+    }
+    const auto path = resolve_output(vcd.string());
+    if (const std::string why = output_problem(path, "record"); !why.empty()) return fail(why);
+    try {
+        signals_.start(*machine_, path, pins, period);
+    } catch (const std::exception& x) {
+        return fail(x.what());
+    }
+    signals_line_ = line_ ? std::optional<Command>(*line_) : std::nullopt;
+    return {};
+}
+
+Session::Outcome Session::trace_signals(const std::vector<std::string>& pins, std::uint64_t span) {
+    try {
+        pane_trace_.start(*machine_, pins, span);
+    } catch (const std::exception& x) {
+        return {Status::Failed, x.what()};
+    }
+    return {};
+}
+
+Session::Outcome Session::record_stop() {
+    tool_now();
+    // Ends every recording running: the tool's CSV and the pins' VCD.
+    if (!recorder_.recording() && !signals_.recording())
+        return fail("no recording to stop (record FILE.csv or record signals FILE.vcd starts one)");
+    return stop_recordings();
+}
+
 Session::Outcome Session::write_recording() {
+    const Command* line = record_line_ ? &*record_line_ : nullptr;
     recorder_.stop();
-    if (const std::string why = output_problem(record_path_, "record"); !why.empty()) return fail(record_command_, why);
+    if (const std::string why = output_problem(record_path_, "record"); !why.empty()) return fail_at(line, why);
     try {
         AtomicOutput file(record_path_);
         recorder_.write_csv(file.stream());
         file.commit();
     } catch (const std::exception& x) {
-        return fail(record_command_, x.what());
+        return fail_at(line, x.what());
     }
     if (recorder_.full())
-        return fail(record_command_,
-                    fmt::format("the recording reached its cap of {} samples: '{}' holds the first {} (record with a "
-                                "longer period, e.g. every 1ms)",
-                                debug::ToolRecorder::kMaxSamples, record_path_.string(), debug::ToolRecorder::kMaxSamples));
+        return fail_at(line, fmt::format("the recording reached its cap of {} samples: '{}' holds the first {} (record with a "
+                                         "longer period, e.g. every 1ms)",
+                                         debug::ToolRecorder::kMaxSamples, record_path_.string(), debug::ToolRecorder::kMaxSamples));
     return {};
 }
 
 Session::Outcome Session::write_signals() {
+    const Command* line = signals_line_ ? &*signals_line_ : nullptr;
     if (const std::string why = output_problem(signals_.path(), "record"); !why.empty()) {
         signals_.abandon();
-        return fail(signals_command_, why);
+        return fail_at(line, why);
     }
     try {
         signals_.stop();
     } catch (const std::exception& x) {
-        return fail(signals_command_, x.what());
+        return fail_at(line, x.what());
     }
     return {};
 }
@@ -517,201 +892,48 @@ Session::Outcome Session::stop_recordings() {
     return o;
 }
 
-Session::Outcome Session::tool_command(const Command& c) {
-    Machine& m = *machine_;
-    periph::MachineTool& tool = m.tool();
-    const auto axis = tool_axis(c);
-    tool.advance(m.now());
-    switch (c.op) {
-        case Op::Motor:
-            tool.set_model(c.real == 0 ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical);
-            return {};
-        case Op::Feedback:
-            tool.set_feedback(c.real == 0 ? periph::MachineTool::Feedback::Scale : periph::MachineTool::Feedback::Commanded);
-            return {};
-        case Op::PrintAxes: output(c, axes_text()); return {};
-        case Op::PrintTime:
-            output(c, mark_ ? fmt::format("time: {} since the mark, {} since the last reset",
-                                          format_time(m.now() - *mark_), format_time(elapsed()))
-                            : fmt::format("time: {} since the last reset", format_time(elapsed())));
-            return {};
-        case Op::Mark: mark_ = m.now(); return {};
-        case Op::NewWorkpiece: tool.set_up_workpiece(m.now()); return {};
-        case Op::ExpectAxis: {
-            if (c.in_mm) {
-                const double mm = tool.table_mm(axis);
-                const bool ok = c.compare == Compare::Eq ? std::abs(mm - c.real) <= c.within
-                                                         : compare(mm, c.compare, c.real);
-                if (!ok)
-                    return fail_expect(c, fmt::format("axis {} at {}{:.4f} mm{}", axis_name(c), compare_text(c.compare), c.real,
-                                                      c.compare == Compare::Eq ? fmt::format(" within {} mm", c.within) : ""),
-                                       fmt::format("{:.4f} mm", mm));
-                return {};
-            }
-            const std::int64_t steps = whole_steps(tool, axis);
-            if (!compare(steps, c.compare, c.integer))
-                return fail_expect(c, fmt::format("axis {} at {}{} steps", axis_name(c), compare_text(c.compare), c.integer),
-                                   fmt::format("{} steps ({:.3f})", steps, tool.table_steps(axis)));
-            return {};
-        }
-        case Op::ExpectCount:
-        case Op::ExpectLost: {
-            const bool count = c.op == Op::ExpectCount;
-            const std::int64_t v = count ? tool.transducer_count(axis) : tool.lost_steps(axis);
-            if (!compare(v, c.compare, c.integer))
-                return fail_expect(c, fmt::format("{} {} {}{}", count ? "count" : "lost steps", axis_name(c),
-                                                  compare_text(c.compare), c.integer),
-                                   std::to_string(v));
-            return {};
-        }
-        case Op::RunUntilAxis: {
-            const debug::Stop stop = run_paced(
-                m.now() + c.time, [&] { return compare(whole_steps(tool, axis), c.compare, c.integer); }, origin(c));
-            if (stop.reason == debug::StopReason::Condition) return {};
-            if (stop.reason == debug::StopReason::Breakpoint)
-                return fail(c, fmt::format("stopped at breakpoint {} before axis {} reached {}{} steps", hex(stop.pc, 4),
-                                           axis_name(c), compare_text(c.compare), c.integer));
-            return fail(c, fmt::format("axis {} did not reach {}{} steps within {} (it is at {} steps)", axis_name(c),
-                                       compare_text(c.compare), c.integer, format_time(c.time), whole_steps(tool, axis)));
-        }
-        case Op::Record:
-            if (c.signals) {
-                if (signals_.recording()) {
-                    if (Outcome o = write_signals(); o.status != Status::Ok) return o;
-                }
-                const auto path = resolve_output(c.text);
-                if (const std::string why = output_problem(path, "record"); !why.empty()) return fail(c, why);
-                std::vector<std::string> pins;
-                for (const Value& v : c.pins) pins.push_back(v.text);
-                try {
-                    signals_.start(m, path, pins, c.period);
-                } catch (const std::exception& x) {
-                    return fail(c, x.what());
-                }
-                signals_command_ = c;
-                return {};
-            }
-            if (recorder_.recording()) {
-                if (Outcome o = write_recording(); o.status != Status::Ok) return o;
-            }
-            if (const std::string why = output_problem(resolve_output(c.text), "record"); !why.empty()) return fail(c, why);
-            record_path_ = resolve_output(c.text);
-            record_command_ = c;
-            recorder_.start(m, c.period);
-            return {};
-        case Op::RecordStop: {
-            // Ends every recording running: the tool's CSV and the pins' VCD.
-            if (!recorder_.recording() && !signals_.recording())
-                return fail(c, "no recording to stop (record FILE.csv or record signals FILE.vcd starts one)");
-            return stop_recordings();
-        }
-        case Op::Plot: {
-            const auto& samples = recorder_.samples();
-            if (samples.size() < 2) return fail(c, "nothing recorded to plot (record FILE.csv first, then run)");
-            if (const std::string why = output_problem(resolve_output(c.text), "plot"); !why.empty()) return fail(c, why);
-            if (recorder_.recording()) {
-                // Include the present moment (the last sample may be up to one period old).
-                m.tool().advance(m.now());
-            }
-            try {
-                if (c.name == "TOOLPATH") {
-                    plot::Series path{"table (X, Y)", {}};
-                    for (const auto& smp : samples) path.points.push_back({smp.axes[0].mm, smp.axes[1].mm});
-                    const plot::Point a = c.ideal_line ? plot::Point{(*c.ideal_line)[0], (*c.ideal_line)[1]} : path.points.front();
-                    const plot::Point b = c.ideal_line ? plot::Point{(*c.ideal_line)[2], (*c.ideal_line)[3]} : path.points.back();
-                    plot::write_toolpath(resolve_output(c.text).string(), "Toolpath", {path}, std::make_pair(a, b));
-                } else {
-                    std::vector<plot::Series> series;
-                    for (int a = 0; a < 3; ++a) {
-                        plot::Series axis{std::string(1, "XYZ"[a]), {}};
-                        for (const auto& smp : samples)
-                            axis.points.push_back({static_cast<double>(smp.t - samples.front().t) / board::kCpuHz,
-                                                   smp.axes[static_cast<std::size_t>(a)].mm});
-                        series.push_back(std::move(axis));
-                    }
-                    plot::write_time_series(resolve_output(c.text).string(), "Table position against time", series,
-                                            "position (mm)");
-                }
-            } catch (const plot::PlotError& x) {
-                return fail(c, x.what());
-            }
-            return {};
-        }
-        default: return {};
+// The recorded samples, the present moment included (the last sample may be up to one period old).
+Session::Outcome Session::plot_time(const std::filesystem::path& out) {
+    tool_now();
+    const auto& samples = recorder_.samples();
+    if (samples.size() < 2) return fail("nothing recorded to plot (record FILE.csv first, then run)");
+    const auto path = resolve_output(out.string());
+    if (const std::string why = output_problem(path, "plot"); !why.empty()) return fail(why);
+    std::vector<plot::Series> series;
+    for (int a = 0; a < 3; ++a) {
+        plot::Series axis{std::string(1, "XYZ"[a]), {}};
+        for (const auto& smp : samples)
+            axis.points.push_back({static_cast<double>(smp.t - samples.front().t) / board::kCpuHz,
+                                   smp.axes[static_cast<std::size_t>(a)].mm});
+        series.push_back(std::move(axis));
     }
+    try {
+        plot::write_time_series(path.string(), "Table position against time", series, "position (mm)");
+    } catch (const plot::PlotError& x) {
+        return fail(x.what());
+    }
+    return {};
 }
 
-namespace {
-Command typed(Op op, std::string text = {}) {
-    Command c;
-    c.op = op;
-    c.where = {"(front end)", 0, 0};
-    c.text = std::move(text);
-    c.line = c.text;
-    return c;
-}
-}  // namespace
-
-Session::Outcome Session::boot(const Boot& b) {
-    if (b.motor)
-        if (Outcome o = set_motor(*b.motor); o.status != Status::Ok) return o;
-    if (b.monitor)
-        if (Outcome o = load_monitor(); o.status != Status::Ok) return o;
-    for (const std::string& f : b.firmware)
-        if (Outcome o = load_firmware(f); o.status != Status::Ok) return o;
-    for (const Boot::Image& i : b.images)
-        if (Outcome o = load_image(i.path, i.address); o.status != Status::Ok) return o;
-    return b.reset ? reset() : Outcome{};
+Session::Outcome Session::plot_toolpath(const std::filesystem::path& out, const std::optional<std::array<double, 4>>& ideal) {
+    tool_now();
+    const auto& samples = recorder_.samples();
+    if (samples.size() < 2) return fail("nothing recorded to plot (record FILE.csv first, then run)");
+    const auto path = resolve_output(out.string());
+    if (const std::string why = output_problem(path, "plot"); !why.empty()) return fail(why);
+    plot::Series table{"table (X, Y)", {}};
+    for (const auto& smp : samples) table.points.push_back({smp.axes[0].mm, smp.axes[1].mm});
+    const plot::Point a = ideal ? plot::Point{(*ideal)[0], (*ideal)[1]} : table.points.front();
+    const plot::Point b = ideal ? plot::Point{(*ideal)[2], (*ideal)[3]} : table.points.back();
+    try {
+        plot::write_toolpath(path.string(), "Toolpath", {table}, std::make_pair(a, b));
+    } catch (const plot::PlotError& x) {
+        return fail(x.what());
+    }
+    return {};
 }
 
-Session::Outcome Session::load_monitor() { return execute(typed(Op::Monitor)); }
-Session::Outcome Session::load_firmware(const std::string& name) { return execute(typed(Op::Firmware, name)); }
-
-Session::Outcome Session::load_image(const std::filesystem::path& path, std::optional<std::uint16_t> address) {
-    Command c = typed(Op::Load, path.string());
-    if (address) c.address = Value{{}, *address, 0, hex(*address, 4)};
-    return execute(c);
-}
-
-Session::Outcome Session::reset() { return execute(typed(Op::Reset)); }
-Session::Outcome Session::save(const std::filesystem::path& path) { return execute(typed(Op::Save, path.string())); }
-Session::Outcome Session::restore(const std::filesystem::path& path) { return execute(typed(Op::Restore, path.string())); }
-
-Session::Outcome Session::record(const std::filesystem::path& csv, std::uint64_t period) {
-    Command c = typed(Op::Record, csv.string());
-    c.period = period;
-    return execute(c);
-}
-Session::Outcome Session::record_signals(const std::filesystem::path& vcd, const std::vector<std::string>& pins,
-                                         std::uint64_t period) {
-    Command c = typed(Op::Record, vcd.string());
-    c.signals = true;
-    c.period = period;
-    for (const std::string& p : pins) c.pins.push_back({{}, 0, 0, p});
-    return execute(c);
-}
-
-Session::Outcome Session::record_stop() { return execute(typed(Op::RecordStop)); }
-
-Session::Outcome Session::plot_toolpath(const std::filesystem::path& out) {
-    Command c = typed(Op::Plot, out.string());
-    c.name = "TOOLPATH";
-    return execute(c);
-}
-
-Session::Outcome Session::new_workpiece() { return execute(typed(Op::NewWorkpiece)); }
-
-Session::Outcome Session::set_motor(periph::MachineTool::MotorModel model) {
-    Command c = typed(Op::Motor);
-    c.real = model == periph::MachineTool::MotorModel::Ideal ? 0 : 1;
-    return execute(c);
-}
-
-void Session::key(Button button, periph::Key k, bool down) {
-    Machine& m = *machine_;
-    schedule_key(m, button, k, down, m.now());
-    if (button == Button::Reset && down) time_origin_ = m.now();
-}
+// ---- the command language: a parsed line to its typed call --------------------------------------
 
 Session::Outcome Session::connect_serial(const periph::UartFormat& format, std::uint64_t gap) {
     if (serial_) return {Status::Failed, fmt::format("a serial terminal is already connected ({})", serial_->format().text())};
@@ -727,159 +949,129 @@ void Session::serial_type(std::string_view text) {
 }
 
 Session::Outcome Session::execute(const Command& c) {
-    Outcome o = run_command(c);
-    if (debugger_.take_time_limit_hit()) o = fail(c, debugger_.time_limit_message());
-    // The machine changed outside its run: reverse execution's history ends here.
-    switch (c.op) {
-        case Op::Load: case Op::Monitor: case Op::Firmware: case Op::Reset: case Op::Motor: case Op::Feedback: case Op::NewWorkpiece:
-        case Op::SetMem: case Op::SetReg: case Op::Restore: case Op::Option:
-            debugger_.state_changed(c.op == Op::Restore);
-            break;
-        default: break;
-    }
-    return o;
+    struct Running {  // the line failures name, for the length of this call
+        const Command*& line;
+        const Command* outer;
+        ~Running() { line = outer; }
+    } running{line_, line_};
+    line_ = &c;
+    if (options_.verbose) output(fmt::format("[{}] {}:{}: {}", format_time(elapsed()), c.where.file, c.where.line, rtrim(c.line)));
+    return run_command(c);
 }
 
 Session::Outcome Session::run_command(const Command& c) {
-    Machine& m = *machine_;
-    if (options_.verbose) output(c, fmt::format("[{}] {}:{}: {}", format_time(elapsed()), c.where.file, c.where.line, rtrim(c.line)));
     std::string e;
+    // The command's values, resolved against the symbols of now (nullopt: `e` says why).
+    auto address = [&]() -> std::optional<std::uint16_t> {
+        const auto a = resolve(*c.address, e);
+        return a ? std::optional<std::uint16_t>(static_cast<std::uint16_t>(*a)) : std::nullopt;
+    };
+    auto bytes = [&]() -> std::optional<std::vector<std::uint8_t>> {
+        std::vector<std::uint8_t> out;
+        for (const Value& v : c.values) {
+            const auto b = resolve(v, e);
+            if (!b) return std::nullopt;
+            out.push_back(static_cast<std::uint8_t>(*b));
+        }
+        return out;
+    };
+    auto value = [&]() { return resolve(c.values[0], e); };
     switch (c.op) {
-        case Op::Load: return load(c);
-        case Op::Monitor:
-            if (!options_.monitor_rom) return fail(c, "this alp85 was built without the monitor ROM");
-            {
-                const firmware::Firmware rom = options_.monitor_rom();
-                m.load(rom.segments);
-                debugger_.program().add_table(rom.symbols);
-            }
-            return {};
-        case Op::Firmware: {
-            const auto fw = firmware::find(c.text);
-            if (!fw) return fail(c, fmt::format("no firmware '{}' in this alp85", c.text));
-            if (fw->expansion_eprom) m.set_expansion_eprom(true);  // the EPROM it is in goes in with it
-            m.load(fw->segments);
-            debugger_.program().add_table(fw->symbols);
-            return {};
+        case Op::Load: {
+            std::optional<std::uint16_t> at;
+            if (c.address && !(at = address())) return fail(e);
+            return load_image(c.text, at);
         }
-        case Op::Reset:
-            m.reset();
-            time_origin_ = m.now();
-            return {};
-        case Op::Press: return press(c, c.keys[0], c.time, c.gap);
-        case Op::Type:
-            for (const KeyRef& k : c.keys)
-                if (Outcome o = press(c, k, c.time, c.gap); o.status != Status::Ok) return o;
-            return {};
+        case Op::Monitor: return load_monitor();
+        case Op::Firmware: return load_firmware(c.text);
+        case Op::Reset: return reset();
+        case Op::Press: return press(c.keys[0].kind, c.keys[0].key, c.time, c.gap);
+        case Op::Type: return type(c.keys, c.time, c.gap);
         case Op::KeyDown:
-        case Op::KeyUp: {
-            const bool down = c.op == Op::KeyDown;
-            const KeyRef& k = c.keys[0];
-            if (k.kind == Button::Matrix) m.key_at(k.key, down, m.now());
-            else if (k.kind == Button::Vect) m.vect_intr_at(down, m.now());
-            else {
-                m.reset_key_at(down, m.now());
-                if (down) time_origin_ = m.now();
-            }
-            m.run_for(0);  // deliver it now
-            return {};
-        }
-        case Op::Run:
-            run_paced(m.now() + c.time, {}, origin(c));
-            return {};
+        case Op::KeyUp: return key_now(c.keys[0].kind, c.keys[0].key, c.op == Op::KeyDown);
+        case Op::Run: return run(c.time);
         case Op::RunUntil: {
-            const auto a = resolve(*c.address, e);
-            if (!a) return fail(c, e);
-            const auto target = static_cast<std::uint16_t>(*a);
-            if (debugger_.run_to(target, m.now() + c.time).reason != debug::StopReason::Target)
-                return fail(c, fmt::format("the PC did not reach {} within {}", hex(target, 4), format_time(c.time)));
-            return {};
+            const auto a = address();
+            return a ? run_until(*a, c.time) : fail(e);
         }
-        case Op::WaitDisplay: {
-            const std::string want = rtrim(c.text);
-            const debug::Stop stop = run_paced(m.now() + c.time, [&] { return rtrim(m.display_text()) == want; }, origin(c));
-            if (stop.reason == debug::StopReason::Condition) return {};
-            if (stop.reason == debug::StopReason::Breakpoint || stop.reason == debug::StopReason::Watchpoint)
-                return fail(c, fmt::format("stopped at {} {} before the display showed \"{}\"", debug::name(stop.reason),
-                                           hex(m.cpu().regs().pc, 4), c.text));
-            if (stop.reason == debug::StopReason::Interrupted) return fail(c, "interrupted");
-            return fail(c, fmt::format("the display did not show \"{}\" within {}", c.text, format_time(c.time)));
-        }
-        case Op::Step:
-            for (unsigned i = 0; i < c.count; ++i) m.step();
-            return {};
+        case Op::WaitDisplay: return wait_display(c.text, c.time);
+        case Op::Step: return step(c.count);
         case Op::Break:
         case Op::Delete: {
-            const auto a = resolve(*c.address, e);
-            if (!a) return fail(c, e);
-            if (c.op == Op::Break) debugger_.add_breakpoint_at(static_cast<std::uint16_t>(*a));
-            else debugger_.remove_breakpoints_at(static_cast<std::uint16_t>(*a));
-            return {};
+            const auto a = address();
+            if (!a) return fail(e);
+            return c.op == Op::Break ? add_breakpoint(*a) : delete_breakpoints(*a);
         }
-        case Op::DeleteAll: debugger_.remove_all(); return {};
+        case Op::DeleteAll: return delete_all_breakpoints();
         case Op::SetMem: {
-            const auto a = resolve(*c.address, e);
-            if (!a) return fail(c, e);
-            for (std::size_t i = 0; i < c.values.size(); ++i) {
-                const auto v = resolve(c.values[i], e);
-                if (!v) return fail(c, e);
-                const auto addr = static_cast<std::uint16_t>(*a + static_cast<std::int64_t>(i));
-                if (!m.poke(addr, static_cast<std::uint8_t>(*v)))
-                    return fail(c, fmt::format("no memory at {}", hex(addr, 4)));
-            }
-            return {};
+            const auto a = address();
+            const auto b = a ? bytes() : std::nullopt;
+            return b ? set_mem(*a, *b) : fail(e);
         }
         case Op::SetReg: {
-            const auto v = resolve(c.values[0], e);
-            if (!v) return fail(c, e);
-            c.reg->write(m.cpu().regs(), static_cast<std::uint16_t>(*v & c.reg->mask()));
-            return {};
+            const auto v = value();
+            return v ? set_reg(*c.reg, static_cast<std::uint16_t>(*v)) : fail(e);
         }
-        case Op::Save:
-            if (const std::string why = output_problem(resolve_output(c.text), "save"); !why.empty()) return fail(c, why);
-            try {
-                m.save_snapshot(resolve_output(c.text));
-            } catch (const snapshot::SnapshotError& x) {
-                return fail(c, x.what());
-            }
-            written_.push_back(resolve_output(c.text).string());
-            return {};
-        case Op::Restore:
-            try {
-                m.load_snapshot(resolve_output(c.text));
-            } catch (const snapshot::SnapshotError& x) {
-                return fail(c, x.what());
-            }
-            add_input(resolve_output(c.text), "a snapshot the session restored");
-            return {};
-        case Op::Option:
-            m.set_expansion_eprom(c.real == 1);  // the one board option (board::kBoardOptions)
-            return {};
+        case Op::Save: return save(c.text);
+        case Op::Restore: return restore(c.text);
+        case Op::Option: return set_option(c.real == 1);
         case Op::Motor:
+            return set_motor(c.real == 0 ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical);
         case Op::Feedback:
-        case Op::NewWorkpiece:
-        case Op::PrintAxes:
-        case Op::PrintTime:
-        case Op::Mark:
+            return set_feedback(c.real == 0 ? periph::MachineTool::Feedback::Scale : periph::MachineTool::Feedback::Commanded);
+        case Op::NewWorkpiece: return new_workpiece();
+        case Op::PrintAxes: return print_axes();
+        case Op::PrintTime: return print_time();
+        case Op::Mark: return mark();
         case Op::ExpectAxis:
-        case Op::ExpectCount:
-        case Op::ExpectLost:
-        case Op::RunUntilAxis:
-        case Op::Record:
-        case Op::RecordStop:
-        case Op::Plot: return tool_command(c);
-        case Op::PrintDisplay:
-            if (c.text == "text") {
-                output(c, '"' + m.display_text() + '"');
-            } else {
-                std::string art;
-                for (const std::string& line : m.display_art()) art += (art.empty() ? "" : "\n") + line;
-                output(c, art);
-            }
-            return {};
-        case Op::Print: output(c, c.text); return {};
-        default: return expect(c);
+            return c.in_mm ? expect_axis_mm(c.axis, c.compare, c.real, c.within) : expect_axis_steps(c.axis, c.compare, c.integer);
+        case Op::ExpectCount: return expect_count(c.axis, c.compare, c.integer);
+        case Op::ExpectLost: return expect_lost(c.axis, c.compare, c.integer);
+        case Op::RunUntilAxis: return run_until_axis(c.axis, c.compare, c.integer, c.time);
+        case Op::Record: {
+            if (!c.signals) return record(c.text, c.period);
+            std::vector<std::string> pins;
+            for (const Value& v : c.pins) pins.push_back(v.text);
+            return record_signals(c.text, pins, c.period);
+        }
+        case Op::RecordStop: return record_stop();
+        case Op::Plot: return c.name == "TOOLPATH" ? plot_toolpath(c.text, c.ideal_line) : plot_time(c.text);
+        case Op::PrintDisplay: return print_display(c.text == "text");
+        case Op::Print: return print(c.text);
+        case Op::ExpectDisplay: return expect_display(c.text);
+        case Op::ExpectMem: {
+            const auto a = address();
+            const auto b = a ? bytes() : std::nullopt;
+            return b ? expect_mem(*a, *b) : fail(e);
+        }
+        case Op::ExpectWord: {
+            const auto a = address();
+            const auto v = value();
+            return a && v ? expect_word(*a, static_cast<std::uint16_t>(*v)) : fail(e);
+        }
+        case Op::ExpectReg: {
+            const auto v = value();
+            return v ? expect_reg(*c.reg, static_cast<std::uint16_t>(*v)) : fail(e);
+        }
+        case Op::ExpectFlag: {  // the flag of the parsed bit, named as written
+            const auto& flags = cpu::description().flags;
+            const auto f = std::find_if(flags.begin(), flags.end(), [&](const cpu::Flag& x) { return x.bit == c.flag; });
+            if (f == flags.end()) return fail(fmt::format("no flag of bit {:02X}H", c.flag));
+            return expect_flag(*f, c.values[0].number != 0, c.flag_name);
+        }
+        case Op::ExpectPort: {
+            const auto v = value();
+            return v ? expect_port(c.port, static_cast<std::uint8_t>(*v)) : fail(e);
+        }
+        case Op::ExpectSymbol: {
+            const auto v = value();
+            return v ? expect_symbol(c.name, static_cast<std::uint16_t>(*v)) : fail(e);
+        }
+        case Op::ExpectTime: return expect_time(c.compare, c.time);
+        case Op::ExpectHalted: return expect_halted(true);
+        case Op::ExpectRunning: return expect_halted(false);
     }
+    return {};
 }
 
 }  // namespace alp85::script

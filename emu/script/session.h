@@ -3,13 +3,17 @@
 // sources, the script's folder, and the time of the last reset.
 #pragma once
 
+#include <array>
+#include <bitset>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "emu/program/firmware.h"
@@ -17,6 +21,7 @@
 #include "emu/board/machine.h"
 #include "emu/debug/debugger.h"
 #include "emu/debug/signal_record.h"
+#include "emu/debug/signal_trace.h"
 #include "emu/debug/tool_record.h"
 #include "emu/script/command.h"
 #include "emu/script/parser.h"
@@ -66,10 +71,25 @@ public:
             std::optional<std::uint16_t> address;  // where (a .bin needs one)
         };
         std::vector<Image> images;
+        std::vector<std::pair<std::string, std::string>> defines;  // NAME=VALUE for every .asm image
+        std::vector<std::filesystem::path> maps;  // asm85 maps read after the images (a .hex's symbols, lines)
         std::optional<periph::MachineTool::MotorModel> motor;
         bool reset = true;                       // RESET IN once everything is in place
+        // A board without the monitor: after the reset the PC is at the last image's start (its
+        // END address, else its first byte), else at the last firmware's first byte.
+        bool pc_at_program = false;
+        // Keys typed after the reset: the first closes `boot_time` after it, each held kKeyHold
+        // with kKeyGap before the next (as the script's `type`); the machine does not run here.
+        std::vector<KeyRef> keys;
+        std::uint64_t boot_time = 0;
     };
-    Outcome boot(const Boot& b);
+    // What a boot placed: where the CPU may fetch instructions (every RAM byte and every byte
+    // loaded: a fetch anywhere else is a runaway), and the loads' warnings (asm85's, file:line:col).
+    struct BootReport {
+        std::bitset<0x10000> code;
+        std::vector<std::string> warnings;
+    };
+    Outcome boot(const Boot& b, BootReport* report = nullptr);
     Outcome load_monitor();
     Outcome load_firmware(const std::string& name);
     Outcome load_image(const std::filesystem::path& path, std::optional<std::uint16_t> address = {});
@@ -81,11 +101,33 @@ public:
     Outcome record_signals(const std::filesystem::path& vcd, const std::vector<std::string>& pins,
                            std::uint64_t period = kDefaultSignalPeriod);
     Outcome record_stop();
-    Outcome plot_toolpath(const std::filesystem::path& out);
+    // The window's Signals pane (docs/signals.md): the chosen pins (the words of record signals)
+    // kept in memory over the last `span` T-states while the machine runs, beside any recording;
+    // a trace already open is replaced. trace_stop closes it (the board then pays nothing).
+    Outcome trace_signals(const std::vector<std::string>& pins, std::uint64_t span);
+    void trace_stop() { pane_trace_.stop(); }
+    const debug::SignalTrace& signal_trace() const { return pane_trace_; }
+    void set_trace_span(std::uint64_t span) { pane_trace_.set_span(span); }
+    // Every pin a recording or a trace can name, in a recording's order (the pane's picker).
+    std::vector<debug::PinTap::PinName> pin_names() const { return debug::PinTap::pin_names(*machine_); }
+    // The recorded X-Y path and the ideal line between two points (mm; default the path's ends).
+    Outcome plot_toolpath(const std::filesystem::path& out, const std::optional<std::array<double, 4>>& ideal_line = {});
     Outcome set_motor(periph::MachineTool::MotorModel model);
     Outcome new_workpiece();  // the operator's set-up of a new workpiece (the script's `new workpiece`)
-    // A key pressed or released now (a user at the keypad), scheduled where every key is.
-    void key(Button button, periph::Key key, bool down);
+    // A key pressed or released now, or at machine time `at` (a user at the keypad, a press held
+    // long enough for the debounce): the one entrance of every front end's keys.
+    void key(Button button, periph::Key key, bool down, std::optional<std::uint64_t> at = {});
+    // The machine tool sampled every `period` T-states of machine time (a window drawing the
+    // toolpath); an empty function stops it. One sampler: a recording (record) takes its place.
+    void sample_tool(std::uint64_t period, std::function<void(const debug::ToolSample&)> sample);
+    // The address space as a debugger sees it (DAP's readMemory, writeMemory): peek has no side
+    // effects; poke writes RAM or EPROM alike, false where nothing is mapped.
+    std::uint8_t peek(std::uint16_t address) const { return machine_->peek(address); }
+    bool poke(std::uint16_t address, std::uint8_t value) { return machine_->poke(address, value); }
+    // The PC moved by hand (DAP's goto, the console's jump): reverse execution's history ends here.
+    void set_pc(std::uint16_t pc);
+    // The machine's time in T-states (board::kCpuHz a second).
+    std::uint64_t now() const { return machine_->now(); }
     // A serial terminal on SID and SOD (docs/signals.md, "A serial line on SID/SOD"), connected
     // once for the rest of the session; `gap`: idle T-states it leaves between the characters it
     // sends. Failed if one is already connected.
@@ -94,8 +136,52 @@ public:
     // Characters typed at that terminal now, scheduled as the keys are; sent one after another.
     void serial_type(std::string_view text);
 
-    // Runs one command. Failed expectations and commands that cannot be carried out (a load that
-    // falls off the board, a snapshot that is refused, a run-until that times out) give Failed.
+    // Every other command of the language, one call each (docs/scripting.md names them by their
+    // command): the script's lines are parsed, their values resolved, then these do the work.
+    // Keys, runs and breakpoints:
+    Outcome key_now(Button button, periph::Key key, bool down);  // keydown/keyup: changed and delivered now
+    Outcome press(Button button, periph::Key key, std::uint64_t hold = kDefaultHold, std::uint64_t gap = kDefaultGap);
+    Outcome type(const std::vector<KeyRef>& keys, std::uint64_t hold = kDefaultHold, std::uint64_t gap = kDefaultGap);
+    Outcome run(std::uint64_t tstates);
+    Outcome run_until(std::uint16_t address, std::uint64_t timeout = kDefaultUntil);  // passes breakpoints
+    Outcome wait_display(const std::string& text, std::uint64_t timeout = kDefaultWait);
+    Outcome step(unsigned count = 1);
+    Outcome add_breakpoint(std::uint16_t address);
+    Outcome delete_breakpoints(std::uint16_t address);
+    Outcome delete_all_breakpoints();
+    // Changing the machine:
+    Outcome set_mem(std::uint16_t address, const std::vector<std::uint8_t>& bytes);
+    Outcome set_reg(const cpu::Register& reg, std::uint16_t value);  // the value is masked to its width
+    Outcome set_option(bool expansion_eprom);  // option expansion on|off (board::kBoardOptions)
+    Outcome set_feedback(periph::MachineTool::Feedback feedback);
+    Outcome mark();
+    // Showing (as Output events):
+    Outcome print(const std::string& text);
+    Outcome print_display(bool as_text);
+    Outcome print_axes();
+    Outcome print_time();
+    Outcome plot_time(const std::filesystem::path& out);
+    // Expectations: Failed (and an ExpectFailed event) with what was expected and what was found.
+    Outcome expect_display(const std::string& text);
+    Outcome expect_mem(std::uint16_t address, const std::vector<std::uint8_t>& bytes);
+    Outcome expect_word(std::uint16_t address, std::uint16_t value);
+    Outcome expect_reg(const cpu::Register& reg, std::uint16_t value);
+    Outcome expect_flag(const cpu::Flag& flag, bool set, const std::string& name);  // name: as written (C for CY)
+    Outcome expect_port(char port, std::uint8_t value);  // 'A', 'B' or 'C'
+    Outcome expect_symbol(const std::string& name, std::uint16_t value);
+    Outcome expect_time(Compare compare, std::uint64_t tstates);
+    Outcome expect_halted(bool halted);
+    // The machine tool's axes (0 X, 1 Y, 2 Z); steps are whole steps, the nearest one.
+    Outcome expect_axis_steps(std::uint8_t axis, Compare compare, std::int64_t steps);
+    Outcome expect_axis_mm(std::uint8_t axis, Compare compare, double mm, double within);
+    Outcome expect_count(std::uint8_t axis, Compare compare, std::int64_t count);
+    Outcome expect_lost(std::uint8_t axis, Compare compare, std::int64_t lost);
+    Outcome run_until_axis(std::uint8_t axis, Compare compare, std::int64_t steps, std::uint64_t timeout = kDefaultUntil);
+
+    // Runs one command of the language: its values resolved against the symbols of now, then the
+    // typed call above. Failed expectations and commands that cannot be carried out (a load that
+    // falls off the board, a snapshot that is refused, a run-until that times out) give Failed,
+    // the message naming the script line.
     Outcome execute(const Command& command);
     // When set, the files a script writes or keeps between runs (save, restore, record, plot)
     // are relative to this folder instead of the script's (alp85 script --out-dir: tests keep the
@@ -146,22 +232,34 @@ private:
     std::filesystem::path resolve(const std::string& path) const;
     std::filesystem::path resolve_output(const std::string& path) const;
     std::optional<std::int64_t> resolve(const Value& v, std::string& error) const;
-    Outcome fail(const Command& c, std::string what) const;
-    debug::Origin origin(const Command& c) const { return {c.where.file, c.where.line}; }
-    void output(const Command& c, std::string text) const {
-        debugger_.emit({debug::Event::Kind::Output, {}, std::move(text), origin(c)});
+    // Failures name the script line running (execute), if any: its place, its text and the
+    // machine's state; a front end's typed call gets `what` alone.
+    Outcome fail(std::string what) const { return fail_at(line_, std::move(what)); }
+    Outcome fail_at(const Command* line, std::string what) const;
+    debug::Origin origin() const;
+    void output(std::string text) const {
+        debugger_.emit({debug::Event::Kind::Output, {}, std::move(text), origin()});
     }
-    Outcome fail_expect(const Command& c, const std::string& expected, const std::string& actual) const;
+    Outcome fail_expect(const std::string& expected, const std::string& actual) const;
+    // A run that reached --max-time failed, whatever it was for.
+    Outcome ran(Outcome o);
     Outcome run_command(const Command& c);
-    Outcome load(const Command& c);
-    Outcome press(const Command& c, const KeyRef& key, std::uint64_t hold, std::uint64_t gap);
-    Outcome expect(const Command& c);
-    Outcome tool_command(const Command& c);
+    Outcome load_image(const std::filesystem::path& file, std::optional<std::uint16_t> address,
+                       const std::vector<std::pair<std::string, std::string>>& defines);  // a boot's images
+    void placed(const std::vector<ImageSegment>& segments);  // marks them in a boot's report
+    Outcome boot_steps(const Boot& b);
     Outcome write_recording();
     Outcome write_signals();
     Outcome stop_recordings();
-    debug::Stop run_paced(std::uint64_t until, const std::function<bool()>& condition, const debug::Origin& o);
+    debug::Stop run_paced(std::uint64_t until, const std::function<bool()>& condition);
     std::string axes_text() const;
+    periph::MachineTool& tool_now();  // the tool caught up with the machine's time
+    // The state a typed call changed outside a run: reverse execution's history ends there.
+    struct Changed {
+        debug::Debugger& d;
+        bool new_timeline = false;
+        ~Changed() { d.state_changed(new_timeline); }
+    };
 
     SessionOptions options_;
     std::unique_ptr<periph::SerialTerminal> serial_;  // before the machine: it outlives it
@@ -171,14 +269,18 @@ private:
     std::optional<std::uint64_t> mark_;  // `mark`: the time `print time` also counts from
     debug::ToolRecorder recorder_;
     debug::SignalRecorder signals_;
-    Command signals_command_;
+    debug::SignalTrace pane_trace_;  // after machine_: closed (its probe off the board) before the machine goes
+    const Command* line_ = nullptr;           // the script line execute() runs; none during a typed call
+    std::optional<Command> signals_line_;     // the line that started the recordings, for their failures
     std::function<void(std::uint64_t)> pace_;
     std::uint64_t pace_slice_ = 0;
     std::filesystem::path record_path_;
-    Command record_command_;
+    std::optional<Command> record_line_;
     std::map<std::string, LoadedImage> assembled_;  // from check(), by resolved path
     std::vector<std::string> warnings_;
     std::uint64_t time_origin_ = 0;
+    BootReport* report_ = nullptr;  // while boot() runs with one
+    std::optional<std::uint16_t> last_start_;  // the last loaded image's start (END, else its first byte)
     std::ostream* trace_ = nullptr;
     std::vector<NamedPath> inputs_, outputs_;  // add_input, add_output
     std::vector<std::string> written_;         // what this session wrote: restoring it protects nothing

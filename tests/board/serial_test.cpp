@@ -112,7 +112,7 @@ TEST_P(EchoProgram, EchoesWhatItReceivesWithItsBitTime) {
     periph::SerialTerminal term(board::kCpuHz, rate(r.baud), rate(r.baud).frame_tstates(board::kCpuHz));
     m.connect_serial(term);
     SodProbe probe(m);
-    m.set_probe(&probe);
+    m.add_probe(&probe);
     m.run_until(1000);  // the program sets SOD to mark and listens
     ASSERT_EQ(probe.edges.size(), 1u);
     probe.edges.clear();

@@ -10,6 +10,10 @@
 //   gui_pixels SHOT.png --tool X,Y --bounds X0,Y0,X1,Y1 [--not-tool X,Y]
 //                                                  the tool's colour where the table view (fitted to
 //                                                  the bounds, mm) draws the table position X,Y
+//   gui_pixels SHOT.png --signal ROW,X0,X1,H|L   the Signals pane: pin ROW's trace is high (H) or low
+//                                                  (L) from x X0 to X1: its colour on that level's
+//                                                  line at every pixel, and not on the other's
+//   gui_pixels SHOT.png --cursor A|B,X             the Signals pane: that cursor's line at x X
 //   gui_pixels SHOT.png --fits W,H | --size W,H ...
 //                                                  a scaled window: the screenshot lies within W x H
 //                                                  (or is exactly W x H), and every check above is
@@ -127,6 +131,24 @@ int main(int argc, char** argv) {
             }
         } else if (opt == "--fits" || opt == "--size") {
             continue;
+        } else if (opt == "--signal") {
+            // The lines are drawn 2 pixels thick about y + 0.5 (ImGui's pixel centres): row y is inside.
+            const Rect row = signals_row(std::stoi(items[0]));
+            const float x0 = std::stof(items[1]), x1 = std::stof(items[2]);
+            const bool high = items[3] == "H";
+            const float on = row.y + (high ? kSignalsHigh : kSignalsLow), off = row.y + (high ? kSignalsLow : kSignalsHigh);
+            int bad = 0;
+            for (float x = x0; x <= x1; ++x) {
+                const Vec2 a = to_window(g_fit, x, on), b = to_window(g_fit, x, off);
+                const bool ok = near(img.at(static_cast<int>(a.x), static_cast<int>(a.y)), colour::kSignal) &&
+                                !near(img.at(static_cast<int>(b.x), static_cast<int>(b.y)), colour::kSignal);
+                if (!ok && bad++ == 0) std::printf("FAIL signal row %s is not %s at x %g\n", items[0].c_str(), high ? "high" : "low", x);
+            }
+            if (bad) ++failures;
+            else std::printf("ok   signal row %s %s from x %g to %g\n", items[0].c_str(), high ? "high" : "low", x0, x1);
+        } else if (opt == "--cursor") {
+            expect(img, {std::stof(items[1]), kSignalsTop - 2}, items[0] == "A" ? colour::kCursorA : colour::kCursorB,
+                   "cursor " + items[0]);
         } else if (opt == "--text-in" || opt == "--blank-in") {
             // Text drawn: enough light pixels (ImGui's text is near white on the dark panes);
             // blank: none at all.

@@ -10,11 +10,11 @@
 #include "emu/gui/controls.h"
 #include "emu/gui/debug_panes.h"
 #include "emu/gui/input.h"
-#include "emu/gui/keys.h"
+#include "emu/front/keys.h"
 #include "emu/gui/layout.h"
-#include "emu/gui/pacer.h"
+#include "emu/front/pacer.h"
 #include "emu/gui/tool_view.h"
-#include "emu/gui/toolpath.h"
+#include "emu/front/toolpath.h"
 #include "tests/board/led_latch.h"
 
 namespace alp85::gui {
@@ -43,6 +43,18 @@ TEST(Pacer, SpeedsScaleTheRateAndAFallenBehindMachineIsRebased) {
     EXPECT_EQ(p.target(0, t0 + 2s), static_cast<std::uint64_t>(0.25 * 307.2e6));
     p.set_speed(0, 0, t0);
     EXPECT_TRUE(p.max_speed());
+}
+
+// DAP's wait between slices: 3,072,000 T-states are 1 s of the board at 3.072 MHz; a quarter of a
+// second of host time after the base, the machine is 750 ms ahead. Behind, or at max speed: no wait.
+TEST(Pacer, AheadIsTheMachinesLeadOverTheHostClock) {
+    Pacer p;
+    const HostClock::time_point t0{};
+    p.set_speed(1, 0, t0);
+    EXPECT_EQ(p.ahead(3'072'000, t0 + 250ms), 750ms);
+    EXPECT_EQ(p.ahead(3'072'000, t0 + 2s), 0ms);
+    p.set_speed(0, 0, t0);
+    EXPECT_EQ(p.ahead(3'072'000, t0), 0ms);
 }
 
 TEST(FrameClock, DeadlinesAreAbsoluteAndAnOverrunSkipsAhead) {
@@ -84,11 +96,12 @@ TEST(Layout, EveryButtonIsFoundAtItsCentreAndTheyDoNotOverlap) {
 }
 
 TEST(Presser, AShortClickIsHeldForTheDebounce) {
-    Machine m;
+    script::Session session{script::SessionOptions{}};
+    Machine& m = session.machine();
     Presser p;
     const PadKey seven = *find_pad_key("7");
-    p.down(seven, m);
-    p.up(seven, m);  // released at once on the host: the machine still sees 30 ms
+    p.down(seven, session);
+    p.up(seven, session);  // released at once on the host: the machine still sees 30 ms
     m.run_for(board::tstates_from_ms(29));
     EXPECT_TRUE(m.keypad().is_pressed(periph::Key::K7));
     m.run_for(board::tstates_from_ms(2));
@@ -100,12 +113,13 @@ TEST(Presser, AShortClickIsHeldForTheDebounce) {
 // opened (emu/board/key_press.h, the script's defaults), so the 8279 sees three presses: 0 over
 // 0-30 ms, 0 over 60-90 ms, EXEC over 120-150 ms. Sampled in the middle of each interval.
 TEST(Presser, PressesWithinOneFrameAreQueuedNotLost) {
-    Machine m;
+    script::Session session{script::SessionOptions{}};
+    Machine& m = session.machine();
     Presser p;
     const PadKey zero = *find_pad_key("0"), exec = *find_pad_key("EXEC");
     for (const PadKey& k : {zero, zero, exec}) {
-        p.down(k, m);
-        p.up(k, m);
+        p.down(k, session);
+        p.up(k, session);
     }
     const auto at = [&](int ms) { m.run_until(board::tstates_from_ms(ms)); };
     at(15);
@@ -162,17 +176,18 @@ void set_line_variables(Machine& m, Toolpath& path) {
 }
 
 TEST(Toolpath, TheIdealLineStartsWhereTheTableStoodWhenTheMoveBegan) {
-    Machine m;
+    script::Session session{script::SessionOptions{}};
+    Machine& m = session.machine();
     Toolpath path;
     set_line_variables(m, path);
     debug::ToolSample s;
     s.t = 0;
-    path.observe(s, m);
+    path.observe(s, session);
     s.t = Toolpath::kIdle + 10;
     s.axes[0].commanded = 1;  // the first step after a pause: the move began at 0,0
     s.axes[0].mm = 0.05;
-    path.observe(s, m);
-    const auto line = path.ideal(m);
+    path.observe(s, session);
+    const auto line = path.ideal(session);
     ASSERT_TRUE(line);
     EXPECT_TRUE(line->started);
     EXPECT_DOUBLE_EQ(line->from.x, 0);
@@ -180,7 +195,7 @@ TEST(Toolpath, TheIdealLineStartsWhereTheTableStoodWhenTheMoveBegan) {
     EXPECT_DOUBLE_EQ(line->to.y, 7.5);
     EXPECT_DOUBLE_EQ(line->origin.x, -5);
     EXPECT_DOUBLE_EQ(line->origin.y, -2.5);
-    const Bounds w = path.workpiece(m);
+    const Bounds w = path.workpiece(session);
     EXPECT_DOUBLE_EQ(w.x1, 35);
     EXPECT_EQ(path.points().size(), 2u);
 }
@@ -189,7 +204,8 @@ TEST(Toolpath, TheIdealLineStartsWhereTheTableStoodWhenTheMoveBegan) {
 // well within kIdle of the first sample, and still begins the move; the line stays where the move
 // began while the table goes on.
 TEST(Toolpath, AMoveBegunRightAfterAClearStartsWhereTheTableStood) {
-    Machine m;
+    script::Session session{script::SessionOptions{}};
+    Machine& m = session.machine();
     Toolpath path;
     set_line_variables(m, path);
     for (int round = 0; round < 2; ++round) {  // and again after a second clear
@@ -198,12 +214,12 @@ TEST(Toolpath, AMoveBegunRightAfterAClearStartsWhereTheTableStood) {
         debug::ToolSample s;
         s.t = Toolpath::kIdle * 10 * static_cast<std::uint64_t>(round);
         s.axes[0].commanded = at;
-        path.observe(s, m);
+        path.observe(s, session);
         for (int step = 1; step <= 3; ++step) {  // steps 3 ms apart, far less than kIdle
             s.t += board::tstates_from_ms(3);
             s.axes[0].commanded = at + step;
-            path.observe(s, m);
-            const auto line = path.ideal(m);
+            path.observe(s, session);
+            const auto line = path.ideal(session);
             ASSERT_TRUE(line);
             EXPECT_TRUE(line->started);
             EXPECT_DOUBLE_EQ(line->from.x, 0.05 * static_cast<double>(at));
@@ -218,37 +234,38 @@ TEST(Toolpath, AMoveBegunRightAfterAClearStartsWhereTheTableStood) {
 // table stands, (10, 7.5) to (20, 15), was never commanded: no line until the next move begins, and
 // the workpiece where the finished move puts it: X2, Y2 steps before where the table stands.
 TEST(Toolpath, ARestoredSnapshotDrawsNoLineUntilTheNextMoveBegins) {
-    Machine m;
+    script::Session session{script::SessionOptions{}};
+    Machine& m = session.machine();
     Toolpath path;
     path.set_variables(0x1B00);
     for (auto [a, v] : {std::pair{0x1B00, 0}, {0x1B03, 0}, {0x1B06, 200}, {0x1B09, 150}}) {
         m.poke(static_cast<std::uint16_t>(a), static_cast<std::uint8_t>(v & 0xFF));
         m.poke(static_cast<std::uint16_t>(a + 1), static_cast<std::uint8_t>(v >> 8));
     }
-    ASSERT_TRUE(path.ideal(m));  // the line as a reset leaves it: from where the table stands
+    ASSERT_TRUE(path.ideal(session));  // the line as a reset leaves it: from where the table stands
     path.restored();
-    EXPECT_FALSE(path.ideal(m));
+    EXPECT_FALSE(path.ideal(session));
     // This machine's sequencers stand at 0 steps: the finished move began 200, 150 steps before.
-    const Bounds w = path.workpiece(m);
+    const Bounds w = path.workpiece(session);
     EXPECT_DOUBLE_EQ(w.x0, -200 * 0.05);
     EXPECT_DOUBLE_EQ(w.y0, -150 * 0.05);
     debug::ToolSample s;
     s.t = 1000;
     s.axes[0].commanded = 200, s.axes[1].commanded = 150;  // where Bitti left the table
-    path.observe(s, m);
-    EXPECT_FALSE(path.ideal(m));
+    path.observe(s, session);
+    EXPECT_FALSE(path.ideal(session));
     // The middle of a move restored: steps 3 ms apart, never kIdle standing: still no line.
     for (int step = 1; step <= 20; ++step) {
         s.t += board::tstates_from_ms(3);
         s.axes[0].commanded = 200 + step;
-        path.observe(s, m);
-        EXPECT_FALSE(path.ideal(m)) << "step " << step;
+        path.observe(s, session);
+        EXPECT_FALSE(path.ideal(session)) << "step " << step;
     }
     // The table stands for kIdle, then the next move begins: its line starts where the table stood.
     s.t += Toolpath::kIdle;
     s.axes[0].commanded = 221;
-    path.observe(s, m);
-    const auto line = path.ideal(m);
+    path.observe(s, session);
+    const auto line = path.ideal(session);
     ASSERT_TRUE(line);
     EXPECT_TRUE(line->started);
     EXPECT_DOUBLE_EQ(line->from.x, 220 * 0.05);

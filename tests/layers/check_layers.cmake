@@ -14,13 +14,16 @@ set(allowed_emu/pisa     "emu/pisa/;emu/util/;emu/plot/;peripherals/;asm/pisa_is
 set(allowed_emu/debug    "emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
 set(allowed_emu/script   "emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/isa.h")
 set(allowed_emu/cpm      "emu/cpm/;emu/program/ihex.h;emu/core/;emu/util/;asm/isa.h")
-set(allowed_emu/bench    "emu/bench/;emu/dap/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
-set(allowed_emu/gui      "emu/gui/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/isa.h")
-set(allowed_emu/dap      "emu/dap/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/isa.h")
-# The web page's binding: a front end as thin as the window, sharing the window's plain parts
-# (the keypad's layout, the key map and presses, pacing, the toolpath), none of SDL's.
-set(allowed_web          "web/;emu/gui/layout.h;emu/gui/keys.h;emu/gui/pacer.h;emu/gui/toolpath.h;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/gcode/;peripherals/;asm/asm85.h;asm/isa.h")
-set(layers asm emu/util emu/core peripherals emu/board emu/program emu/plot emu/gcode emu/pisa emu/debug emu/script emu/cpm emu/bench emu/gui emu/dap web)
+set(allowed_emu/bench    "emu/bench/;emu/dap/;emu/front/;emu/script/;emu/debug/;emu/program/;emu/board/;emu/core/;emu/util/;emu/plot/;peripherals/;asm/")
+# The front ends (the window, DAP, the web page) reach the board only through the Session and the
+# Debugger, and the library they share (emu/front: keys, the pacer, the toolpath, views of the
+# display and the tool): nothing of emu/board, emu/core or peripherals/ (docs/architecture.md).
+set(allowed_emu/front    "emu/front/;emu/script/;emu/debug/")
+set(allowed_emu/gui      "emu/gui/;emu/front/;emu/script/;emu/debug/;emu/program/;emu/util/;emu/plot/;asm/isa.h")
+set(allowed_emu/dap      "emu/dap/;emu/front/;emu/script/;emu/debug/;emu/program/;emu/util/;emu/plot/;asm/isa.h")
+# The web page's binding: a front end as thin as the window, on the same shared library, none of SDL's.
+set(allowed_web          "web/;emu/front/;emu/script/;emu/debug/;emu/program/;emu/util/;emu/gcode/;asm/asm85.h;asm/isa.h")
+set(layers asm emu/util emu/core peripherals emu/board emu/program emu/plot emu/gcode emu/pisa emu/debug emu/script emu/front emu/cpm emu/bench emu/gui emu/dap web)
 
 set(violations "")
 foreach(layer ${layers})

@@ -229,5 +229,24 @@ TEST_F(ScriptFolder, ExpectPortChecksTheLatchOfAnInputPort) {
     EXPECT_TRUE(run("ports.alp", report)) << report;
 }
 
+// The typed API does the work itself: no command, no script line in between.
+TEST_F(SessionTest, TypedCallsWorkWithoutAScriptLine) {
+    ASSERT_EQ(s.load_image("hello.asm").status, Session::Status::Ok);
+    EXPECT_EQ(s.set_mem(0x1000, {0x12, 0x34}).status, Session::Status::Ok);
+    EXPECT_EQ(s.expect_word(0x1000, 0x3412).status, Session::Status::Ok);  // little-endian
+    const auto o = s.expect_mem(0x1000, {0x12, 0x35});
+    EXPECT_EQ(o.status, Session::Status::Failed);
+    EXPECT_EQ(o.message, "expectation failed: expected: 12H 35H at 1000H; actual: 12H 34H");
+    EXPECT_EQ(s.set_reg(*cpu::description().find("HL"), 0x1234).status, Session::Status::Ok);
+    EXPECT_EQ(s.expect_reg(*cpu::description().find("H"), 0x12).status, Session::Status::Ok);
+    EXPECT_EQ(s.reset().status, Session::Status::Ok);
+    // hello.asm shows HELL0 within 2 ms of RESET (WaitDisplayStopsWhenTheTextAppears above).
+    EXPECT_EQ(s.wait_display("HELL0", 30720).status, Session::Status::Ok);
+    EXPECT_EQ(s.expect_display("HELL0").status, Session::Status::Ok);
+    const auto late = s.run_until(0x0003, 3072);  // never reached: the JMP at 0000H jumps over it
+    EXPECT_EQ(late.status, Session::Status::Failed);
+    EXPECT_EQ(late.message, "the PC did not reach 0003H within 1.000 ms (3072 T-states)");
+}
+
 }  // namespace
 }  // namespace alp85::script

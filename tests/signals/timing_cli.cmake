@@ -67,7 +67,7 @@ endforeach()
 # The diagrams of docs/signals.md, written by the command once its output was checked above
 # (-DDOC_IMG=docs/img when ALP85_DOC_IMAGES is on).
 if(DOC_IMG)
-  foreach(pair "MVI A,32H|mvi" "STA 2050H|sta" "CALL 0900H|call")
+  foreach(pair "MVI A,32H|mvi" "STA 2050H|sta" "CALL 0900H|call" "OUT 0F9H|out")
     string(REPLACE "|" ";" p "${pair}")
     list(GET p 0 instruction)
     list(GET p 1 name)

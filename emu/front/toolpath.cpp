@@ -1,12 +1,22 @@
-#include "emu/gui/toolpath.h"
+#include "emu/front/toolpath.h"
 
+#include <algorithm>
 #include <cmath>
 
-namespace alp85::gui {
+namespace alp85::front {
 namespace {
 constexpr double kStepMm = 0.05;   // lead / steps per revolution (docs/machine.md)
 constexpr double kMinMove = 0.005; // mm between recorded points
 }  // namespace
+
+void Bounds::add(double x, double y) {
+    if (empty()) {
+        *this = {x, y, x, y};
+        return;
+    }
+    x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+}
+
 
 void Toolpath::clear() {
     points_.clear();
@@ -22,18 +32,19 @@ void Toolpath::restored() {
     past_unknown_ = true;
 }
 
-std::optional<std::array<std::int32_t, 4>> Toolpath::read_vars(const Machine& m) const {
+std::optional<std::array<std::int32_t, 4>> Toolpath::read_vars(const script::Session& s) const {
     if (!vars_at_) return std::nullopt;
     std::array<std::int32_t, 4> v{};
     for (int i = 0; i < 4; ++i) {
         const auto a = static_cast<std::uint16_t>(*vars_at_ + 3 * i);
-        v[static_cast<std::size_t>(i)] = m.peek(a) | m.peek(static_cast<std::uint16_t>(a + 1)) << 8;
+        v[static_cast<std::size_t>(i)] = s.machine().peek(a) | s.machine().peek(static_cast<std::uint16_t>(a + 1)) << 8;
     }
     if (v[0] == 0 && v[1] == 0 && v[2] == 0 && v[3] == 0) return std::nullopt;
     return v;
 }
 
-void Toolpath::observe(const debug::ToolSample& s, const Machine& m) {
+void Toolpath::observe(const debug::ToolSample& sample, const script::Session& session) {
+    const debug::ToolSample& s = sample;
     const PointMm p{s.axes[0].mm, s.axes[1].mm};
     if (points_.empty() || std::hypot(p.x - points_.back().x, p.y - points_.back().y) >= kMinMove) {
         if (points_.size() >= kMaxPoints) {  // keep every other point
@@ -50,7 +61,7 @@ void Toolpath::observe(const debug::ToolSample& s, const Machine& m) {
     }
     if (cmd != last_cmd_) {
         if (cleared_ || s.t - last_change_ >= kIdle) {  // a move starts from where the table stood
-            if (const auto v = read_vars(m)) {
+            if (const auto v = read_vars(session)) {
                 anchor_ = last_cmd_;
                 anchor_vars_ = *v;
                 past_unknown_ = false;
@@ -62,7 +73,7 @@ void Toolpath::observe(const debug::ToolSample& s, const Machine& m) {
     }
 }
 
-std::optional<Toolpath::Line> Toolpath::ideal(const Machine& m) const {
+std::optional<Toolpath::Line> Toolpath::ideal(const script::Session& s) const {
     std::array<std::int32_t, 4> v{};
     std::array<std::int64_t, 2> from{};
     Line line;
@@ -71,11 +82,10 @@ std::optional<Toolpath::Line> Toolpath::ideal(const Machine& m) const {
     } else if (past_unknown_) {
         return std::nullopt;
     } else {
-        const auto now = read_vars(m);
+        const auto now = read_vars(s);
         if (!now) return std::nullopt;
         v = *now;
-        from = {m.tool().commanded_steps(periph::MachineTool::Axis::X),
-                m.tool().commanded_steps(periph::MachineTool::Axis::Y)};
+        from = {s.machine().tool().commanded_steps(periph::MachineTool::Axis::X), s.machine().tool().commanded_steps(periph::MachineTool::Axis::Y)};
     }
     line.from = {static_cast<double>(from[0]) * kStepMm, static_cast<double>(from[1]) * kStepMm};
     line.to = {line.from.x + (v[2] - v[0]) * kStepMm, line.from.y + (v[3] - v[1]) * kStepMm};
@@ -83,15 +93,15 @@ std::optional<Toolpath::Line> Toolpath::ideal(const Machine& m) const {
     return line;
 }
 
-Bounds Toolpath::workpiece(const Machine& m) const {
+Bounds Toolpath::workpiece(const script::Session& s) const {
     PointMm o{};
-    if (const auto l = ideal(m)) {
+    if (const auto l = ideal(s)) {
         o = l->origin;
-    } else if (const auto v = past_unknown_ ? read_vars(m) : std::nullopt) {  // standing at (X2, Y2)
-        o = {static_cast<double>(m.tool().commanded_steps(periph::MachineTool::Axis::X) - (*v)[2]) * kStepMm,
-             static_cast<double>(m.tool().commanded_steps(periph::MachineTool::Axis::Y) - (*v)[3]) * kStepMm};
+    } else if (const auto v = past_unknown_ ? read_vars(s) : std::nullopt) {  // standing at (X2, Y2)
+        o = {static_cast<double>(s.machine().tool().commanded_steps(periph::MachineTool::Axis::X) - (*v)[2]) * kStepMm,
+             static_cast<double>(s.machine().tool().commanded_steps(periph::MachineTool::Axis::Y) - (*v)[3]) * kStepMm};
     }
     return {o.x, o.y, o.x + kWorkpieceW, o.y + kWorkpieceH};
 }
 
-}  // namespace alp85::gui
+}  // namespace alp85::front

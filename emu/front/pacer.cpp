@@ -1,8 +1,8 @@
-#include "emu/gui/pacer.h"
+#include "emu/front/pacer.h"
 
 #include <limits>
 
-namespace alp85::gui {
+namespace alp85::front {
 
 void Pacer::set_speed(double speed, std::uint64_t machine_now, HostClock::time_point host) {
     speed_ = speed;
@@ -27,6 +27,13 @@ std::uint64_t Pacer::target(std::uint64_t machine_now, HostClock::time_point hos
     return goal;
 }
 
+std::chrono::milliseconds Pacer::ahead(std::uint64_t machine_now, HostClock::time_point host) const {
+    if (max_speed() || machine_now <= base_t_) return std::chrono::milliseconds{0};
+    const double machine_s = static_cast<double>(machine_now - base_t_) / (kClockHz * speed_);
+    const double lead = machine_s - std::chrono::duration<double>(host - base_host_).count();
+    return std::chrono::milliseconds{lead > 0 ? static_cast<std::int64_t>(lead * 1000) : 0};
+}
+
 HostClock::time_point FrameClock::next(HostClock::time_point now, int every) {
     ++frame_;
     frame_ += (every - frame_ % every) % every;
@@ -39,4 +46,4 @@ HostClock::time_point FrameClock::next(HostClock::time_point now, int every) {
     return deadline;
 }
 
-}  // namespace alp85::gui
+}  // namespace alp85::front

@@ -1,18 +1,31 @@
-#include "emu/gui/keys.h"
+#include "emu/front/keys.h"
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <string>
 
-#include "emu/board/key_press.h"
-
-namespace alp85::gui {
+namespace alp85::front {
 namespace {
 
 bool same(const PadKey& a, const PadKey& b) { return a.pad == b.pad && (a.pad != Button::Matrix || a.key == b.key); }
 
-void apply(const PadKey& k, bool down, std::uint64_t at, Machine& m) { schedule_key(m, k.pad, k.key, down, at); }
+void apply(const PadKey& k, bool down, std::uint64_t at, script::Session& s) { s.key(k.pad, k.key, down, at); }
+
+using periph::Key;
+constexpr std::array<PadKey, 26> kPad{{
+    {Button::Reset, Key::K0, 0, 0}, {Button::Vect, Key::K0, 0, 1}, {Button::Matrix, Key::R, 0, 2},
+    {Button::Matrix, Key::KC, 0, 3}, {Button::Matrix, Key::KD, 0, 4}, {Button::Matrix, Key::KE, 0, 5},
+    {Button::Matrix, Key::KF, 0, 6},
+    {Button::Matrix, Key::Reg, 1, 0}, {Button::Matrix, Key::Mem, 1, 1}, {Button::Matrix, Key::Go, 1, 2},
+    {Button::Matrix, Key::K8, 1, 3}, {Button::Matrix, Key::K9, 1, 4}, {Button::Matrix, Key::KA, 1, 5},
+    {Button::Matrix, Key::KB, 1, 6},
+    {Button::Matrix, Key::Step, 2, 0}, {Button::Matrix, Key::Prev, 2, 1}, {Button::Matrix, Key::Next, 2, 2},
+    {Button::Matrix, Key::K4, 2, 3}, {Button::Matrix, Key::K5, 2, 4}, {Button::Matrix, Key::K6, 2, 5},
+    {Button::Matrix, Key::K7, 2, 6},
+    {Button::Matrix, Key::Exec, 3, 2}, {Button::Matrix, Key::K0, 3, 3}, {Button::Matrix, Key::K1, 3, 4},
+    {Button::Matrix, Key::K2, 3, 5}, {Button::Matrix, Key::K3, 3, 6},
+}};
 
 // The function keys on the PC (the hex keys are their own names); key_map_rows describes them.
 // The last two are the browser's names (KeyboardEvent.key) of Esc and Space.
@@ -31,6 +44,18 @@ bool same_name(std::string_view a, std::string_view b) {
 }  // namespace
 
 std::span<const PcKey> pc_keys() { return kPcKeys; }
+
+std::span<const PadKey> pad_keys() { return kPad; }
+
+std::optional<PadKey> find_pad_key(std::string_view name) {
+    if (same_name(name, "RESET")) return kPad[0];
+    if (same_name(name, "VECT") || same_name(name, "VECT INTR") || same_name(name, "VECTINTR")) return kPad[1];
+    const auto key = periph::Keypad::find(name);
+    if (!key) return std::nullopt;
+    for (const PadKey& k : kPad)
+        if (k.pad == Button::Matrix && k.key == *key) return k;
+    return std::nullopt;
+}
 
 std::optional<PadKey> pad_key_for_pc(std::string_view pc_name) {
     if (pc_name.size() == 1 && std::isxdigit(static_cast<unsigned char>(pc_name[0])))
@@ -90,7 +115,7 @@ std::optional<std::string_view> feed_prompt_hint(std::string_view display, bool 
     return "F 0006-1500 mm/min; F <= 0300 runs away along X (physical motors)";
 }
 
-void Presser::down(const PadKey& k, Machine& m) {
+void Presser::down(const PadKey& k, script::Session& m) {
     if (held(k)) return;
     // After a press whose release is still to come (a short one), this one waits its turn: closed
     // with it, it would merge into it (the same key) or be two keys at once to the 8279. A queue
@@ -100,7 +125,7 @@ void Presser::down(const PadKey& k, Machine& m) {
     apply(k, true, at, m);
 }
 
-void Presser::up(const PadKey& k, Machine& m) {
+void Presser::up(const PadKey& k, script::Session& m) {
     const auto it = std::find_if(held_.begin(), held_.end(), [&](const Held& h) { return same(h.key, k); });
     if (it == held_.end()) return;
     const std::uint64_t release = std::max(m.now(), it->since + kMinHold);
@@ -109,7 +134,7 @@ void Presser::up(const PadKey& k, Machine& m) {
     held_.erase(it);
 }
 
-void Presser::release_all(Machine& m) {
+void Presser::release_all(script::Session& m) {
     while (!held_.empty()) up(held_.back().key, m);
 }
 
@@ -117,4 +142,4 @@ bool Presser::held(const PadKey& k) const {
     return std::any_of(held_.begin(), held_.end(), [&](const Held& h) { return same(h.key, k); });
 }
 
-}  // namespace alp85::gui
+}  // namespace alp85::front

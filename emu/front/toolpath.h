@@ -21,11 +21,18 @@
 #include <optional>
 #include <vector>
 
-#include "emu/board/machine.h"
 #include "emu/debug/tool_record.h"
-#include "emu/gui/layout.h"
+#include "emu/script/session.h"
 
-namespace alp85::gui {
+namespace alp85::front {
+
+// A part of the table in mm (x0 > x1: none).
+struct Bounds {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // mm
+    void add(double x, double y);
+    bool empty() const { return x1 < x0; }
+    static Bounds none() { return {1, 1, 0, 0}; }
+};
 
 struct PointMm {
     double x = 0, y = 0;
@@ -39,7 +46,7 @@ public:
 
     // Where X1 lives (the rest follow 3 bytes apart); nullopt: no thesis variables, no line.
     void set_variables(std::optional<std::uint16_t> x1) { vars_at_ = x1; }
-    void observe(const debug::ToolSample& s, const Machine& m);
+    void observe(const debug::ToolSample& sample, const script::Session& s);
     void clear();
     void restored();  // clear(), and the table's past is unknown
 
@@ -50,13 +57,13 @@ public:
         bool started = false;
     };
     // The ideal line in table mm (with the commanded position `now_cmd` when no move has started).
-    std::optional<Line> ideal(const Machine& m) const;
+    std::optional<Line> ideal(const script::Session& s) const;
     // The workpiece outline: kWorkpieceW x kWorkpieceH mm from the thesis's origin (the power-on
     // position when there is no line).
-    Bounds workpiece(const Machine& m) const;
+    Bounds workpiece(const script::Session& s) const;
 
 private:
-    std::optional<std::array<std::int32_t, 4>> read_vars(const Machine& m) const;
+    std::optional<std::array<std::int32_t, 4>> read_vars(const script::Session& s) const;
 
     std::optional<std::uint16_t> vars_at_;
     std::vector<PointMm> points_;
@@ -69,4 +76,4 @@ private:
     std::array<std::int32_t, 4> anchor_vars_{};
 };
 
-}  // namespace alp85::gui
+}  // namespace alp85::front

@@ -13,11 +13,22 @@
 #include <string_view>
 #include <vector>
 
-#include "emu/board/key_press.h"
-#include "emu/board/machine.h"
-#include "emu/gui/layout.h"
+#include "emu/script/session.h"
 
-namespace alp85::gui {
+namespace alp85::front {
+
+// The 24 matrix keys and RESET, VECT INTR, as docs/peripherals.md arranges them (front view):
+//   RESET VECT  R    C D E F
+//   REG   MEM   GO   8 9 A B
+//   STEP  PREV  NEXT 4 5 6 7
+//               EXEC 0 1 2 3
+struct PadKey {
+    Button pad = Button::Matrix;  // the board's button (its one enum, through the Session)
+    periph::Key key = periph::Key::K0;  // for Matrix
+    int row = 0, col = 0;
+};
+std::span<const PadKey> pad_keys();  // 26 buttons
+std::optional<PadKey> find_pad_key(std::string_view name);  // "R", "EXEC", "RESET", "VECT", ...
 
 inline constexpr std::uint64_t kMinHold = kKeyHold;
 inline constexpr std::uint64_t kMinGap = kKeyGap;
@@ -51,9 +62,10 @@ std::optional<std::string_view> feed_prompt_hint(std::string_view display, bool 
 class Presser {
 public:
     // Button down / up from the mouse or the keyboard (a second down of a held key is ignored).
-    void down(const PadKey& k, Machine& m);
-    void up(const PadKey& k, Machine& m);
-    void release_all(Machine& m);
+    // Each goes to the board through Session::key.
+    void down(const PadKey& k, script::Session& s);
+    void up(const PadKey& k, script::Session& s);
+    void release_all(script::Session& s);
     bool held(const PadKey& k) const;
 
 private:
@@ -65,4 +77,4 @@ private:
     std::uint64_t free_at_ = 0;  // machine time from which the next press may close
 };
 
-}  // namespace alp85::gui
+}  // namespace alp85::front

@@ -4,6 +4,9 @@
 // more than kMaxLag behind (it cannot keep up: it then runs as fast as it can, and the clock does
 // not try to catch up afterwards). Speed 0 means as fast as possible.
 //
+// The one pacer of every front end: the window's and the page's frames, DAP's slices between
+// messages.
+//
 // Frames: next_frame() gives the deadline of the next frame (60 per second), from an absolute
 // start as well; a frame that overran skips the deadlines it missed.
 #pragma once
@@ -11,9 +14,9 @@
 #include <chrono>
 #include <cstdint>
 
-#include "emu/board/board_map.h"
+#include "emu/script/session.h"
 
-namespace alp85::gui {
+namespace alp85::front {
 
 using HostClock = std::chrono::steady_clock;
 
@@ -28,6 +31,9 @@ public:
     void rebase(std::uint64_t machine_now, HostClock::time_point host);
     // The machine time to reach by `host` (for max speed: no limit, the caller's budget decides).
     std::uint64_t target(std::uint64_t machine_now, HostClock::time_point host);
+    // How far the machine is ahead of the host's clock, in host time (0 when behind or at max
+    // speed): how long a front end between slices (DAP) waits before the next.
+    std::chrono::milliseconds ahead(std::uint64_t machine_now, HostClock::time_point host) const;
 
 private:
     double speed_ = 1;
@@ -53,4 +59,4 @@ private:
     std::int64_t frame_ = 0;
 };
 
-}  // namespace alp85::gui
+}  // namespace alp85::front

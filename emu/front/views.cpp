@@ -1,0 +1,25 @@
+#include "emu/front/views.h"
+
+namespace alp85::front {
+
+DisplayView display_view(const script::Session& s) { return {s.machine().display(), s.machine().display_text()}; }
+
+CpuView cpu_view(const script::Session& s) {
+    const auto& cpu = s.machine().cpu();
+    return {cpu.regs().pc, cpu.halted()};
+}
+
+ToolView tool_view(const script::Session& s) {
+    ToolView v;
+    const auto& tool = s.machine().tool();
+    v.model = tool.model();
+    for (std::size_t a = 0; a < v.axes.size(); ++a) {
+        const auto axis = static_cast<Axis>(a);
+        v.axes[a] = {tool.table_mm(axis),         tool.table_steps(axis),   tool.rotor_angle_deg(axis),
+                     tool.commanded_steps(axis),  tool.transducer_count(axis), tool.lost_steps(axis),
+                     tool.end_stop(axis).at,      tool.phase_pattern(axis),  tool.params().axes[a].table.travel_mm};
+    }
+    return v;
+}
+
+}  // namespace alp85::front

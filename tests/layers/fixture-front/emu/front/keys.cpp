@@ -1,0 +1,2 @@
+// The shared library pressing keys on the Machine: refused.
+#include "emu/board/key_press.h"
