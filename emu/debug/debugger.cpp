@@ -84,14 +84,6 @@ Stop Debugger::finish_stop(Stop s) {
 }
 
 namespace {
-Stop from_hit(Stop s, const Hit& h) {
-    s.number = h.number;
-    s.numbers = h.numbers;
-    s.changes = h.changes;
-    s.data = h.data;
-    s.after = h.after;
-    return s;
-}
 std::string runaway_message(const Machine& m, std::uint16_t pc, std::optional<std::uint16_t> after) {
     const Variant v = m.cpu().variant();
     std::string text = fmt::format("the program ran away: it fetched an instruction at {:04X}H ({}), where no program is",

@@ -31,6 +31,16 @@ struct Hit {
     std::vector<int> numbers{};  // breakpoints: all that stop here
 };
 
+// A stop at a hit: what stopped the run, as the stop reports it.
+inline Stop from_hit(Stop s, const Hit& h) {
+    s.number = h.number;
+    s.numbers = h.numbers;
+    s.changes = h.changes;
+    s.data = h.data;
+    s.after = h.after;
+    return s;
+}
+
 class Debugger::Observer final : public RunObserver {
 public:
     explicit Observer(Debugger& d) : d_(d) {}

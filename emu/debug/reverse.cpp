@@ -228,13 +228,7 @@ Stop Debugger::reverse_continue() {
         if (!best) continue;
         const Hit hit = std::move(*best);
         if (!replay(*c, hit.t, nullptr, nullptr)) return interrupted_reverse();
-        Stop s = here(hit.reason);
-        s.number = hit.number;
-        s.numbers = hit.numbers;
-        s.changes = hit.changes;
-        s.data = hit.data;
-        s.after = hit.after;
-        return s;
+        return from_hit(here(hit.reason), hit);
     }
     const Checkpoint& oldest = history_->points.front();
     if (!replay(oldest, oldest.t, nullptr, nullptr)) return interrupted_reverse();

@@ -135,6 +135,7 @@ private:
     void plot_drawn(const std::string& file);
     void drive_clicks();
     void draw();
+    void draw_controls();
     bool render_frame();
     void present(bool painted);
     void pace_script();
@@ -889,13 +890,7 @@ void App::draw() {
     if (o_.debug) {
         draw_debug_panes(panes_, shell_, ui_.running || in_command_);
         if (panes_.request != DebugPanes::Request::None && !in_command_) debug_request(std::exchange(panes_.request, DebugPanes::Request::None));
-        if (frames_ % 15 == 0)
-            ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
-                                     script::Session::format_time(session_.now()), fps_);
-        draw_signals_pane(signals_, session_);
-        ui_.signals = signals_.open;
-        for (const Action& a : controls_panel(ui_))
-            if (!in_command_) act(a);
+        draw_controls();
         return;
     }
     const TableView view = camera_.apply(table_view(tool, path_, session_));
@@ -910,10 +905,15 @@ void App::draw() {
     ImGui::End();
     if (frames_ % 4 == 0) axes_ = tool;
     if (const auto model = axes_panel(axes_, tool.model); model && !in_command_) done(session_.set_motor(*model));
+    draw_controls();
+}
+
+// The status line, the Signals pane and the Controls panel, in either layout.
+void App::draw_controls() {
     // Four times a second: a clock that changes every frame would redraw its panel every frame.
     if (frames_ % 15 == 0)
         ui_.status = fmt::format("{}  t = {}  {:.0f} fps", script_active_ ? "script" : ui_.running ? "running" : "paused",
-                             script::Session::format_time(session_.now()), fps_);
+                                 script::Session::format_time(session_.now()), fps_);
     draw_signals_pane(signals_, session_);
     ui_.signals = signals_.open;
     for (const Action& a : controls_panel(ui_))
