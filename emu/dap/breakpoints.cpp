@@ -19,13 +19,6 @@ std::vector<Breakpoint*> BreakpointTable::at(std::uint16_t pc) {
     return out;
 }
 
-std::vector<DataBreakpoint*> BreakpointTable::data_with(int id) {
-    std::vector<DataBreakpoint*> out;
-    for (DataBreakpoint& d : data)
-        if (d.verified && d.id == id) out.push_back(&d);
-    return out;
-}
-
 std::string data_id(std::uint16_t address, std::uint16_t length) { return fmt::format("{:04X}H:{}", address, length); }
 
 std::optional<std::pair<std::uint16_t, std::uint16_t>> parse_data_id(const std::string& id) {

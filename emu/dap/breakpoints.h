@@ -45,7 +45,6 @@ struct BreakpointTable {
 
     // Every code breakpoint that covers `pc`.
     std::vector<Breakpoint*> at(std::uint16_t pc);
-    std::vector<DataBreakpoint*> data_with(int id);
 };
 
 

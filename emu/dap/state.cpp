@@ -96,14 +96,6 @@ std::optional<std::pair<std::uint16_t, std::uint16_t>> Adapter::data_target(cons
     return std::nullopt;
 }
 
-std::string Adapter::value_text(const std::string& expression) {
-    session();
-    std::string error;
-    const auto v = expression_value(session_->debugger(), expression, error);
-    if (!v) throw RequestError(error);
-    return *v;
-}
-
 void Adapter::evaluate(const Json& args, Json& body) {
     session();
     const std::string expression = need_string(args, "expression");

@@ -430,13 +430,4 @@ std::int64_t Debugger::part_watch_value(Watchpoint& w, bool io) {
     return f ? f->value : w.last_value;
 }
 
-std::optional<std::int64_t> Debugger::part_value(std::string_view part, std::string_view watch) const {
-    const periph::Part* p = m_.find_part(part);
-    if (!p) return std::nullopt;
-    const periph::Description d = describe(*p);
-    const periph::Field* f = d.find_watch(watch);
-    if (!f) return std::nullopt;
-    return f->value;
-}
-
 }  // namespace alp85::debug

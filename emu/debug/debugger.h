@@ -363,10 +363,8 @@ public:
     const Expr::Variables& variables() const { return vars_; }
     // The current value of a machine-tool quantity (no side effects).
     std::int64_t tool_value(ToolQuantity q, periph::MachineTool::Axis axis) const;
-    // A part's description as of the machine's time (no side effects), and the value of the field
-    // `watch` names in it (nullopt: no such part or field).
+    // A part's description as of the machine's time (no side effects).
     periph::Description describe(const periph::Part& part) const;
-    std::optional<std::int64_t> part_value(std::string_view part, std::string_view watch) const;
     std::vector<Frame> backtrace() const;  // a caller's line: its CALL's (or RST's), as gdb shows it
     // Where the program is, to show: the PC, or the HLT's address while the CPU is halted (its PC
     // is past the HLT; gdb shows an exited program where it ended).

@@ -43,8 +43,6 @@ bool same_name(std::string_view a, std::string_view b) {
 
 }  // namespace
 
-std::span<const PcKey> pc_keys() { return kPcKeys; }
-
 std::span<const PadKey> pad_keys() { return kPad; }
 
 std::optional<PadKey> find_pad_key(std::string_view name) {

@@ -40,7 +40,6 @@ inline constexpr std::uint64_t kQueueLimit = board::tstates_from_ms(2000);
 struct PcKey {
     std::string_view pc, pad, label;
 };
-std::span<const PcKey> pc_keys();  // the function keys; the hex keys are their own names
 // The board key a PC key presses (case-insensitive name as above).
 std::optional<PadKey> pad_key_for_pc(std::string_view pc_name);
 // What to press on the PC for a button, as shown under its keycap ("Enter", "7", "Esc").
