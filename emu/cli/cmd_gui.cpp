@@ -16,6 +16,7 @@
 #include "emu/debug/pin_tap.h"
 #include "emu/gui/app.h"
 #include "emu/gui/controls.h"
+#include "emu/gui/test_hooks.h"
 
 namespace alp85::cli {
 namespace {
@@ -38,6 +39,7 @@ std::string click_line_problem(const std::string& spec, bool debug) {
 void add_gui_command(CLI::App& app, int& status) {
     struct Args {
         gui::GuiOptions o;
+        gui::TestHookOptions hooks;
         std::vector<std::string> firmware;  // --firmware, added to the positional ones
         std::string motor = "physical";
         std::string speed = "1";
@@ -55,18 +57,18 @@ void add_gui_command(CLI::App& app, int& status) {
     cmd->add_option("--script", args->o.script, "Run this script (docs/scripting.md) in the window first");
     // The test hooks (tests/gui) are in no group, so --help, the man page and completion, all made
     // from --help, do not offer them; they work all the same.
-    cmd->add_option("--click", args->o.clicks,
+    cmd->add_option("--click", args->hooks.clicks,
                     "Then click these keypad buttons (R, 0-F, EXEC, NEXT, ..., RESET, VECT) with synthesized mouse "
                     "events (a test hook)")
         ->group("");
     CLI::Option* debug = cmd->add_flag("--debug", args->o.debug,
                   "The debugger's panes (source, registers, disassembly, memory, chips, watches, steps and reverse "
                   "steps, the command line: docs/debugging.md) in place of the machine tool's views");
-    cmd->add_option("--click-line", args->o.click_lines,
+    cmd->add_option("--click-line", args->hooks.click_lines,
                     "With --debug: then click the source rows of these FILE:LINE (sets breakpoints; a test hook)")
         ->needs(debug)
         ->group("");
-    cmd->add_option("--debug-command", args->o.debug_commands,
+    cmd->add_option("--debug-command", args->hooks.debug_commands,
                     "Then run these debugger command lines, or click:BUTTON, frames:N, status, toolpath (a test hook)")
         ->group("");
     cmd->add_option("--screenshot", args->o.screenshot,
@@ -129,7 +131,7 @@ void add_gui_command(CLI::App& app, int& status) {
                 return;
             }
         }
-        for (const std::string& spec : args->o.click_lines)
+        for (const std::string& spec : args->hooks.click_lines)
             if (const std::string why = click_line_problem(spec, args->o.debug); !why.empty()) {
                 std::cerr << argument_error("alp85 gui", spec, "--click-line " + spec + ": " + why);
                 status = kUsageError;
@@ -173,7 +175,12 @@ void add_gui_command(CLI::App& app, int& status) {
         args->o.speed = s == "0.1" ? 0 : s == "1" ? 1 : s == "10" ? 2 : s == "100" ? 3 : 4;
         if (args->frames > 0) args->o.frames = args->frames;
         if (args->seconds > 0) args->o.seconds = args->seconds;
-        status = gui::run(args->o);
+        if (args->hooks.empty()) {
+            status = gui::run(args->o);
+            return;
+        }
+        gui::TestHooks hooks(args->hooks);  // only when a test asked for them
+        status = gui::run(args->o, &hooks);
     });
 }
 

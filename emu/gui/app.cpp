@@ -6,7 +6,6 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <utility>
@@ -26,6 +25,7 @@
 #include "emu/gui/canvas.h"
 #include "emu/gui/controls.h"
 #include "emu/gui/debug_panes.h"
+#include "emu/gui/frame_hook.h"
 #include "emu/gui/input.h"
 #include "emu/gui/screenshot.h"
 #include "emu/gui/signals_pane.h"
@@ -57,7 +57,6 @@ extern "C" void on_terminate(int signal) {
 }
 constexpr std::uint64_t kSamplePeriod = board::tstates_from_ms(1);
 constexpr int kSettleFrames = 30;
-constexpr std::uint64_t kClickGap = board::tstates_from_ms(100);
 constexpr std::uint64_t kPaceSlice = board::tstates_from_ms(1);  // a script's run, between looks at the clock
 
 double cpu_seconds() {
@@ -83,10 +82,10 @@ script::SessionOptions session_options(const GuiOptions& o) {
     return s;
 }
 
-class App {
+class App final : public HookWindow {
 public:
-    App(const GuiOptions& o, SDL_Window* w)
-        : o_(o), window_(w), shell_(session_options(o)), session_(shell_.session()) {
+    App(const GuiOptions& o, SDL_Window* w, FrameHook* hook)
+        : o_(o), window_(w), hook_(hook), shell_(session_options(o)), session_(shell_.session()) {
         if (!o.out_dir.empty()) session_.set_out_dir(o.out_dir);
         session_.set_motor(o.motor);
         if (o.parts) o.parts(session_.machine());
@@ -99,7 +98,6 @@ public:
             if (ui_.firmware_names[i] == "thesis-fixed") ui_.firmware = static_cast<int>(i);
         ui_.speed = o.speed;
         pacer_.set_speed(kSpeeds[static_cast<std::size_t>(o.speed)].factor, session_.now(), HostClock::now());
-        clicks_ = o.clicks;
         key_map_ = o.key_map;
         session_.debugger().set_poll([this] { poll_during_reverse(); });
         if (o.debug) {
@@ -112,6 +110,18 @@ public:
     int loop();
     debug::Debugger& debugger() { return session_.debugger(); }
     bool canvas_ok() { return canvas_.init(kWindowWidth, kWindowHeight); }
+
+    // What a frame hook sees (emu/gui/frame_hook.h).
+    script::DebugShell& shell() override { return shell_; }
+    DebugPanes& panes() override { return panes_; }
+    TerminalPane& terminal() override { return terminal_; }
+    const SignalsPane& signals() const override { return signals_; }
+    const Toolpath& toolpath() const override { return path_; }
+    SDL_Window* window() override { return window_; }
+    Vec2 window_point(Vec2 logical) const override { return logical_to_window(logical.x, logical.y); }
+    void pause_asked() override { pause_asked_ = HostClock::now(); }
+    void fail(int status) override { status_ = status; }
+    void quit() override { quit_ = true; }
 
 private:
     bool done(const script::Session::Outcome& o);
@@ -133,14 +143,13 @@ private:
     void run_machine(HostClock::time_point until);
     void act(const Action& a);
     void plot_drawn(const std::string& file);
-    void drive_clicks();
     void draw();
     void draw_controls();
     bool render_frame();
     void present(bool painted);
     void pace_script();
     // Waits for the next frame: 60 a second while the user acts (an event less than kCalm ago, or a
-    // test's clicks and hooks), else 30 - a moving table looks the same and costs half to draw.
+    // hook is busy), else 30 - a moving table looks the same and costs half to draw.
     // An event ends a calm wait at the next sixtieth of a second.
     static constexpr std::chrono::milliseconds kCalm{500};
     void wait_frame();
@@ -152,23 +161,13 @@ private:
 
     const GuiOptions& o_;
     SDL_Window* window_;
+    FrameHook* hook_;  // a test's (emu/gui/test_hooks.h), or none
+    bool hook_busy() const { return hook_ && hook_->busy(); }
     script::DebugShell shell_;
     script::Session& session_;
     DebugPanes panes_;
     SignalsPane signals_;
-    std::size_t line_click_pos_ = 0, command_pos_ = 0;
-    bool debug_hooks_done() const {
-        return line_click_pos_ >= o_.click_lines.size() && command_pos_ >= o_.debug_commands.size() && hook_wait_ == 0 &&
-               !button_up_;
-    }
-    void drive_debug_hooks();
-    void push_button(Vec2 logical, bool down);
-    void push_click(Vec2 logical, bool down);
-    long hook_wait_ = 0;               // frames still to let pass ("frames:N")
     TerminalPane terminal_;            // --serial
-    std::string serial_hook_;          // "serial:TEXT": typed into the Terminal pane once it has the keyboard
-    long serial_wait_ = 0;             // frames it waited for the keyboard
-    std::optional<Vec2> button_up_;    // a hook's click, released next frame
     Toolpath path_;
     Backdrop backdrop_;
     Presser presser_;
@@ -182,11 +181,7 @@ private:
     bool script_active_ = false;
     int status_ = 0;
     std::optional<PadKey> mouse_key_;
-    std::vector<std::string> clicks_;
-    std::size_t click_pos_ = 0;
-    std::uint64_t click_t_ = 0;  // machine time of the next click event
-    bool click_down_ = false;
-    long idle_frames_ = 0;  // frames since the script and the clicks were done
+    long idle_frames_ = 0;  // frames since the script and the hook were done
     long frames_ = 0;
     std::string pending_shot_;
     std::optional<HostClock::time_point> pause_asked_;  // --debug: when Pause was asked (the log says how long it took)
@@ -502,7 +497,7 @@ void App::run_machine(HostClock::time_point until) {
     }
     const std::uint64_t now = session_.now();
     std::uint64_t goal = pacer_.target(now, HostClock::now());
-    if (!script_active_ && click_pos_ < clicks_.size()) goal = std::min(goal, std::max(click_t_, now));
+    if (const auto hold = script_active_ || !hook_ ? std::nullopt : hook_->hold()) goal = std::min(goal, std::max(*hold, now));
     const double left = std::chrono::duration<double>(until - HostClock::now()).count();
     if (goal > now && left > 0) {
         debug::Budget b;
@@ -655,204 +650,6 @@ void App::act(const Action& a) {
     }
 }
 
-// The --click test hook: each button is pressed by a synthesized left-button-down event at its
-// centre and released by a button-up event, as a real click arrives. They are timed in machine
-// time (held kKeyHold, then kClickGap before the next), and the machine is not run past the next
-// one, so that a slow host gives the same presses as a fast one.
-void App::drive_clicks() {
-    if (click_pos_ >= clicks_.size() || session_.now() < click_t_) return;
-    const auto k = find_pad_key(clicks_[click_pos_]);
-    if (!k) {
-        std::cerr << "alp85 gui: --click " << clicks_[click_pos_] << ": no such key\n";
-        ++click_pos_;
-        status_ = 2;
-        return;
-    }
-    push_button(key_rect(*k).centre(), !click_down_);  // handled at the start of the next frame, before the machine runs
-    click_t_ = session_.now() + (click_down_ ? kClickGap : kKeyHold);
-    if (click_down_) ++click_pos_;
-    click_down_ = !click_down_;
-}
-
-// The --debug test hooks, one a frame after the script and the keypad clicks: a click on the source
-// row of each FILE:LINE (a synthesized left-button press at the row's centre, hit-tested as a
-// user's), then each command line, as typed at the command pane.
-void App::drive_debug_hooks() {
-    if (line_click_pos_ < o_.click_lines.size()) {
-        const std::string& spec = o_.click_lines[line_click_pos_++];
-        const auto colon = spec.rfind(':');
-        const auto loc = colon == std::string::npos ? debug::Debugger::Location{{}, {}, "expected FILE:LINE", 0}
-                                                    : shell_.debugger().locate_line(spec.substr(0, colon), std::atoi(spec.c_str() + colon + 1));
-        if (!loc.error.empty()) {
-            std::cerr << "alp85 gui: --click-line " << spec << ": " << loc.error << '\n';
-            status_ = 2;
-            return;
-        }
-        const SourceLine l{shell_.debugger().program().line_of(loc.addresses.front())->file, std::atoi(spec.c_str() + colon + 1)};
-        panes_.show(l);
-        panes_.last_pc = cpu_view(session_).pc;  // the pane stays on this line until the PC moves
-        const Vec2 c = source_row(l.line - panes_.first).centre();
-        for (const bool down : {true, false}) push_button(c, down);
-        return;
-    }
-    if (hook_wait_ > 0) {
-        --hook_wait_;
-        return;
-    }
-    if (!serial_hook_.empty()) {  // typed as a keyboard types: text input events to the focused line
-        if (!terminal_.focused) {
-            // Asked again each frame: a focus change of the window (Xvfb has no window manager)
-            // takes the keyboard from the line.
-            if (++serial_wait_ > 600) {
-                std::cerr << "alp85 gui: --debug-command serial: the Terminal pane's line never had the keyboard\n";
-                status_ = 2;
-                quit_ = true;
-                serial_hook_.clear();
-                return;
-            }
-            terminal_.focus = true;
-            return;
-        }
-        for (std::size_t at = 0; at < serial_hook_.size(); at += sizeof(SDL_TextInputEvent::text) - 1) {
-            SDL_Event e{};
-            e.type = SDL_TEXTINPUT;
-            e.text.windowID = SDL_GetWindowID(window_);
-            const std::string piece = serial_hook_.substr(at, sizeof(SDL_TextInputEvent::text) - 1);
-            std::copy(piece.begin(), piece.end(), e.text.text);
-            SDL_PushEvent(&e);
-        }
-        serial_hook_.clear();
-        return;
-    }
-    if (button_up_) {  // the second half of a click: released a frame after it was pressed
-        push_click(*button_up_, false);
-        button_up_.reset();
-        return;
-    }
-    if (command_pos_ < o_.debug_commands.size()) {
-        const std::string& line = o_.debug_commands[command_pos_++];
-        // Hooks beside command lines: "click:NAME" clicks a named button (controls.run,
-        // debug.continue, debug.step, ...), "frames:N" lets N frames pass, "status" prints whether
-        // the board runs and its time, "toolpath" how many points the drawn path has and its ideal line, "clickrow:N"
-        // clicks source row N as shown, "source" prints the file and first line the pane shows,
-        // "where:NAME" a button's centre in screen coordinates, "clickat:X,Y" clicks a point of the
-        // picture, "signals" prints what the Signals pane's cursors read.
-        if (line.starts_with("click:")) {
-            const auto it = drawn_buttons().find(line.substr(6));
-            if (it == drawn_buttons().end()) {
-                std::cerr << "alp85 gui: --debug-command " << line << ": no such button\n";
-                status_ = 2;
-                return;
-            }
-            const Vec2 c{(it->second.x0 + it->second.x1) / 2, (it->second.y0 + it->second.y1) / 2};
-            if (session_.debugger().running() && (it->first == "debug.continue" || it->first == "controls.run"))
-                pause_asked_ = HostClock::now();  // a click on Pause: the stop says how long it took
-            push_click(c, true);
-            button_up_ = c;
-            return;
-        }
-        if (line.starts_with("frames:")) {
-            hook_wait_ = std::atol(line.c_str() + 7);
-            return;
-        }
-        if (line.starts_with("serial:") || line == "terminal") {  // type into the Terminal pane; print its text
-            if (!session_.serial()) {
-                std::cerr << "alp85 gui: --debug-command " << line << ": no serial terminal (--serial)\n";
-                status_ = 2;
-                return;
-            }
-            if (line == "terminal")
-                std::cout << fmt::format("[gui] terminal: {}\n", terminal_text(*session_.serial())) << std::flush;
-            else {
-                terminal_.focus = true;
-                serial_hook_ = line.substr(7);
-                serial_wait_ = 0;
-            }
-            return;
-        }
-        if (line.starts_with("clickrow:")) {  // a click on a source row as shown (no line looked up first)
-            const Vec2 c = source_row(std::atoi(line.c_str() + 9)).centre();
-            push_click(c, true);  // the pointer goes there too: ImGui sees the click where it lands
-            button_up_ = c;
-            return;
-        }
-        if (line == "source") {
-            std::cout << fmt::format("[gui] source: {} from line {}\n", std::filesystem::path(panes_.file).filename().string(),
-                                     panes_.first)
-                      << std::flush;
-            return;
-        }
-        if (line.starts_with("where:")) {  // a button's centre on the screen, for a test's real click
-            const auto it = drawn_buttons().find(line.substr(6));
-            if (it == drawn_buttons().end()) {
-                std::cerr << "alp85 gui: --debug-command " << line << ": no such button\n";
-                status_ = 2;
-                return;
-            }
-            const Vec2 c = logical_to_window((it->second.x0 + it->second.x1) / 2, (it->second.y0 + it->second.y1) / 2);
-            int wx = 0, wy = 0;
-            SDL_GetWindowPosition(window_, &wx, &wy);
-            std::cout << fmt::format("[gui] {} at {},{}\n", line.substr(6), wx + static_cast<int>(c.x), wy + static_cast<int>(c.y))
-                      << std::flush;
-            return;
-        }
-        if (line.starts_with("clickat:")) {  // a click at a point of the picture (logical pixels), as a user's
-            float x = 0, y = 0;
-            if (std::sscanf(line.c_str() + 8, "%f,%f", &x, &y) != 2) {
-                std::cerr << "alp85 gui: --debug-command " << line << ": expected clickat:X,Y\n";
-                status_ = 2;
-                return;
-            }
-            push_click({x, y}, true);
-            button_up_ = Vec2{x, y};
-            return;
-        }
-        if (line == "signals") {  // what the Signals pane's cursors read
-            std::cout << "[gui] signals: " << cursor_readout(signals_) << '\n' << std::flush;
-            return;
-        }
-        if (line == "toolpath") {
-            const auto l = path_.ideal(session_);
-            std::cout << fmt::format("[gui] toolpath: {} points, {}\n", path_.points().size(),
-                                     l ? fmt::format("ideal line from {:g},{:g} to {:g},{:g} mm", l->from.x, l->from.y, l->to.x, l->to.y)
-                                       : std::string("no ideal line"))
-                      << std::flush;
-            return;
-        }
-        if (line == "status") {
-            std::cout << fmt::format("[gui] status: {} t={}\n", session_.debugger().running() ? "running" : "stopped",
-                                     session_.now())
-                      << std::flush;
-            return;
-        }
-        const Typed t = run_typed(panes_, shell_, line, session_.debugger().running());
-        std::cout << "(alp85) " << line << '\n' << t.out << std::flush;
-        if (shell_.console().errors()) status_ = 1;
-    }
-}
-
-// A left-button event at a point of the logical picture, as a click on the window delivers it.
-void App::push_button(Vec2 logical, bool down) {
-    const Vec2 at = logical_to_window(logical.x, logical.y);
-    SDL_Event e{};
-    e.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
-    e.button.windowID = SDL_GetWindowID(window_);
-    e.button.button = SDL_BUTTON_LEFT;
-    e.button.state = down ? SDL_PRESSED : SDL_RELEASED;
-    e.button.clicks = 1;
-    e.button.x = static_cast<int>(at.x);
-    e.button.y = static_cast<int>(at.y);
-    SDL_PushEvent(&e);
-}
-
-// A click on a Dear ImGui button: ImGui (1.86) reads the pointer's place from SDL's mouse state,
-// so the pointer goes there first.
-void App::push_click(Vec2 logical, bool down) {
-    const Vec2 at = logical_to_window(logical.x, logical.y);
-    SDL_WarpMouseInWindow(window_, static_cast<int>(at.x), static_cast<int>(at.y));
-    push_button(logical, down);
-}
-
 // A borderless, transparent window over `r` that takes no input (the keypad's clicks are
 // hit-tested on the SDL events): one draw list per view. Layers are stacked in the order they are
 // first made (not NoBringToFrontOnFocus: ImGui puts such a new window behind all the others).
@@ -965,7 +762,7 @@ void App::pace_script() {
 
 void App::wait_frame() {
     const auto now = HostClock::now();
-    const bool calm = now - last_input_ > kCalm && click_pos_ >= clicks_.size() && debug_hooks_done();
+    const bool calm = now - last_input_ > kCalm && !hook_busy();
     if (!calm) {
         std::this_thread::sleep_until(clock_.next(now));
         return;
@@ -996,9 +793,8 @@ int App::loop() {
         else if (ui_.running) run_machine(budget);
         const auto machine_end = HostClock::now();
         machine_s_ += std::chrono::duration<double>(machine_end - frame_start).count();
-        const bool done = !script_active_ && click_pos_ >= clicks_.size() && debug_hooks_done();
-        if (!script_active_) drive_clicks();
-        if (!script_active_ && click_pos_ >= clicks_.size()) drive_debug_hooks();
+        const bool done = !script_active_ && !hook_busy();
+        if (!script_active_ && hook_) hook_->frame(*this);
         if (done) ++idle_frames_;
 
         const bool painted = render_frame();
@@ -1064,7 +860,7 @@ void App::finish_stats(double wall, double cpu) const {
 
 }  // namespace
 
-int run(const GuiOptions& o) {
+int run(const GuiOptions& o, FrameHook* hook) {
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     const char* headless = "alp85 gui: no display to open a window on ($DISPLAY is not set). Without a display use "
@@ -1116,7 +912,7 @@ int run(const GuiOptions& o) {
     sigaction(SIGINT, &ask, &old_int);
     int status = 0;
     {
-        App app(o, window);
+        App app(o, window, hook);
         g_debugger.store(&app.debugger());
         if (!app.canvas_ok()) {
             std::cerr << "alp85 gui: OpenGL has no framebuffer objects\n";

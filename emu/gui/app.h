@@ -11,10 +11,11 @@
 
 namespace alp85::gui {
 
+class FrameHook;
+
 struct GuiOptions {
     std::vector<std::string> firmware;  // built-in names or .asm/.hex paths; default thesis-fixed
     std::string script;                 // run in the window first (as `alp85 script` would)
-    std::vector<std::string> clicks;    // then click these keypad buttons (synthesized mouse events)
     std::string screenshot;             // then save the window here and quit
     std::string expect_display;         // at exit: the display must read this (else status 1)
     std::optional<long> frames;         // quit after this many frames
@@ -26,8 +27,6 @@ struct GuiOptions {
     bool debug = false;                 // the debugger's panes in place of the machine tool's views
     double scale = 0;                   // the window's first size: layout x scale; 0: fit the screen
     bool key_map = false;               // open with the key map shown (F1 or ? toggles it)
-    std::vector<std::string> click_lines;     // --debug test hook: click these FILE:LINE source rows
-    std::vector<std::string> debug_commands;  // then run these debugger command lines
     // An embedder's or a test's own parts: called with the machine before the script runs (it
     // attaches them, Machine::attach); the front end shows them from their descriptions alone.
     std::function<void(Machine&)> parts;
@@ -38,9 +37,10 @@ struct GuiOptions {
     int signals_ms = 10;                      // over the last this many ms (1 to 1000)
 };
 
-// Opens the window and runs until it is closed or an exit condition of `o` is met. Returns the
-// exit status: 0, 1 (the script failed or the display was not as expected), 2 (no display, or
-// the script has errors).
-int run(const GuiOptions& o);
+// Opens the window and runs until it is closed or an exit condition of `o` is met; `hook`, if
+// given, is called once a frame (emu/gui/frame_hook.h: the tests' hooks). Returns the exit status:
+// 0, 1 (the script failed or the display was not as expected), 2 (no display, or the script has
+// errors).
+int run(const GuiOptions& o, FrameHook* hook = nullptr);
 
 }  // namespace alp85::gui
