@@ -9,7 +9,7 @@
 //                                      output levels: port_output(); on_port_write() callback.
 //   PC2 = A STB, PC5 = B STB        -> set_stb(port, level, now) in ALT3/ALT4
 //   PC0 = A INTR, PC1 = A BF,
-//   PC3 = B INTR, PC4 = B BF        -> intr(), buffer_full(), on_intr() callback
+//   PC3 = B INTR, PC4 = B BF        -> intr(), on_intr() callback (BF: read in port C and the status)
 //   TIMER IN                        -> one pulse per CPU T-state (CLK OUT): the time base itself
 //   TIMER OUT                       -> timer_out(), on_timer_out() callback (the board: TRAP)
 //
@@ -155,7 +155,6 @@ public:
 
     bool timer_out() const { return s_.timer_out; }
     bool intr(Port port) const;
-    bool buffer_full(Port port) const { return s_.bf[static_cast<int>(port) & 1]; }
     std::uint8_t port_output(Port port) const;  // levels driven on the pins (output bits only)
     std::uint8_t port_output_mask(Port port) const;  // which pins are outputs
     PortCMode port_c_mode() const;

@@ -73,7 +73,6 @@ public:
     // RL0-7 levels for the given SL0-3 value: a closed key on the selected row pulls its line low.
     std::uint8_t return_lines(std::uint8_t scan_lines) const;
 
-    const std::array<std::uint8_t, 8>& closed_rows() const { return closed_; }
 private:
     std::array<std::uint8_t, 8> closed_{};  // per row: bit n = key on RL n is down
     std::uint64_t now_ = 0;

@@ -114,8 +114,6 @@ void StepperMotor::configure(const Params& p, const Load& load, double clock_hz)
     settle_energy_ = (stiffness_ > 0 ? stiffness_ : 1.0) * kSettleRad * kSettleRad;
 }
 
-double StepperMotor::stiffness() const { return stiffness_; }
-
 void StepperMotor::init_at_rest(State& s, double theta, std::uint8_t phases) const {
     s.theta = theta;
     s.omega = 0.0;

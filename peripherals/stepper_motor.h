@@ -108,7 +108,6 @@ public:
     const Params& params() const { return p_; }
     const Load& load() const { return load_; }
     double step_angle() const { return step_angle_; }
-    double stiffness() const;                    // small-signal k about a two-phase equilibrium
 
     // A rotor at rest at `theta` with `phases` applied long ago.
     void init_at_rest(State& s, double theta, std::uint8_t phases) const;

@@ -18,7 +18,6 @@ public:
     // Each runs its machine on for about `tstates` T-states; returns the T-states actually run.
     std::uint64_t run_bare(std::uint64_t tstates);
     std::uint64_t run_board(std::uint64_t tstates);
-    const I8085& bare_cpu() const { return bare_cpu_; }
     const Machine& board() const { return board_; }
 
 private:

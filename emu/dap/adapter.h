@@ -141,7 +141,6 @@ private:
     Json source_of(const std::string& file) const;  // a DAP Source for a file of the map
     // A name the client may watch (a firmware variable, a symbol, an address): address and size.
     std::optional<std::pair<std::uint16_t, std::uint16_t>> data_target(const std::string& name, std::int64_t ref);
-    Json variables_of(std::int64_t ref);
 
     // ---- memory (memory.cpp) -------------------------------------------------------------------
     void read_memory(const Json& args, Json& body);

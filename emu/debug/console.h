@@ -38,7 +38,6 @@ public:
     explicit Console(Debugger& d);
 
     void set_fallback(Fallback f) { fallback_ = std::move(f); }
-    void set_source_reader(SourceReader r) { read_source_ = std::move(r); }
     // Where lines come from, for error messages ("session.gdb:12:5: error: ..."); empty: "column N".
     void set_origin(std::string file, int line) {
         origin_file_ = std::move(file);

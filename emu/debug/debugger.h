@@ -419,7 +419,6 @@ private:
     void rebaseline();  // watched values as they are now
     Stop finish_stop(Stop s);  // temporary breakpoints, the line
     std::optional<std::uint16_t> return_slot() const;  // the current routine's return address slot
-    Stop run_to_frame(std::uint16_t pc, std::uint16_t sp_at_least, StopReason reason);
     int next_number() { return ++last_number_; }
     Breakpoint* find_bp(int number);
     Watchpoint* find_wp(int number);

@@ -132,10 +132,6 @@ void Presser::up(const PadKey& k, script::Session& m) {
     held_.erase(it);
 }
 
-void Presser::release_all(script::Session& m) {
-    while (!held_.empty()) up(held_.back().key, m);
-}
-
 bool Presser::held(const PadKey& k) const {
     return std::any_of(held_.begin(), held_.end(), [&](const Held& h) { return same(h.key, k); });
 }

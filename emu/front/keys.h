@@ -64,7 +64,6 @@ public:
     // Each goes to the board through Session::key.
     void down(const PadKey& k, script::Session& s);
     void up(const PadKey& k, script::Session& s);
-    void release_all(script::Session& s);
     bool held(const PadKey& k) const;
 
 private:

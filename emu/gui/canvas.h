@@ -47,7 +47,6 @@ public:
     void unbind();
     // Makes the window's back buffer (after present) the source of glReadPixels.
     void bind_window_for_read();
-    void invalidate() { full_ = true; }
     // The window lost its pixels (exposed): the next present copies everything.
     void expose() { present_full_ = true; }
     std::uint64_t painted_pixels() const { return painted_; }

@@ -58,10 +58,8 @@ public:
     std::uint64_t now() const { return now_; }
     std::uint16_t pc() const { return pc_; }
     std::uint64_t instructions() const { return executed_; }
-    bool faulted() const { return fault_.has_value(); }
 
     const Word& rwm(int address) const { return rwm_[static_cast<std::size_t>(address & 63)]; }
-    void set_rwm(int address, const Word& w) { rwm_[static_cast<std::size_t>(address & 63)] = w; }
     bool indicator(int s) const;
     void set_indicator(int s, bool v);  // as SET/RST would
     TapeReader& reader() { return reader_; }
@@ -71,7 +69,6 @@ public:
     void set_input(int channel, const std::array<std::uint8_t, 8>& bcd) {
         in_[static_cast<std::size_t>(channel & 63)] = bcd;
     }
-    std::size_t rom_words() const { return rom_.size(); }  // fitted: a whole number of packages
     // Digit steps spent in instructions fetched from [first, last]: a program's waiting loop, so
     // that the rest is its computing time.
     void count_idle(std::uint16_t first, std::uint16_t last) { idle_first_ = first, idle_last_ = last; }

@@ -39,7 +39,6 @@ public:
     double position_mm() const { return pos_mm_; }   // from program zero
     double table_mm() const { return pos_mm_ + p_.start_mm; }
     bool at_stop() const { return stop_ != 0; }
-    std::uint32_t stop_hits() const { return hits_; }
     const Params& params() const { return p_; }
 
 private:

@@ -57,7 +57,6 @@ public:
     bool at_end() const { return eot_; }
     const std::array<std::uint8_t, 8>& buffer() const { return buffer_; }  // external BCD digits
     std::uint64_t next_event() const { return due_; }
-    std::size_t words_read() const { return next_; }
     // When the last word was read in (digit steps): for "reading never stalls" checks.
     std::uint64_t last_fill() const { return last_fill_; }
 
