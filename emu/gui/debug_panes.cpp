@@ -347,20 +347,21 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     begin_pane("Run", kStepButtonsRect);
     const ImVec2 b{100, 0};
     using R = DebugPanes::Request;
-    if (named_button("debug.continue", running ? "Pause###cont" : "Continue###cont", b.x)) p.request = running ? R::Pause : R::Continue;
-    ImGui::SameLine();
-    if (named_button("debug.step", "Step", b.x)) p.request = R::Step;
-    ImGui::SameLine();
-    if (named_button("debug.next", "Next", b.x)) p.request = R::Next;
-    ImGui::SameLine();
-    if (named_button("debug.finish", "Finish", b.x)) p.request = R::Finish;
-    if (named_button("debug.reverse-continue", "Rev continue", b.x)) p.request = R::ReverseContinue;
-    ImGui::SameLine();
-    if (named_button("debug.reverse-step", "Rev step", b.x)) p.request = R::ReverseStep;
-    ImGui::SameLine();
-    if (named_button("debug.reverse-next", "Rev next", b.x)) p.request = R::ReverseNext;
-    ImGui::SameLine();
-    if (named_button("debug.reverse-finish", "Rev finish", b.x)) p.request = R::ReverseFinish;
+    struct StepButton {
+        const char* id;
+        const char* label;
+        R request;
+    };
+    // Two rows of four, forward then back; Continue is Pause while the machine runs.
+    const StepButton steps[] = {
+        {"debug.continue", running ? "Pause###cont" : "Continue###cont", running ? R::Pause : R::Continue},
+        {"debug.step", "Step", R::Step}, {"debug.next", "Next", R::Next}, {"debug.finish", "Finish", R::Finish},
+        {"debug.reverse-continue", "Rev continue", R::ReverseContinue}, {"debug.reverse-step", "Rev step", R::ReverseStep},
+        {"debug.reverse-next", "Rev next", R::ReverseNext}, {"debug.reverse-finish", "Rev finish", R::ReverseFinish}};
+    for (std::size_t i = 0; i < std::size(steps); ++i) {
+        if (i % 4 != 0) ImGui::SameLine();
+        if (named_button(steps[i].id, steps[i].label, b.x)) p.request = steps[i].request;
+    }
     // Every source of the loaded program's map: the source pane shows the one chosen.
     ImGui::SetNextItemWidth(260);
     const std::string shown = p.file.empty() ? std::string("(none)") : std::filesystem::path(p.file).filename().string();
