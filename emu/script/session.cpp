@@ -975,7 +975,18 @@ Session::Outcome Session::run_command(const Command& c) {
         }
         return out;
     };
-    auto value = [&]() { return resolve(c.values[0], e); };
+    // `call` with the command's first value, or why it has none.
+    auto with_value = [&](const auto& call) -> Outcome {
+        const auto v = resolve(c.values[0], e);
+        return v ? call(*v) : fail(e);
+    };
+    // `call` with the command's address and bytes, or why they have none.
+    auto with_bytes = [&](const auto& call) -> Outcome {
+        const auto a = address();
+        const auto b = a ? bytes() : std::nullopt;
+        return b ? call(*a, *b) : fail(e);
+    };
+    using Bytes = std::vector<std::uint8_t>;
     switch (c.op) {
         case Op::Load: {
             std::optional<std::uint16_t> at;
@@ -1003,15 +1014,8 @@ Session::Outcome Session::run_command(const Command& c) {
             return c.op == Op::Break ? add_breakpoint(*a) : delete_breakpoints(*a);
         }
         case Op::DeleteAll: return delete_all_breakpoints();
-        case Op::SetMem: {
-            const auto a = address();
-            const auto b = a ? bytes() : std::nullopt;
-            return b ? set_mem(*a, *b) : fail(e);
-        }
-        case Op::SetReg: {
-            const auto v = value();
-            return v ? set_reg(*c.reg, static_cast<std::uint16_t>(*v)) : fail(e);
-        }
+        case Op::SetMem: return with_bytes([&](std::uint16_t a, const Bytes& b) { return set_mem(a, b); });
+        case Op::SetReg: return with_value([&](std::int64_t v) { return set_reg(*c.reg, static_cast<std::uint16_t>(v)); });
         case Op::Save: return save(c.text);
         case Op::Restore: return restore(c.text);
         case Op::Option: return set_option(c.real == 1);
@@ -1039,34 +1043,21 @@ Session::Outcome Session::run_command(const Command& c) {
         case Op::PrintDisplay: return print_display(c.text == "text");
         case Op::Print: return print(c.text);
         case Op::ExpectDisplay: return expect_display(c.text);
-        case Op::ExpectMem: {
-            const auto a = address();
-            const auto b = a ? bytes() : std::nullopt;
-            return b ? expect_mem(*a, *b) : fail(e);
-        }
+        case Op::ExpectMem: return with_bytes([&](std::uint16_t a, const Bytes& b) { return expect_mem(a, b); });
         case Op::ExpectWord: {
             const auto a = address();
-            const auto v = value();
+            const auto v = resolve(c.values[0], e);
             return a && v ? expect_word(*a, static_cast<std::uint16_t>(*v)) : fail(e);
         }
-        case Op::ExpectReg: {
-            const auto v = value();
-            return v ? expect_reg(*c.reg, static_cast<std::uint16_t>(*v)) : fail(e);
-        }
+        case Op::ExpectReg: return with_value([&](std::int64_t v) { return expect_reg(*c.reg, static_cast<std::uint16_t>(v)); });
         case Op::ExpectFlag: {  // the flag of the parsed bit, named as written
             const auto& flags = cpu::description().flags;
             const auto f = std::find_if(flags.begin(), flags.end(), [&](const cpu::Flag& x) { return x.bit == c.flag; });
             if (f == flags.end()) return fail(fmt::format("no flag of bit {:02X}H", c.flag));
             return expect_flag(*f, c.values[0].number != 0, c.flag_name);
         }
-        case Op::ExpectPort: {
-            const auto v = value();
-            return v ? expect_port(c.port, static_cast<std::uint8_t>(*v)) : fail(e);
-        }
-        case Op::ExpectSymbol: {
-            const auto v = value();
-            return v ? expect_symbol(c.name, static_cast<std::uint16_t>(*v)) : fail(e);
-        }
+        case Op::ExpectPort: return with_value([&](std::int64_t v) { return expect_port(c.port, static_cast<std::uint8_t>(v)); });
+        case Op::ExpectSymbol: return with_value([&](std::int64_t v) { return expect_symbol(c.name, static_cast<std::uint16_t>(v)); });
         case Op::ExpectTime: return expect_time(c.compare, c.time);
         case Op::ExpectHalted: return expect_halted(true);
         case Op::ExpectRunning: return expect_halted(false);
