@@ -90,6 +90,7 @@ void add_run_command(CLI::App& app, int& status) {
         bool no_monitor = false, text = false;
     };
     auto args = std::make_shared<Args>();
+    std::vector<std::string> outputs;
     CLI::App* cmd = app.add_subcommand("run", "Run the ALP 85 headless: boot the monitor, type keys, show the display");
     cmd->add_option("programs", args->programs,
                     "Programs to load first (.asm, .hex; FILE.bin@ADDR, e.g. x.bin@0800H) or built-in firmware by name, "
@@ -104,9 +105,9 @@ void add_run_command(CLI::App& app, int& status) {
                     "file as the positional arguments take it; may be repeated");
     add_motor_option(cmd, args->motor);
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
-    auto* vcd = cmd->add_option("--vcd", args->vcd,
-                                "Record the board's pins from RESET to the end as a VCD file (GTKWave, PulseView; "
-                                "docs/signals.md)");
+    auto* vcd = add_output_option(cmd, outputs, "--vcd", args->vcd,
+                                  "Record the board's pins from RESET to the end as a VCD file (GTKWave, PulseView; "
+                                  "docs/signals.md)");
     cmd->add_option("--pins", args->pins, "The pins --vcd records (default all), e.g. --pins PA0 X.PULSE 8279")
         ->needs(vcd);
     auto* serial = cmd->add_option(
@@ -131,15 +132,10 @@ void add_run_command(CLI::App& app, int& status) {
         "argument (a program that is missing or does not assemble, a bad time, key, baud rate or frame).\n"
         "A character --serial receives with a framing or parity error is reported on standard error, not\n"
         "written to standard output; the status stays 0.");
-    cmd->callback([args, cmd, run_for, &status] {
-        if (refuse_empty_outputs("run", *cmd, {"--vcd"})) {
-            status = kUsageError;
-            return;
-        }
+    on_run(cmd, status, outputs, [args, run_for] {
         if (run_for->count() && args->keys.empty() && args->serial.empty()) {
             std::cerr << "alp85 run: --for requires --keys or --serial\n";
-            status = kUsageError;
-            return;
+            return kUsageError;
         }
         // One way to name firmware, as in gui, debug and dap: a built-in name among the programs
         // loads that firmware, a file given to --firmware loads as a program.
@@ -179,8 +175,7 @@ void add_run_command(CLI::App& app, int& status) {
         if (!args->no_monitor) {
             if (!firmware::have_monitor()) {
                 std::cerr << "alp85 run: this alp85 was built without the monitor ROM (use --no-monitor)\n";
-                status = 2;
-                return;
+                return 2;
             }
             commands.push_back(command(Op::Monitor));
         }
@@ -246,8 +241,7 @@ void add_run_command(CLI::App& app, int& status) {
         for (const std::string& w : session.warnings()) std::cerr << w;
         if (!errors.empty()) {
             for (const auto& e : errors) std::cerr << e.format();
-            status = 2;
-            return;
+            return 2;
         }
         // Standard input is read to its end before the run, so the run is the same for a pipe, a
         // file or a terminal (Ctrl-D ends it there): only its bytes decide, never when they came.
@@ -261,8 +255,7 @@ void add_run_command(CLI::App& app, int& status) {
             if (input.size() > kSerialInputCap) {
                 std::cerr << fmt::format("alp85 run: standard input is larger than {} bytes, the most --serial sends\n",
                                          kSerialInputCap);
-                status = kUsageError;
-                return;
+                return kUsageError;
             }
         }
         for (std::size_t i = 0; i < commands.size(); ++i) {
@@ -276,25 +269,22 @@ void add_run_command(CLI::App& app, int& status) {
             const auto o = session.execute(c);
             if (o.status != script::Session::Status::Ok) {
                 std::cerr << o.message << '\n';
-                status = 1;
-                return;
+                return 1;
             }
         }
         if (!args->vcd.empty())
             if (const auto o = session.execute(command(Op::RecordStop)); o.status != script::Session::Status::Ok) {
                 std::cerr << o.message << '\n';
-                status = 1;
-                return;
+                return 1;
             }
         report << fmt::format("{} simulated, PC={:04X}H\n", script::Session::format_time(session.now()),
                               session.machine().cpu().regs().pc);
         // Where the machine tool's tables are, after the display.
         if (const auto o = session.execute(command(Op::PrintAxes)); o.status != script::Session::Status::Ok) {
             std::cerr << o.message << '\n';
-            status = 1;
-            return;
+            return 1;
         }
-        status = 0;
+        return 0;
     });
 }
 
