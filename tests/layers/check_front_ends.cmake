@@ -1,7 +1,8 @@
 # Fails when a front end (the window, DAP, the page, their shared library emu/front) drives the
 # board around the Session: its own boot (the Machine's reset, load_image, a symbol table's
 # add_table), its own keys (schedule_key, schedule_press on the Machine), its own sampler or motor
-# model. Run as
+# model; or reaches the Machine at all (a call of machine(): state is read and written through the
+# Session and the Debugger). Run as
 #   cmake -DROOT=<tree> -P check_front_ends.cmake
 cmake_minimum_required(VERSION 3.20)  # list() keeps empty elements (CMP0007)
 set(folders emu/front emu/gui emu/dap web)
@@ -11,7 +12,8 @@ set(patterns
     "add_table\\(" "add_table"
     "schedule_(key|press)\\(" "a key scheduled on the Machine"
     "set_sampler\\(" "a sampler on the Machine"
-    "tool\\(\\)\\.set_model\\(" "the motor model set on the tool")
+    "tool\\(\\)\\.set_model\\(" "the motor model set on the tool"
+    "(^|[^A-Za-z0-9_])machine\\(\\)" "the Machine reached around the Session")
 list(LENGTH patterns n)
 math(EXPR last "${n} - 1")
 set(found "")
@@ -37,4 +39,4 @@ if(found)
   list(JOIN found "\n  " text)
   message(FATAL_ERROR "front ends around the Session:\n  ${text}")
 endif()
-message(STATUS "front ends: every boot and key through the Session")
+message(STATUS "front ends: every boot, key and read through the Session")
