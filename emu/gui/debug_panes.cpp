@@ -195,8 +195,8 @@ std::string registers_text(const debug::Debugger& d) {
     for (const cpu::Register& x : desc.registers)
         if (x.kind == cpu::Register::Kind::Memory)
             if (const cpu::Register* at = desc.find(x.high)) right.push_back(fmt::format("[{}] {:02X}H", at->name, d.peek(d.reg(*at))));
-    const debug::CpuStatus cpu = d.cpu_status();
-    right.push_back(cpu.halted ? "HALTED" : "");
+    const debug::CpuStatus status = d.cpu_status();
+    right.push_back(status.halted ? "HALTED" : "");
     std::string out;
     const std::size_t left_width = left.empty() ? 0 : left.front().size();
     for (std::size_t i = 0; i < std::max(left.size(), right.size()); ++i)
@@ -204,8 +204,8 @@ std::string registers_text(const debug::Debugger& d) {
     const auto f = d.reg(*desc.flag_register());
     std::string flags;
     for (const cpu::Flag& flag : desc.flags) flags += fmt::format("{}{}={}", flags.empty() ? "" : " ", flag.name, (f & flag.bit) ? 1 : 0);
-    const std::uint8_t rim = cpu.rim;
-    out += fmt::format("{}\nIE={} M7.5={} M6.5={} M5.5={} I7.5={}\nT {} ({:.3f} ms)", flags, cpu.interrupts_enabled ? 1 : 0,
+    const std::uint8_t rim = status.rim;
+    out += fmt::format("{}\nIE={} M7.5={} M6.5={} M5.5={} I7.5={}\nT {} ({:.3f} ms)", flags, status.interrupts_enabled ? 1 : 0,
                        (rim >> 2) & 1, (rim >> 1) & 1, rim & 1, (rim >> 6) & 1, d.now(), board::ms_from_tstates(d.now()));
     return out;
 }
