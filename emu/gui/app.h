@@ -28,9 +28,9 @@ struct GuiOptions {
     bool key_map = false;               // open with the key map shown (F1 or ? toggles it)
     std::vector<std::string> click_lines;     // --debug test hook: click these FILE:LINE source rows
     std::vector<std::string> debug_commands;  // then run these debugger command lines
-    // An embedder's or a test's own parts: called with the machine before the script runs (it
-    // attaches them, Machine::attach); the front end shows them from their descriptions alone.
-    std::function<void(Machine&)> parts;
+    // An embedder's or a test's own parts: called with the session before the script runs (it
+    // attaches them, Session::attach); the front end shows them from their descriptions alone.
+    std::function<void(script::Session&)> parts;
     std::string show_part;                    // --debug: the chip pane brings this part's tab forward
     // --serial: a terminal on SID/SOD and its Terminal pane (emu/gui/terminal_pane.h).
     std::optional<periph::UartFormat> serial;
