@@ -77,14 +77,15 @@ packages=(
   libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri
   libedit-dev
 )
-# Only the tests: clang (the fuzz targets), the window under Xvfb, the Debian package and its test
+# Only the tests: clang (the fuzz targets) and LLVM's linker (the test programs link in half the
+# time; CMakeLists.txt), the window under Xvfb, the Debian package and its test
 # (scripts/package.sh, tests/install: dpkg-shlibdeps, man -l, the man pages from --help, the
 # package check, the bash completion's helpers, fish for its completion), the web page
 # (scripts/web.sh, tests/web: emscripten, whose tools need node-acorn, and a browser),
 # sigrok-cli, which reads every VCD the tests record (tests/signals), and GTKWave, whose window
 # on the thesis's pulses a test grabs for docs/signals.md (File > Grab To File: no other tool).
 test_packages=(
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev lld
   xvfb xauth
   dpkg-dev man-db help2man lintian bash-completion fish
   emscripten node-acorn chromium

@@ -28,6 +28,12 @@ configure() {  # build dir, extra cmake args...
 }
 
 phase() { echo "== $* (at ${SECONDS} s)"; }
+seed_costs() {  # build dir: ctest's cost data from tests/test-costs.txt, unless it has measured its own
+  local data=$1/Testing/Temporary/CTestCostData.txt
+  [ -f "$data" ] && return 0
+  mkdir -p "$1/Testing/Temporary"
+  { grep -v '^#' tests/test-costs.txt; echo ---; } > "$data"
+}
 phase "release build of what ships, and its tests (build/)"
 configure build -DCMAKE_BUILD_TYPE=Release -DALP85_DOC_IMAGES=OFF
 if [ $fast -eq 1 ]; then
@@ -47,5 +53,8 @@ cmake --build build-asan -j "$jobs"
 phase "ASan + UBSan tests"
 # One test more than the cores: a sixth of the sanitizer pass waits (Xvfb and the window's frames,
 # the DAP client, python drivers); the tests that time against wall time are RUN_SERIAL.
+# The longest tests start first (tests/test-costs.txt), so that none of them is left running alone
+# at the end.
+seed_costs build-asan
 (cd build-asan && ctest --output-on-failure -j "$((jobs + 1))")
 phase "done"

@@ -1,6 +1,7 @@
 ; A CPU-bound workload for the board benchmark (alp85 bench board, tests/bench/board): the thesis firmware's kind of work (16-bit
 ; add/subtract through memory, the 1 ms delay loop DL) plus a CRC-16 loop, forever.
 ; Runs from the user EPROM with data in RAM and the stack in the 8155 RAM, as the firmware does.
+        INCLUDE crc16.inc       ; CRC16BITS
         ORG     0800H
 START:  LXI     SP,20B0H
 MAIN:   LXI     H,0
@@ -33,17 +34,7 @@ CRC:    LHLD    1B04H
         MOV     A,H
         XRA     L
         MOV     H,A
-        MVI     B,8
-CRCBIT: DAD     H
-        JNC     CRCNX
-        MOV     A,H
-        XRI     10H
-        MOV     H,A
-        MOV     A,L
-        XRI     21H
-        MOV     L,A
-CRCNX:  DCR     B
-        JNZ     CRCBIT
+        CRC16BITS
         SHLD    1B04H
         RET
 

@@ -7,6 +7,7 @@
 ;   4. CRC-16/CCITT, bit by bit, over 256 bytes
 ;   5. a motor half-step pattern written to port F9H
 MOTOR   EQU     0F9H
+        INCLUDE crc16.inc       ; CRC16BITS
 
         ORG     0
         LXI     SP,0FF00H
@@ -66,17 +67,7 @@ CRC16:  LXI     H,0FFFFH
 CRCB:   LDAX    D
         XRA     H
         MOV     H,A
-        MVI     B,8
-CRCBIT: DAD     H
-        JNC     CRCN
-        MOV     A,H
-        XRI     10H
-        MOV     H,A
-        MOV     A,L
-        XRI     21H
-        MOV     L,A
-CRCN:   DCR     B
-        JNZ     CRCBIT
+        CRC16BITS
         INX     D
         DCR     C
         JNZ     CRCB

@@ -101,32 +101,39 @@ inline constexpr std::uint32_t kCpuHz = kCrystalHz / 2;
 // axis the sequencer's PULSE and DIRECTION on port A (F9H, output) and the transducer's COUNT bit
 // (changes level at each increment) and DIRECTION bit (1 = moving +) on port B (FAH, input).
 using ToolAxis = periph::MachineTool::Axis;
-enum class ToolSignal : std::uint8_t { Pulse, Direction, Count, CountDirection };
 
+// One wire: its bit on the port and the evidence for it.
 struct ToolBit {
-    std::uint8_t port;  // F9H (8155 port A) or FAH (8155 port B)
     std::uint8_t bit;
-    ToolAxis axis;
-    ToolSignal signal;
     bool reconstructed;    // not in the surviving listing: a documented choice
     std::string_view why;  // the evidence
 };
 
+// One axis's four wires: to its sequencer on port A, from its transducer on port B.
+struct AxisWiring {
+    ToolAxis axis;
+    ToolBit pulse, direction;        // port A (F9H), outputs
+    ToolBit count, count_direction;  // port B (FAH), inputs
+};
+
 inline constexpr std::uint8_t kToolOutPort = 0xF9;  // OUT 0F9H in the listing
 inline constexpr std::uint8_t kToolInPort = 0xFA;   // IN 0FAH in INPUT1
-inline constexpr std::array<ToolBit, 12> kToolWiring{{
-    {0xF9, 0, ToolAxis::X, ToolSignal::Pulse, false, "OUT writes 00H then 01H (X +) and 02H then 03H: bit 0 pulses X"},
-    {0xF9, 1, ToolAxis::X, ToolSignal::Direction, false, "02H/03H: bit 1 set while X pulses, DELAY keeps it (ANI 0AH)"},
-    {0xF9, 2, ToolAxis::Y, ToolSignal::Pulse, false, "00H then 04H, 08H then 0CH: bit 2 pulses Y"},
-    {0xF9, 3, ToolAxis::Y, ToolSignal::Direction, false, "08H/0CH: bit 3 set while Y pulses, DELAY keeps it (ANI 0AH)"},
-    {0xF9, 4, ToolAxis::Z, ToolSignal::Pulse, true, "Z is on the missing pages: the next free bit (firmware/thesis ZPUL)"},
-    {0xF9, 5, ToolAxis::Z, ToolSignal::Direction, true, "Z is on the missing pages: the next free bit (firmware/thesis ZDIR)"},
-    {0xFA, 0, ToolAxis::Y, ToolSignal::Count, false, "INPUT1 keeps bits 0-1 as changes (XRA M / ANI 03H); a change of bit 0 counts YAC"},
-    {0xFA, 1, ToolAxis::X, ToolSignal::Count, false, "INPUT: CPI 02H / JZ STEST - a change of bit 1 alone counts XAC"},
-    {0xFA, 2, ToolAxis::X, ToolSignal::CountDirection, false, "INPUT1 passes bits 2-3 through (ANI 0CH); STEST: ANI 04H / JZ XDEC, so 1 = X moving +"},
-    {0xFA, 3, ToolAxis::Y, ToolSignal::CountDirection, false, "bit 3 (08H) chooses YINC or YDEC: 1 = Y moving + (RECONSTRUCTION.md, E10)"},
-    {0xFA, 4, ToolAxis::Z, ToolSignal::Count, true, "Z is open loop in the firmware: its transducer on the next free bits"},
-    {0xFA, 5, ToolAxis::Z, ToolSignal::CountDirection, true, "as bit 4"},
+inline constexpr std::array<AxisWiring, 3> kToolWiring{{
+    {ToolAxis::X,
+     {0, false, "OUT writes 00H then 01H (X +) and 02H then 03H: bit 0 pulses X"},
+     {1, false, "02H/03H: bit 1 set while X pulses, DELAY keeps it (ANI 0AH)"},
+     {1, false, "INPUT: CPI 02H / JZ STEST - a change of bit 1 alone counts XAC"},
+     {2, false, "INPUT1 passes bits 2-3 through (ANI 0CH); STEST: ANI 04H / JZ XDEC, so 1 = X moving +"}},
+    {ToolAxis::Y,
+     {2, false, "00H then 04H, 08H then 0CH: bit 2 pulses Y"},
+     {3, false, "08H/0CH: bit 3 set while Y pulses, DELAY keeps it (ANI 0AH)"},
+     {0, false, "INPUT1 keeps bits 0-1 as changes (XRA M / ANI 03H); a change of bit 0 counts YAC"},
+     {3, false, "bit 3 (08H) chooses YINC or YDEC: 1 = Y moving + (RECONSTRUCTION.md, E10)"}},
+    {ToolAxis::Z,
+     {4, true, "Z is on the missing pages: the next free bit (firmware/thesis ZPUL)"},
+     {5, true, "Z is on the missing pages: the next free bit (firmware/thesis ZDIR)"},
+     {4, true, "Z is open loop in the firmware: its transducer on the next free bits"},
+     {5, true, "as bit 4"}},
 }};
 
 // The undriven 8155 inputs (nothing on the board drives them): pulled up, so ports A and B read

@@ -162,19 +162,15 @@ static_assert(port_of(board::kToolOutPort) == I8155::Port::A && port_of(board::k
 }  // namespace
 
 namespace {
-// Per axis, the port A bits of its PULSE and DIRECTION, from board::kToolWiring.
-struct AxisBits {
-    std::uint8_t pulse = 0, direction = 0;
-};
-constexpr std::array<AxisBits, 3> kAxisBits = [] {
-    std::array<AxisBits, 3> bits{};
-    for (const board::ToolBit& b : board::kToolWiring) {
-        if (b.port != board::kToolOutPort) continue;
-        auto& a = bits[static_cast<std::size_t>(b.axis)];
-        (b.signal == board::ToolSignal::Pulse ? a.pulse : a.direction) |= static_cast<std::uint8_t>(1u << b.bit);
-    }
-    return bits;
-}();
+// The wiring table is in the order of the tool's axes: row a is axis a.
+constexpr bool wiring_in_axis_order() {
+    for (std::size_t a = 0; a < board::kToolWiring.size(); ++a)
+        if (static_cast<std::size_t>(board::kToolWiring[a].axis) != a) return false;
+    return true;
+}
+static_assert(wiring_in_axis_order(), "board::kToolWiring lists X, Y, Z in order");
+
+constexpr std::uint8_t bit_mask(const board::ToolBit& b) { return static_cast<std::uint8_t>(1u << b.bit); }
 }  // namespace
 
 void Machine::drive_tool(std::uint64_t t) {
@@ -186,8 +182,8 @@ void Machine::drive_tool(std::uint64_t t) {
     // sequencer last saw is its own state, so snapshots need nothing here.
     const auto& axes = tool_.state().axes;
     for (std::size_t a = 0; a < 3; ++a) {
-        const AxisBits& b = kAxisBits[a];
-        const bool pulse = pins & b.pulse, direction = pins & b.direction;
+        const board::AxisWiring& w = board::kToolWiring[a];
+        const bool pulse = pins & bit_mask(w.pulse), direction = pins & bit_mask(w.direction);
         if (pulse != axes[a].sequencer.pulse || direction != axes[a].sequencer.direction)
             tool_.set_drive(static_cast<board::ToolAxis>(a), pulse, direction, t);
     }
@@ -196,11 +192,10 @@ void Machine::drive_tool(std::uint64_t t) {
 std::uint8_t Machine::sense_tool(std::uint64_t t) {
     std::uint8_t pins = board::kUndrivenPortAB;  // bits the tool does not drive are pulled high
     if (!options_.machine_tool) return pins;
-    for (const board::ToolBit& b : board::kToolWiring) {
-        if (b.port != board::kToolInPort) continue;
-        const periph::MachineTool::Sense s = tool_.sense(b.axis, t);
-        const bool level = b.signal == board::ToolSignal::Count ? s.count : s.direction;
-        pins = static_cast<std::uint8_t>(level ? pins | (1u << b.bit) : pins & ~(1u << b.bit));
+    for (const board::AxisWiring& w : board::kToolWiring) {
+        const periph::MachineTool::Sense s = tool_.sense(w.axis, t);
+        for (const auto& [b, level] : {std::pair{w.count, s.count}, {w.count_direction, s.direction}})
+            pins = static_cast<std::uint8_t>(level ? pins | bit_mask(b) : pins & ~bit_mask(b));
     }
     return pins;
 }

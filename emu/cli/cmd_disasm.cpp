@@ -124,6 +124,7 @@ int run_disasm(const DisasmArgs& args) {
 
 void add_disasm_command(CLI::App& app, int& status) {
     auto args = std::make_shared<DisasmArgs>();
+    std::vector<std::string> outputs;
     CLI::App* cmd = app.add_subcommand("disasm", "Disassemble a program image (.hex, .bin, .com, .asm) or the monitor ROM");
     cmd->add_option("image", args->image, "The image: .hex, .bin/.rom (with --org), .com (at 0100H) or .asm");
     cmd->add_flag("--monitor", args->monitor, "Disassemble the built-in monitor ROM, with its symbols");
@@ -134,7 +135,7 @@ void add_disasm_command(CLI::App& app, int& status) {
     cmd->add_flag("--no-symbols", args->no_symbols, "Print every address as a number");
     add_cpu_option(cmd, args->cpu, "Decode as this processor");
     cmd->add_flag("--source", args->source, "Write asm85 source that assembles back to the same bytes");
-    cmd->add_option("-o,--output", args->output, "Write to this file instead of standard output");
+    add_output_option(cmd, outputs, "-o,--output", args->output, "Write to this file instead of standard output");
     cmd->footer(
         "Addresses: 0800H, 0x800, 2048 or a symbol. Decoding is linear: data tables show as instructions.\n"
         "Examples:\n"
@@ -144,9 +145,7 @@ void add_disasm_command(CLI::App& app, int& status) {
         "Exit status: 0 success, 1 an image or map that cannot be read, no bytes in the range, or an\n"
         "output that cannot be written, 2 a usage error (a bad address, range or option, an output that\n"
         "is the image or a map).");
-    cmd->callback([args, cmd, &status] {
-        status = refuse_empty_outputs("disasm", *cmd, {"--output"}) ? kUsageError : run_disasm(*args);
-    });
+    on_run(cmd, status, outputs, [args] { return run_disasm(*args); });
 }
 
 }  // namespace alp85::cli

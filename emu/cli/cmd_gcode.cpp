@@ -25,11 +25,12 @@ void add_gcode_command(CLI::App& app, int& status) {
         bool no_ramp = false;
     };
     auto args = std::make_shared<Args>();
+    std::vector<std::string> outputs;
     CLI::App* cmd = app.add_subcommand("gcode", "G-code to the master program's path table (docs/contours.md)");
     cmd->add_option("files", args->files, "G-code files (.nc); each one is a path the keypad chooses (1, 2, ...)")
         ->required()
         ->check([](const std::string& f) { return input_problem(f); });  // a sentence for a link loop too
-    cmd->add_option("-o,--output", args->out, "The path table as Intel HEX (load it with the master program)")->required();
+    add_output_option(cmd, outputs, "-o,--output", args->out, "The path table as Intel HEX (load it with the master program)")->required();
     cmd->add_option("--method", args->method,
                     "How the master draws segments: thesis (its line routine, the default) or sampling (Watanabe and "
                     "Iwai's interpolation, 2 ms samples); a file's (METHOD SAMPLING) or (METHOD THESIS) comment wins")
@@ -46,16 +47,11 @@ void add_gcode_command(CLI::App& app, int& status) {
         "Exit status: 0 the table was written, 1 a file was refused (its errors are shown as\n"
         "file:line:col: error: ...; nothing is written), 2 a usage error (a G-code file that is missing or\n"
         "no file, an empty -o, -o naming a G-code file: nothing is written).");
-    cmd->callback([args, cmd, &status] {
-        if (refuse_empty_outputs("gcode", *cmd, {"--output"})) {
-            status = kUsageError;
-            return;
-        }
+    on_run(cmd, status, outputs, [args] {
         std::vector<NamedPath> inputs;
         for (const std::string& f : args->files) inputs.push_back({f, "the G-code file"});
         if (refuse_output_clash("gcode", inputs, {{args->out, "-o"}})) {
-            status = kUsageError;
-            return;
+            return kUsageError;
         }
         std::vector<std::vector<gcode::Entry>> paths;
         bool failed = false;
@@ -90,15 +86,15 @@ void add_gcode_command(CLI::App& app, int& status) {
         }
         if (failed) {
             std::cerr << fmt::format("alp85 gcode: nothing written to {}\n", args->out);
-            status = 1;
-            return;
+            return 1;
         }
         try {
             write_atomic(args->out, gcode::intel_hex(gcode::kTableBase, bytes));
         } catch (const std::exception& e) {
             std::cerr << fmt::format("alp85 gcode: {}\n", e.what());
-            status = 1;
+            return 1;
         }
+        return 0;
     });
 }
 

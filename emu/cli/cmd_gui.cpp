@@ -48,6 +48,7 @@ void add_gui_command(CLI::App& app, int& status) {
         double seconds = 0;
     };
     auto args = std::make_shared<Args>();
+    std::vector<std::string> outputs;
     CLI::App* cmd = app.add_subcommand("gui", "The ALP 85 and its machine tool in a window, run from the keypad");
     cmd->add_option("firmware", args->o.firmware,
                     "Built-in firmware (thesis, thesis-fixed, master, monitor) or .asm/.hex files, loaded after the monitor "
@@ -71,8 +72,8 @@ void add_gui_command(CLI::App& app, int& status) {
     cmd->add_option("--debug-command", args->hooks.debug_commands,
                     "Then run these debugger command lines, or click:BUTTON, frames:N, status, toolpath (a test hook)")
         ->group("");
-    cmd->add_option("--screenshot", args->o.screenshot,
-                    "Save the window as PNG when the script and the clicks are done, then quit");
+    add_output_option(cmd, outputs, "--screenshot", args->o.screenshot,
+                      "Save the window as PNG when the script and the clicks are done, then quit");
     cmd->add_option("--expect-display", args->o.expect_display, "At exit the display must read this (else status 1)");
     cmd->add_option("--frames", args->frames, "Quit after this many frames")->check(CLI::PositiveNumber);
     cmd->add_option("--seconds", args->seconds, "Quit after this many seconds")->check(CLI::PositiveNumber);
@@ -108,48 +109,39 @@ void add_gui_command(CLI::App& app, int& status) {
         "Exit status: 0, 1 the script or --expect-display failed or the screenshot cannot be written,\n"
         "2 a usage error (a bad number or --serial rate, a --screenshot that is an input) or no display; SIGTERM or\n"
         "Ctrl-C close the window within a second whatever it is doing: 128 + the signal (143, 130).");
-    cmd->callback([args, cmd, &status] {
-        if (refuse_empty_outputs("gui", *cmd, {"--screenshot"})) {
-            status = kUsageError;
-            return;
-        }
+    on_run(cmd, status, outputs, [args] {
         // CLI11's range checks let NaN through (every comparison with it is false): a --seconds
         // of NaN never ends the window.
         if (!std::isfinite(args->seconds) || !std::isfinite(args->o.scale)) {
             const bool seconds = !std::isfinite(args->seconds);
             std::cerr << argument_error("alp85 gui", seconds ? fmt::format("{}", args->seconds) : fmt::format("{}", args->o.scale),
                                         fmt::format("{} needs a finite number", seconds ? "--seconds" : "--scale"));
-            status = kUsageError;
-            return;
+            return kUsageError;
         }
         if (!args->serial.empty()) {
             std::string why;
             args->o.serial = periph::parse_uart_format(args->serial, why);
             if (!args->o.serial) {
                 std::cerr << argument_error("alp85 gui", args->serial, why + " in --serial");
-                status = kUsageError;
-                return;
+                return kUsageError;
             }
         }
         for (const std::string& spec : args->hooks.click_lines)
             if (const std::string why = click_line_problem(spec, args->o.debug); !why.empty()) {
                 std::cerr << argument_error("alp85 gui", spec, "--click-line " + spec + ": " + why);
-                status = kUsageError;
-                return;
+                return kUsageError;
             }
         // Pins the board does not have: refused before a window opens.
         if (const std::string why = debug::PinTap::check_selection(Machine{}, args->o.signals); !why.empty()) {
             std::cerr << "alp85 gui: --signals: " << why << '\n';
-            status = kUsageError;
-            return;
+            return kUsageError;
         }
         args->o.firmware.insert(args->o.firmware.begin(), args->firmware.begin(), args->firmware.end());
         std::vector<NamedPath> inputs = {{args->o.script, "the script"}};
         for (const std::string& f : args->o.firmware)  // a file, not a built-in name
             if (std::error_code ec; std::filesystem::exists(f, ec)) inputs.push_back({f, "the firmware source"});
         if (refuse_output_clash("gui", inputs, {{args->o.screenshot, "--screenshot"}})) {
-            status = kUsageError;
-            return;
+            return kUsageError;
         }
         if (!args->o.screenshot.empty()) {  // found out now, not after the whole script has run
             const std::filesystem::path dir = std::filesystem::absolute(args->o.screenshot).parent_path();
@@ -157,8 +149,7 @@ void add_gui_command(CLI::App& app, int& status) {
             if (!std::filesystem::is_directory(dir, ec) || ::access(dir.c_str(), W_OK) != 0 ||
                 std::filesystem::is_directory(args->o.screenshot, ec)) {
                 std::cerr << "alp85 gui: cannot write the screenshot '" << args->o.screenshot << "'\n";
-                status = 1;
-                return;
+                return 1;
             }
         }
         args->o.motor = motor_model_of(args->motor);
@@ -167,20 +158,16 @@ void add_gui_command(CLI::App& app, int& status) {
             std::filesystem::create_directories(args->o.out_dir, ec);
             if (ec) {
                 std::cerr << "alp85 gui: --out-dir " << args->o.out_dir << ": " << ec.message() << '\n';
-                status = 2;
-                return;
+                return 2;
             }
         }
         const std::string s = args->speed;
         args->o.speed = s == "0.1" ? 0 : s == "1" ? 1 : s == "10" ? 2 : s == "100" ? 3 : 4;
         if (args->frames > 0) args->o.frames = args->frames;
         if (args->seconds > 0) args->o.seconds = args->seconds;
-        if (args->hooks.empty()) {
-            status = gui::run(args->o);
-            return;
-        }
+        if (args->hooks.empty()) return gui::run(args->o);
         gui::TestHooks hooks(args->hooks);  // only when a test asked for them
-        status = gui::run(args->o, &hooks);
+        return gui::run(args->o, &hooks);
     });
 }
 

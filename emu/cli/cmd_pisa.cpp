@@ -66,11 +66,12 @@ void add_pisa_command(CLI::App& app, int& status) {
         double max_time_s = 0;  // 0: from the tape
     };
     auto args = std::make_shared<Args>();
+    std::vector<std::string> outputs;
     CLI::App* cmd = app.add_subcommand("pisa", "The Pisa multi-purpose interpolator (1969) runs a tape (docs/pisa.md)");
     cmd->add_option("TAPE", args->tape, "Tape in block format: N G X Y I J F (docs/pisa.md)")->required();
     cmd->add_option("--rom", args->rom, "The ROM program, Pisa assembly (default: the built-in firmware/pisa/interp.pasm)");
-    cmd->add_option("--record", args->record, "Write the 6 ms outputs and the tables' positions as CSV");
-    cmd->add_option("--plot", args->plot, "Draw the toolpath (exact path, outputs, tables) to .svg or .png");
+    add_output_option(cmd, outputs, "--record", args->record, "Write the 6 ms outputs and the tables' positions as CSV");
+    add_output_option(cmd, outputs, "--plot", args->plot, "Draw the toolpath (exact path, outputs, tables) to .svg or .png");
     cmd->add_option("--max-time", args->max_time_s,
                     "Stop with an error after this many seconds of machine time (default: twice the tape's own time, "
                     "its moves at their feedrates and its reading, and a minute)")
@@ -87,45 +88,36 @@ void add_pisa_command(CLI::App& app, int& status) {
         "nothing written), a run that did not end, or an output that cannot be written; 2 a usage error\n"
         "(an output that is the tape or the program, --record and --plot on one file, a --max-time that\n"
         "is not 0.001 to 10000000 s: nothing written).");
-    cmd->callback([args, cmd, &status] {
-        if (refuse_empty_outputs("pisa", *cmd, {"--record", "--plot"})) {
-            status = kUsageError;
-            return;
-        }
+    on_run(cmd, status, outputs, [args] {
         auto ext = std::filesystem::path(args->plot).extension().string();
         if (!args->plot.empty() && ext != ".svg" && ext != ".png") {
             std::cerr << fmt::format("alp85 pisa: --plot {}: the extension must be .svg or .png\n", args->plot);
-            status = kUsageError;
-            return;
+            return kUsageError;
         }
         if (refuse_output_clash("pisa", {{args->tape, "the tape"}, {args->rom, "the ROM program"}},
                                 {{args->record, "--record"}, {args->plot, "--plot"}})) {
-            status = kUsageError;
-            return;
+            return kUsageError;
         }
         std::string text;
         try {
             text = read_input(args->tape, FileKind::Tape);
         } catch (const InputError& e) {
             std::cerr << fmt::format("alp85 pisa: {}\n", e.what());
-            status = 1;
-            return;
+            return 1;
         }
         auto parsed = pisa::parse_tape(text);
         if (parsed.error) {
             std::cerr << fmt::format("{}:{}:{}: error: {}\n", args->tape, parsed.error->line, parsed.error->col,
                                      parsed.error->message);
             std::cerr << "alp85 pisa: the tape was refused; nothing written\n";
-            status = 1;
-            return;
+            return 1;
         }
         auto program = args->rom.empty() ? pisa_asm::assemble_string(pisa_interp_source, {}, "interp.pasm")
                                          : pisa_asm::assemble_file(args->rom);
         for (auto& d : program.out.diagnostics) std::cerr << asm85::format_diagnostic(d);
         if (!program.ok()) {
             std::cerr << "alp85 pisa: the program does not assemble; nothing written\n";
-            status = 1;
-            return;
+            return 1;
         }
         pisa::RunParams params;
         if (args->max_time_s > 0)
@@ -142,8 +134,7 @@ void add_pisa_command(CLI::App& app, int& status) {
                           : fmt::format("{:.1f} s of machine time passed, twice the tape's own time ({:.1f} s) and a "
                                         "minute (--max-time sets the limit)",
                                         limit_s, static_cast<double>(pisa::tape_steps(parsed.tape, params)) * pisa::kDigitStepSeconds));
-            status = 1;
-            return;
+            return 1;
         }
         auto flag = [&](const char* name) {
             const auto* s = program.out.find_symbol(name);
@@ -151,8 +142,7 @@ void add_pisa_command(CLI::App& app, int& status) {
         };
         if (r.output_samples == 0) {
             std::cerr << "alp85 pisa: the program ended without an output; nothing written\n";
-            status = 1;
-            return;
+            return 1;
         }
         const auto& last = r.samples[r.output_samples - 1];
         fmt::print("{} blocks, {} elements; {:.3f} s of machine time, {} instructions\n", parsed.tape.blocks,
@@ -170,8 +160,9 @@ void add_pisa_command(CLI::App& app, int& status) {
             out.commit();
         } catch (const std::exception& e) {
             std::cerr << fmt::format("alp85 pisa: {}; nothing written\n", e.what());
-            status = 1;
+            return 1;
         }
+        return 0;
     });
 }
 

@@ -2,12 +2,15 @@
 // [--serial BAUD[,FRAME] [--serial-gap TIME]]: the board, headless. It boots the monitor, shows the
 // display after RESET, types the keys, runs, and shows the display again. With --serial a terminal
 // sits on SID/SOD: standard input is sent to SID after the keys, what SOD sends is written to
-// standard output as it is decoded, and the rest of the report goes to standard error. Built on the command language's Session, like every front end:
-// the arguments become Commands directly (no script text is made, so a path may hold any
-// character), and a report points at the argument on the command line.
+// standard output as it is decoded, and the rest of the report goes to standard error. A client of the
+// Session's typed API, like every front end: the arguments are checked first with the command
+// language's parsing and the Session's checks (no script text is made, so a path may hold any
+// character; a report points at the argument on the command line), then become typed calls.
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -19,21 +22,18 @@
 namespace alp85::cli {
 namespace {
 
-using script::Command;
-using script::Op;
 using script::ParseError;
-
-// A command that stands for `argument` on the command line.
-Command command(Op op, std::string_view argument = {}) {
-    Command c;
-    c.op = op;
-    c.where = {"alp85 run", 1, argument.empty() ? 1 : column_of(argument)};
-    c.line = command_line();
-    return c;
-}
 
 ParseError argument_error(std::string_view argument, int offset, std::string message) {
     return {{"alp85 run", 1, column_of(argument) + offset}, std::move(message), command_line()};
+}
+
+// A problem with `text`, found where it first stands on the command line (a path as part of
+// FILE.bin@ADDR), else at `argument`.
+ParseError error_at(const std::string& text, std::string_view argument, std::string message) {
+    const auto p = command_line().find(text);
+    const int col = p != std::string::npos ? static_cast<int>(p) + 1 : argument.empty() ? 1 : column_of(argument);
+    return {{"alp85 run", 1, col}, std::move(message), command_line()};
 }
 
 // "R 7 0800 EXEC" -> R 7 0 8 0 0 EXEC (script::parse_key_list), a bad word pointed at.
@@ -56,17 +56,18 @@ std::optional<std::uint64_t> time_argument(const std::string& text, const char* 
     return t;
 }
 
-void add_display(std::vector<Command>& commands, bool text_only) {
-    if (!text_only) commands.push_back(command(Op::PrintDisplay));
-    Command c = command(Op::PrintDisplay);
-    c.text = "text";
-    commands.push_back(std::move(c));
-}
+// A program to load: FILE, or FILE.bin@ADDR with the address as the script writes one.
+struct Program {
+    std::string argument, path;
+    std::optional<script::Value> address;
+};
 
-void add_print(std::vector<Command>& commands, std::string text) {
-    Command c = command(Op::Print);
-    c.text = std::move(text);
-    commands.push_back(std::move(c));
+// A typed call that failed: the command line as the place, what went wrong, the machine's state
+// (the form of a failed script line).
+std::string failure(const script::Session& session, const std::string& what) {
+    std::string line = command_line();
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    return fmt::format("alp85 run:1: {}\n  {}\n  {}", line, what, session.where_now());
 }
 
 constexpr std::size_t kSerialInputCap = 1 << 20;  // 1 MiB
@@ -90,6 +91,7 @@ void add_run_command(CLI::App& app, int& status) {
         bool no_monitor = false, text = false;
     };
     auto args = std::make_shared<Args>();
+    std::vector<std::string> outputs;
     CLI::App* cmd = app.add_subcommand("run", "Run the ALP 85 headless: boot the monitor, type keys, show the display");
     cmd->add_option("programs", args->programs,
                     "Programs to load first (.asm, .hex; FILE.bin@ADDR, e.g. x.bin@0800H) or built-in firmware by name, "
@@ -104,9 +106,9 @@ void add_run_command(CLI::App& app, int& status) {
                     "file as the positional arguments take it; may be repeated");
     add_motor_option(cmd, args->motor);
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
-    auto* vcd = cmd->add_option("--vcd", args->vcd,
-                                "Record the board's pins from RESET to the end as a VCD file (GTKWave, PulseView; "
-                                "docs/signals.md)");
+    auto* vcd = add_output_option(cmd, outputs, "--vcd", args->vcd,
+                                  "Record the board's pins from RESET to the end as a VCD file (GTKWave, PulseView; "
+                                  "docs/signals.md)");
     cmd->add_option("--pins", args->pins, "The pins --vcd records (default all), e.g. --pins PA0 X.PULSE 8279")
         ->needs(vcd);
     auto* serial = cmd->add_option(
@@ -131,15 +133,10 @@ void add_run_command(CLI::App& app, int& status) {
         "argument (a program that is missing or does not assemble, a bad time, key, baud rate or frame).\n"
         "A character --serial receives with a framing or parity error is reported on standard error, not\n"
         "written to standard output; the status stays 0.");
-    cmd->callback([args, cmd, run_for, &status] {
-        if (refuse_empty_outputs("run", *cmd, {"--vcd"})) {
-            status = kUsageError;
-            return;
-        }
+    on_run(cmd, status, outputs, [args, run_for] {
         if (run_for->count() && args->keys.empty() && args->serial.empty()) {
             std::cerr << "alp85 run: --for requires --keys or --serial\n";
-            status = kUsageError;
-            return;
+            return kUsageError;
         }
         // One way to name firmware, as in gui, debug and dap: a built-in name among the programs
         // loads that firmware, a file given to --firmware loads as a program.
@@ -175,24 +172,15 @@ void add_run_command(CLI::App& app, int& status) {
                 std::cout.flush();
             });
         }
-        std::vector<Command> commands;
-        if (!args->no_monitor) {
-            if (!firmware::have_monitor()) {
-                std::cerr << "alp85 run: this alp85 was built without the monitor ROM (use --no-monitor)\n";
-                status = 2;
-                return;
-            }
-            commands.push_back(command(Op::Monitor));
+        if (!args->no_monitor && !firmware::have_monitor()) {
+            std::cerr << "alp85 run: this alp85 was built without the monitor ROM (use --no-monitor)\n";
+            return 2;
         }
-        for (const std::string& f : args->firmware) {
-            Command c = command(Op::Firmware, f);
-            c.text = f;
-            commands.push_back(std::move(c));
-        }
+        // The arguments first, every bad one reported: addresses, times, keys.
+        std::vector<Program> programs;
         for (const std::string& p : args->programs) {
-            Command c = command(Op::Load, p);
             const auto at = p.rfind('@');
-            c.text = p.substr(0, at);
+            Program program{p, p.substr(0, at), {}};
             if (at != std::string::npos) {
                 std::string why;
                 int col = 1;
@@ -202,52 +190,53 @@ void add_run_command(CLI::App& app, int& status) {
                     continue;
                 }
                 v->col = column_of(p) + static_cast<int>(at) + 1;
-                c.address = std::move(*v);
+                program.address = std::move(*v);
             }
-            commands.push_back(std::move(c));
+            programs.push_back(std::move(program));
         }
-        if (!args->vcd.empty()) {
-            Command record = command(Op::Record, args->vcd);
-            record.signals = true;
-            record.text = args->vcd;
-            record.period = script::kDefaultSignalPeriod;
-            for (const std::string& p : args->pins) record.pins.push_back({{}, 0, column_of(p), p});
-            commands.push_back(std::move(record));
-        }
-        commands.push_back(command(Op::Reset));
-        Command boot = command(Op::Run, args->boot);
-        if (const auto t = time_argument(args->boot, "--boot", errors)) boot.time = *t;
-        commands.push_back(std::move(boot));
-        add_print(commands, "after RESET:");
-        add_display(commands, args->text);
-        // The terminal starts sending before this command: after the keys, or after the boot.
-        std::size_t send_before = commands.size();
-        if (args->keys.empty() && line) {
-            Command run = command(Op::Run, args->run_for);
-            if (const auto t = time_argument(args->run_for, "--for", errors)) run.time = *t;
-            commands.push_back(std::move(run));
-            add_print(commands, "after the serial input:");
-            add_display(commands, args->text);
-        }
+        const auto boot_time = time_argument(args->boot, "--boot", errors);
+        std::optional<std::uint64_t> run_time;
+        std::vector<script::KeyRef> keys;
+        if (args->keys.empty() && line) run_time = time_argument(args->run_for, "--for", errors);
         if (!args->keys.empty()) {
-            Command type = command(Op::Type, args->keys);
-            type.keys = expand_keys(args->keys, errors);
-            type.time = script::kDefaultHold;
-            type.gap = script::kDefaultGap;
-            commands.push_back(std::move(type));
-            send_before = commands.size();
-            Command run = command(Op::Run, args->run_for);
-            if (const auto t = time_argument(args->run_for, "--for", errors)) run.time = *t;
-            commands.push_back(std::move(run));
-            add_print(commands, fmt::format("after {}:", args->keys));
-            add_display(commands, args->text);
+            keys = expand_keys(args->keys, errors);
+            run_time = time_argument(args->run_for, "--for", errors);
         }
-        if (errors.empty()) session.check(commands, errors);
+        // Then what the Session checks before anything runs, in the order the board is put
+        // together: the programs (readable, assembled, on the board, their address's symbols
+        // defined by what loads before them), the pins, and the recording's file.
+        if (errors.empty()) {
+            std::set<std::string> known;
+            if (!args->no_monitor)
+                if (std::string why = session.check_monitor(known); !why.empty())
+                    errors.push_back(error_at("", "", std::move(why)));
+            for (const std::string& f : args->firmware)
+                if (std::string why = session.check_firmware(f, known); !why.empty())
+                    errors.push_back(error_at(f, f, std::move(why)));
+            for (const Program& p : programs) {
+                if (std::string why = session.check_program(p.path, p.address.has_value()); !why.empty()) {
+                    errors.push_back(error_at(p.path, p.argument, std::move(why)));
+                    continue;
+                }
+                if (p.address)
+                    for (auto& [col, why] : session.check_value(*p.address, 0, 0xFFFF, "address", known))
+                        errors.push_back({{"alp85 run", 1, col}, std::move(why), command_line()});
+                if (std::string why = session.check_image(p.path, p.address, known); !why.empty())
+                    errors.push_back(error_at(p.path, p.argument, std::move(why)));
+            }
+            if (!args->vcd.empty())
+                for (const std::string& pin : args->pins)
+                    if (std::string why = session.check_pin(pin); !why.empty())
+                        errors.push_back({{"alp85 run", 1, column_of(pin)}, std::move(why), command_line()});
+            for (const Program& p : programs) session.add_input(p.path, "a program the script loads");
+            if (!args->vcd.empty())
+                if (std::string why = session.output_problem(args->vcd, "record"); !why.empty())
+                    errors.push_back(error_at(args->vcd, args->vcd, std::move(why)));
+        }
         for (const std::string& w : session.warnings()) std::cerr << w;
         if (!errors.empty()) {
             for (const auto& e : errors) std::cerr << e.format();
-            status = 2;
-            return;
+            return 2;
         }
         // Standard input is read to its end before the run, so the run is the same for a pipe, a
         // file or a terminal (Ctrl-D ends it there): only its bytes decide, never when they came.
@@ -261,40 +250,76 @@ void add_run_command(CLI::App& app, int& status) {
             if (input.size() > kSerialInputCap) {
                 std::cerr << fmt::format("alp85 run: standard input is larger than {} bytes, the most --serial sends\n",
                                          kSerialInputCap);
-                status = kUsageError;
-                return;
+                return kUsageError;
             }
         }
-        for (std::size_t i = 0; i < commands.size(); ++i) {
-            Command c = commands[i];
-            if (line && i == send_before && !input.empty()) {
-                // The run after the keys lasts until the last character's stop bits are out, then --for.
+        // The board put together, reset and run, each step a typed call; the first that fails ends it.
+        using Outcome = script::Session::Outcome;
+        auto show = [&](const std::string& when) {
+            session.print(when);
+            if (!args->text) session.print_display(false);
+            session.print_display(true);
+        };
+        // The run after the keys (or after the boot, with no keys): the terminal starts sending
+        // first, and the run lasts until the last character's stop bits are out, then --for.
+        auto run_after = [&]() -> Outcome {
+            std::uint64_t t = *run_time;
+            if (line && !input.empty()) {
                 const std::uint64_t n = input.size();
-                c.time += n * line->frame_tstates(board::kCpuHz) + (n - 1) * gap;
+                t += n * line->frame_tstates(board::kCpuHz) + (n - 1) * gap;
                 session.serial_type(input);
             }
-            const auto o = session.execute(c);
-            if (o.status != script::Session::Status::Ok) {
-                std::cerr << o.message << '\n';
-                status = 1;
-                return;
-            }
-        }
-        if (!args->vcd.empty())
-            if (const auto o = session.execute(command(Op::RecordStop)); o.status != script::Session::Status::Ok) {
-                std::cerr << o.message << '\n';
-                status = 1;
-                return;
+            return session.run(t);
+        };
+        const auto steps = std::vector<std::function<Outcome()>>{
+            [&] { return args->no_monitor ? Outcome{} : session.load_monitor(); },
+            [&] {
+                for (const std::string& f : args->firmware)
+                    if (Outcome o = session.load_firmware(f); o.status != script::Session::Status::Ok) return o;
+                return Outcome{};
+            },
+            [&] {
+                for (const Program& p : programs) {
+                    std::optional<std::uint16_t> at;
+                    if (p.address) {
+                        std::string why;
+                        const auto v = session.value(*p.address, why);
+                        if (!v) return Outcome{script::Session::Status::Failed, why};
+                        at = static_cast<std::uint16_t>(*v);
+                    }
+                    if (Outcome o = session.load_image(p.path, at); o.status != script::Session::Status::Ok) return o;
+                }
+                return Outcome{};
+            },
+            [&] { return args->vcd.empty() ? Outcome{} : session.record_signals(args->vcd, args->pins); },
+            [&] { return session.reset(); },
+            [&] { return session.run(*boot_time); },
+            [&] {
+                show("after RESET:");
+                if (!args->keys.empty() || !line) return Outcome{};
+                const Outcome o = run_after();
+                if (o.status == script::Session::Status::Ok) show("after the serial input:");
+                return o;
+            },
+            [&] {
+                if (args->keys.empty()) return Outcome{};
+                if (Outcome o = session.type(keys); o.status != script::Session::Status::Ok) return o;
+                const Outcome o = run_after();
+                if (o.status == script::Session::Status::Ok) show(fmt::format("after {}:", args->keys));
+                return o;
+            },
+            [&] { return args->vcd.empty() ? Outcome{} : session.record_stop(); },
+        };
+        for (const auto& step : steps)
+            if (const Outcome o = step(); o.status != script::Session::Status::Ok) {
+                std::cerr << failure(session, o.message) << '\n';
+                return 1;
             }
         report << fmt::format("{} simulated, PC={:04X}H\n", script::Session::format_time(session.now()),
-                              session.machine().cpu().regs().pc);
+                              session.reg(*cpu::description().find("PC")));
         // Where the machine tool's tables are, after the display.
-        if (const auto o = session.execute(command(Op::PrintAxes)); o.status != script::Session::Status::Ok) {
-            std::cerr << o.message << '\n';
-            status = 1;
-            return;
-        }
-        status = 0;
+        session.print_axes();
+        return 0;
     });
 }
 

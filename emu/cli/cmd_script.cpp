@@ -46,10 +46,11 @@ void add_script_command(CLI::App& app, int& status) {
         unsigned jobs = 1;
     };
     auto args = std::make_shared<Args>();
+    std::vector<std::string> outputs;
     CLI::App* cmd = app.add_subcommand("script", "Run headless test scripts against the ALP 85 (docs/scripting.md)");
     cmd->add_option("files", args->files, "Script files (.alp)")->required();  // a missing one: runner::prepare
-    cmd->add_option("--junit", args->junit, "Write a JUnit XML report");
-    cmd->add_option("--trace", args->trace, "Write every executed instruction as CSV");
+    add_output_option(cmd, outputs, "--junit", args->junit, "Write a JUnit XML report");
+    add_output_option(cmd, outputs, "--trace", args->trace, "Write every executed instruction as CSV");
     cmd->add_flag("-v,--verbose", args->verbose, "Echo each command with the simulated time");
     add_motor_option(cmd, args->motor);
     add_max_time_option(cmd, args->max_time);
@@ -71,11 +72,7 @@ void add_script_command(CLI::App& app, int& status) {
         "that is missing or a directory, an output that is a script, an included script, a file it\n"
         "loads or restores, or an empty name; --trace and --junit on one file; a save, record or plot\n"
         "onto any of those): then nothing runs.");
-    cmd->callback([args, cmd, &status] {
-        if (refuse_empty_outputs("script", *cmd, {"--junit", "--trace"})) {
-            status = kUsageError;
-            return;
-        }
+    on_run(cmd, status, outputs, [args] {
         script::RunnerOptions o;
         if (firmware::have_monitor()) o.monitor_rom = firmware::monitor;
         o.out = &std::cout;
@@ -84,8 +81,7 @@ void add_script_command(CLI::App& app, int& status) {
         o.motor = motor_model_of(args->motor);
         const auto max_time = max_time_of("alp85 script", args->max_time);
         if (!max_time) {
-            status = 2;
-            return;
+            return 2;
         }
         o.max_time = *max_time;
         if (!args->out_dir.empty()) {
@@ -93,16 +89,14 @@ void add_script_command(CLI::App& app, int& status) {
             std::filesystem::create_directories(args->out_dir, ec);
             if (ec) {
                 std::cerr << fmt::format("alp85 script: --out-dir {}: {}\n", args->out_dir, ec.message());
-                status = 2;
-                return;
+                return 2;
             }
             o.out_dir = args->out_dir;
         }
         for (const std::string& f : args->files)  // a missing one: prepare() says so, with the others
             if (const std::string why = input_problem(f); !why.empty() && why.rfind("no such file", 0) != 0) {
                 std::cerr << fmt::format("alp85 script: {}; nothing was run\n", why);
-                status = 2;
-                return;
+                return 2;
             }
         o.outputs = {{args->trace, "--trace"}, {args->junit, "--junit"}};
         // Every script is checked before any runs: a script error stops everything (status 2).
@@ -116,15 +110,13 @@ void add_script_command(CLI::App& app, int& status) {
             inputs.insert(inputs.end(), read.begin(), read.end());
         }
         if (refuse_output_clash("script", inputs, o.outputs)) {
-            status = 2;
-            return;
+            return 2;
         }
         for (std::size_t i = 0; i < args->files.size(); ++i) warn_firmware_without_monitor(programs[i]);
         if (!errors.empty()) {
             for (const auto& e : errors) std::cerr << e.format();
             std::cerr << fmt::format("alp85 script: {} error(s); nothing was run\n", errors.size());
-            status = 2;
-            return;
+            return 2;
         }
         // The trace appears whole when the run ends (passed or failed), or not at all.
         std::unique_ptr<AtomicOutput> trace;
@@ -133,8 +125,7 @@ void add_script_command(CLI::App& app, int& status) {
                 trace = std::make_unique<AtomicOutput>(args->trace);
             } catch (const std::exception& e) {
                 std::cerr << "alp85 script: trace: " << e.what() << '\n';
-                status = 1;
-                return;
+                return 1;
             }
             o.trace = &trace->stream();
         }
@@ -156,8 +147,7 @@ void add_script_command(CLI::App& app, int& status) {
                 trace->commit();
             } catch (const std::exception& e) {
                 std::cerr << "alp85 script: trace: " << e.what() << '\n';
-                status = 1;
-                return;
+                return 1;
             }
         }
         if (!args->junit.empty()) {
@@ -165,11 +155,10 @@ void add_script_command(CLI::App& app, int& status) {
                 write_atomic(args->junit, script::junit_xml(results));
             } catch (const std::exception& e) {
                 std::cerr << "alp85 script: " << e.what() << '\n';
-                status = 1;
-                return;
+                return 1;
             }
         }
-        status = failed ? 1 : 0;
+        return failed ? 1 : 0;
     });
 }
 

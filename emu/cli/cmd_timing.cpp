@@ -126,13 +126,14 @@ int run_timing(const TimingArgs& a) {
 
 void add_timing_command(CLI::App& app, int& status) {
     auto args = std::make_shared<TimingArgs>();
+    std::vector<std::string> outputs;
     CLI::App* cmd = app.add_subcommand("timing", "The machine cycles of an instruction as the 8085 data sheet draws them");
     cmd->add_option("instruction", args->instruction, "One instruction in asm85's syntax, e.g. \"MVI A,32H\" or \"STA 2050H\"");
     cmd->add_option("--at", args->at, "Its address (default 0800H)");
     cmd->add_option("--interrupt", args->interrupt, "Draw the acknowledge of rst7.5, rst6.5, rst5.5 or trap instead");
-    cmd->add_option("--svg", args->svg, "Draw the timing diagram to an SVG file");
-    cmd->add_option("--png", args->png, "Draw the timing diagram to a PNG file");
-    cmd->add_option("--vcd", args->vcd, "Write the waveforms as a VCD file (GTKWave, PulseView)");
+    add_output_option(cmd, outputs, "--svg", args->svg, "Draw the timing diagram to an SVG file");
+    add_output_option(cmd, outputs, "--png", args->png, "Draw the timing diagram to a PNG file");
+    add_output_option(cmd, outputs, "--vcd", args->vcd, "Write the waveforms as a VCD file (GTKWave, PulseView)");
     cmd->footer(
         "Each machine cycle with IO/M, S1 S0, its strobes and A15-A8, AD7-AD0; the diagrams show CLK, ALE,\n"
         "IO/M, S1, S0, /RD, /WR, /INTA and the buses T-state by T-state (T1...T6). The registers are 0 (SP too:\n"
@@ -143,15 +144,10 @@ void add_timing_command(CLI::App& app, int& status) {
         "  alp85 timing --interrupt rst7.5 --vcd ack.vcd\n"
         "Exit status: 0 success, 1 a file could not be written, 2 a usage error or an instruction that does not\n"
         "assemble.");
-    cmd->callback([args, cmd, &status] {
-        std::vector<NamedPath> outputs;
-        for (const auto& [p, role] : {std::pair{args->svg, "--svg"}, {args->png, "--png"}, {args->vcd, "--vcd"}})
-            if (!p.empty()) outputs.push_back({p, role});
-        if (refuse_empty_outputs("timing", *cmd, {"--svg", "--png", "--vcd"}) || refuse_output_clash("timing", {}, outputs)) {
-            status = kUsageError;
-            return;
-        }
-        status = run_timing(*args);
+    on_run(cmd, status, outputs, [args] {
+        // Two drawings on one file; the options not given are empty and not compared.
+        const bool clash = refuse_output_clash("timing", {}, {{args->svg, "--svg"}, {args->png, "--png"}, {args->vcd, "--vcd"}});
+        return clash ? kUsageError : run_timing(*args);
     });
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -37,7 +38,14 @@ bool refuse_output_clash(std::string_view command, const std::vector<NamedPath>&
                          const std::vector<NamedPath>& outputs);
 // An output option given an empty name (`--junit ''`: an unset shell variable, not a request for
 // no file or the default name): reported as a usage error naming the option, and true.
-bool refuse_empty_outputs(std::string_view command, const CLI::App& cmd, std::initializer_list<const char*> options);
+bool refuse_empty_outputs(std::string_view command, const CLI::App& cmd, const std::vector<std::string>& options);
+// An option naming a file the command writes (--output, --trace, --svg, ...), its long name kept
+// in `outputs` for on_run.
+CLI::Option* add_output_option(CLI::App* cmd, std::vector<std::string>& outputs, const std::string& name,
+                               std::string& path, const std::string& help);
+// What the command runs: a usage error when one of `outputs` was given an empty name
+// (refuse_empty_outputs), else the exit status `run` gives, into `status`.
+void on_run(CLI::App* cmd, int& status, std::vector<std::string> outputs, std::function<int()> run);
 // "" when `path` can be opened as an input file; else why not, naming it ("'x.com' is a
 // directory", "no such file 'x.com'").
 std::string input_file_problem(const std::string& path);

@@ -51,18 +51,30 @@ bool refuse_output_clash(std::string_view command, const std::vector<NamedPath>&
     return true;
 }
 
-bool refuse_empty_outputs(std::string_view command, const CLI::App& cmd, std::initializer_list<const char*> options) {
-    for (const char* name : options) {
+bool refuse_empty_outputs(std::string_view command, const CLI::App& cmd, const std::vector<std::string>& options) {
+    for (const std::string& name : options) {
         const CLI::Option* opt = cmd.get_option_no_throw(name);
         if (!opt || opt->count() == 0) continue;
         for (const std::string& value : opt->results())
             if (value.empty()) {
                 std::cerr << argument_error("alp85 " + std::string(command), "",
-                                            std::string(name) + " needs a file name; nothing was run or written");
+                                            name + " needs a file name; nothing was run or written");
                 return true;
             }
     }
     return false;
+}
+
+CLI::Option* add_output_option(CLI::App* cmd, std::vector<std::string>& outputs, const std::string& name,
+                               std::string& path, const std::string& help) {
+    outputs.push_back(name.substr(name.rfind(',') + 1));  // "-o,--output": --output
+    return cmd->add_option(name, path, help);
+}
+
+void on_run(CLI::App* cmd, int& status, std::vector<std::string> outputs, std::function<int()> run) {
+    cmd->callback([cmd, &status, outputs = std::move(outputs), run = std::move(run)] {
+        status = refuse_empty_outputs(cmd->get_name(), *cmd, outputs) ? kUsageError : run();
+    });
 }
 
 std::string input_file_problem(const std::string& path) { return input_problem(path); }

@@ -14,17 +14,12 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "alp85 " + std::string(alp85::version()),
                          "Print the version (and the git commit of the build) and exit");
     int status = 0;
-    alp85::cli::add_cpm_command(app, status);
-    alp85::cli::add_bench_command(app, status);
-    alp85::cli::add_disasm_command(app, status);
-    alp85::cli::add_gcode_command(app, status);
-    alp85::cli::add_pisa_command(app, status);
-    alp85::cli::add_run_command(app, status);
-    alp85::cli::add_script_command(app, status);
-    alp85::cli::add_gui_command(app, status);
-    alp85::cli::add_debug_command(app, status);
-    alp85::cli::add_dap_command(app, status);
-    alp85::cli::add_timing_command(app, status);
+    // In the order --help lists them.
+    namespace cli = alp85::cli;
+    for (auto* add : {cli::add_cpm_command, cli::add_bench_command, cli::add_disasm_command, cli::add_gcode_command,
+                      cli::add_pisa_command, cli::add_run_command, cli::add_script_command, cli::add_gui_command,
+                      cli::add_debug_command, cli::add_dap_command, cli::add_timing_command})
+        add(app, status);
 
     alp85::cli::set_command_line(argc, argv);
     // CLI11 would say only "A subcommand is required": name the word that is not a command.

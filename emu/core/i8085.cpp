@@ -840,6 +840,7 @@ struct I8085::Loop {
                     cpu.deadline_ = tnow();
                     return end;
                 }
+                if (fence && !cpu.fence_seen_[pc >> 8]) cpu.note_fenced_page(pc >> 8);
                 op = fetch(pc, tnow());
             }
             ipc = pc;
@@ -928,21 +929,29 @@ std::uint64_t I8085::run(std::uint64_t deadline) {
 }
 
 void I8085::set_fetch_fence(const std::bitset<0x10000>* fence) {
+    // Every page starts unseen (fetched through the test) and is looked at once, when an opcode is
+    // first fetched there: scanning all 65,536 addresses here was most of a debugger's stop.
     fence_ = fence;
+    fence_seen_.reset();
     fenced_pages_.reset();
-    if (fence)
-        for (unsigned p = 0; p < 256; ++p)
-            for (unsigned a = p << 8; a < (p + 1) << 8; ++a)
-                if ((*fence)[a]) {
-                    fenced_pages_[p] = true;
-                    break;
-                }
     exec_pages_maps_ = ~std::uint64_t{0};
+}
+
+void I8085::note_fenced_page(unsigned page) {
+    fence_seen_[page] = true;
+    for (unsigned a = page << 8; a < (page + 1) << 8; ++a)
+        if ((*fence_)[a]) {
+            fenced_pages_[page] = true;
+            return;
+        }
+    // No fenced address: its opcodes go through the page table from the next fetch on. A mapping
+    // changed since exec_pages_ were made is caught at the next batch (map_exec_pages).
+    exec_pages_[page] = bus_.read_pages()[page];
 }
 
 void I8085::map_exec_pages() {
     const std::uint8_t* const* const rp = bus_.read_pages();
-    for (unsigned p = 0; p < 256; ++p) exec_pages_[p] = fenced_pages_[p] ? nullptr : rp[p];
+    for (unsigned p = 0; p < 256; ++p) exec_pages_[p] = fence_seen_[p] && !fenced_pages_[p] ? rp[p] : nullptr;
     exec_pages_maps_ = bus_.map_changes();
 }
 

@@ -154,9 +154,10 @@ public:
     // pass_fence() lets the instruction at the PC through once, now (an interrupt acknowledged
     // first takes the pass away). Delay loops over a fenced address are not run at once.
     // The caller keeps the set alive while it is installed; nullptr removes it. The CPU notes
-    // which 256-byte pages hold a fenced address when the set is installed (opcodes in the other
-    // pages are fetched through a page table of their own, with no test): install it again after
-    // changing it.
+    // which 256-byte pages hold a fenced address (opcodes in the other pages are fetched through a
+    // page table of their own, with no test), each page the first time an opcode is fetched there
+    // (a debugger installs the set at every stop; a run visits a few pages): install it again
+    // after changing it.
     void set_fetch_fence(const std::bitset<0x10000>* fence);
     const std::bitset<0x10000>* fetch_fence() const { return fence_; }
     bool fence_stopped() const { return fence_hit_; }
@@ -184,6 +185,7 @@ private:
     void request_stop_batch() { limit_ = 0; }  // end this batch only (run() goes on)
     void accept_interrupt();
     void map_exec_pages();  // exec_pages_ from the bus's read pages and fenced_pages_
+    void note_fenced_page(unsigned page);  // fence_seen_ and fenced_pages_ for one page
     void push_pc_and_jump(std::uint16_t vector);
     void wake_check() { limit_ = 0; }  // a pin changed: revisit interrupts after this instruction
     std::uint8_t rim();                  // RIM: rim_value(), and the TRAP-saved IE is consumed
@@ -217,7 +219,8 @@ private:
     bool hold_ = false, hlda_ = false;
     bool fast_loops_ = true;  // host setting, not machine state: not in snapshots
     const std::bitset<0x10000>* fence_ = nullptr;  // host settings and findings, not in snapshots
-    std::bitset<256> fenced_pages_;                 // pages holding a fenced address
+    std::bitset<256> fence_seen_;                   // pages looked at since the fence was set
+    std::bitset<256> fenced_pages_;                 // of those, the pages holding a fenced address
     // Opcode fetches behind a fence: the read page where it holds no fenced address, else null.
     std::array<const std::uint8_t*, 256> exec_pages_{};
     std::uint64_t exec_pages_maps_ = ~std::uint64_t{0};  // bus_.map_changes() they were made for

@@ -86,7 +86,6 @@ private:
     void start_session();  // builds the machine from config_ (launch and restart)
     void begin();          // after configurationDone: stop on entry or run
     script::Session& session();  // throws RequestError before launch
-    Machine& machine() { return session().machine(); }
 
     // ---- breakpoints (breakpoint_requests.cpp) -----------------------------------------------------
     void set_breakpoints(const Json& args, Json& body);

@@ -1,6 +1,7 @@
 // setBreakpoints and its kin: every breakpoint bound through the assembler's line map and
 // symbols, answered with where it really is.
 #include <filesystem>
+#include <functional>
 
 #include <fmt/format.h>
 
@@ -118,11 +119,17 @@ void Adapter::arm() {
 
 namespace {
 
-// The options every kind shares; a hit condition that is none of DAP's forms is refused here.
-void read_options(const Json& spec, Breakpoint& b) {
+// One object of a request's `breakpoints`: a fresh id from `next_id`, where it is (`read_where`:
+// its line, function or instruction), then the options every kind shares; a hit condition that is
+// none of DAP's forms is refused here.
+Breakpoint new_breakpoint(const Json& spec, int& next_id, const std::function<void(Breakpoint&)>& read_where) {
+    Breakpoint b;
+    b.id = next_id++;
+    read_where(b);
     b.condition = opt_string(spec, "condition").value_or("");
     b.hit_condition = opt_string(spec, "hitCondition").value_or("");
     b.log_message = opt_string(spec, "logMessage").value_or("");
+    return b;
 }
 
 // A condition is the debugger's expression (docs/debugging.md): "" or why it is not one.
@@ -154,10 +161,8 @@ void Adapter::set_breakpoints(const Json& args, Json& body) {
     const std::string path = need_string(src, "path");
     std::vector<Breakpoint> list;
     for (const Json& spec : opt_objects(args, "breakpoints")) {
-        Breakpoint b;
-        b.id = bps_.next_id++;
-        b.line = need_line(spec, "line", lines_start_at_1_);
-        read_options(spec, b);
+        Breakpoint b = new_breakpoint(spec, bps_.next_id,
+                                      [&](Breakpoint& n) { n.line = need_line(spec, "line", lines_start_at_1_); });
         resolve(b, path);
         if (b.verified) check_options(b);
         list.push_back(std::move(b));
@@ -173,13 +178,8 @@ void Adapter::set_breakpoints(const Json& args, Json& body) {
 void Adapter::set_function_breakpoints(const Json& args, Json& body) {
     std::vector<Breakpoint> list;
     Json out = Json::array();
-    for (const Json& spec : opt_objects(args, "breakpoints")) {
-        Breakpoint b;
-        b.id = bps_.next_id++;
-        b.name = need_string(spec, "name");
-        read_options(spec, b);
-        list.push_back(std::move(b));
-    }
+    for (const Json& spec : opt_objects(args, "breakpoints"))
+        list.push_back(new_breakpoint(spec, bps_.next_id, [&](Breakpoint& b) { b.name = need_string(spec, "name"); }));
     bps_.function = std::move(list);
     resolve_breakpoints();
     for (Breakpoint& b : bps_.function) {
@@ -201,10 +201,8 @@ void Adapter::set_instruction_breakpoints(const Json& args, Json& body) {
     std::vector<Breakpoint> list;
     Json out = Json::array();
     for (const Json& spec : opt_objects(args, "breakpoints")) {
-        Breakpoint b;
-        b.id = bps_.next_id++;
-        b.name = need_string(spec, "instructionReference");
-        read_options(spec, b);
+        Breakpoint b = new_breakpoint(spec, bps_.next_id,
+                                      [&](Breakpoint& n) { n.name = need_string(spec, "instructionReference"); });
         try {
             const auto a = static_cast<std::uint16_t>(address_of(b.name) + opt_int(spec, "offset").value_or(0));
             b.addresses = {a};

@@ -20,22 +20,16 @@ std::string h2(std::uint8_t v) { return fmt::format("{:02X}H", v); }
 std::string h4(std::uint16_t v) { return fmt::format("{:04X}H", v); }
 std::string word_text(std::uint16_t v) { return fmt::format("{:04X}H ({})", v, v); }
 
-bool in_ram(const Machine& m, std::uint16_t a) {
-    for (const board::MemoryRegion& r : m.memory_map())
-        if (r.kind == board::MemoryKind::Ram && a >= r.base && a - r.base < r.size) return true;
-    return false;
-}
-
 // RAM symbols by address (the first name defined wins among equals, as SymbolTable::name_at).
-std::map<std::uint16_t, std::string> ram_symbols(const Machine& m, const SymbolTable& t) {
+std::map<std::uint16_t, std::string> ram_symbols(const debug::Debugger& d, const SymbolTable& t) {
     std::map<std::uint16_t, std::string> out;
     for (const auto& [name, value] : t.names())
-        if (in_ram(m, value) && !out.contains(value)) out[value] = t.name_at(value).value_or(name);
+        if (d.in_ram(value) && !out.contains(value)) out[value] = t.name_at(value).value_or(name);
     return out;
 }
 
-std::uint16_t read_word(const Machine& m, std::uint16_t a) {
-    return static_cast<std::uint16_t>(m.peek(a) | m.peek(static_cast<std::uint16_t>(a + 1)) << 8);
+std::uint16_t read_word(const debug::Debugger& d, std::uint16_t a) {
+    return static_cast<std::uint16_t>(d.peek(a) | d.peek(static_cast<std::uint16_t>(a + 1)) << 8);
 }
 
 // The flags in the order of their bits in F, from bit 7 (S Z K AC P V CY).
@@ -63,44 +57,44 @@ Variable ro(std::string name, std::string value) { return {std::move(name), std:
 // The CPU's description (emu/core/cpu_registers.h): the byte registers, the flag register (its
 // flags expand), then the registers that hold an address, with the memory there; a pair that
 // holds no address (PSW) is its two bytes.
-std::vector<Variable> registers(const Machine& m) {
+std::vector<Variable> registers(const debug::Debugger& d) {
     const cpu::Description& desc = cpu::description();
-    const Registers& r = m.cpu().regs();
     std::vector<Variable> v;
     for (const Register& x : desc.registers)
-        if (x.kind == Register::Kind::Byte) v.push_back({std::string(x.name), x.hex(x.read(r)), "byte", 0, {}, false});
+        if (x.kind == Register::Kind::Byte) v.push_back({std::string(x.name), x.hex(d.reg(x)), "byte", 0, {}, false});
     for (const Register& x : desc.registers)
         if (x.kind == Register::Kind::Flags)
-            v.push_back({std::string(x.name), flags_text(static_cast<std::uint8_t>(x.read(r))), "flags", kFlagScope, {}, false});
+            v.push_back({std::string(x.name), flags_text(static_cast<std::uint8_t>(d.reg(x))), "flags", kFlagScope, {}, false});
     for (const Register& x : desc.registers) {
         if (x.width <= 8 || !x.address) continue;
-        const std::uint16_t value = x.read(r);
+        const std::uint16_t value = d.reg(x);
         v.push_back({std::string(x.name), x.kind == Register::Kind::Pair ? word_text(value) : h4(value), "word", 0, value, false});
     }
-    v.push_back({"interrupts", fmt::format("{} masks {:03b}{}", m.cpu().interrupts_enabled() ? "EI" : "DI",
-                                           m.cpu().masks(), m.cpu().halted() ? " HALTED" : ""),
+    const debug::CpuStatus c = d.cpu_status();
+    v.push_back({"interrupts", fmt::format("{} masks {:03b}{}", c.interrupts_enabled ? "EI" : "DI",
+                                           c.masks, c.halted ? " HALTED" : ""),
                  "", kInterruptScope, {}, true});
     return v;
 }
 
-std::vector<Variable> interrupts(const Machine& m) {
-    const I8085& c = m.cpu();
-    return {ro("IE", c.interrupts_enabled() ? "1" : "0"),
-            ro("M7.5", c.masks() & 4 ? "1 (masked)" : "0"),
-            ro("M6.5", c.masks() & 2 ? "1 (masked)" : "0"),
-            ro("M5.5", c.masks() & 1 ? "1 (masked)" : "0"),
-            ro("RST 7.5 latch", c.rst75_latched() ? "1" : "0"),
-            ro("TRAP latch", c.trap_latched() ? "1" : "0"),
-            ro("SOD", c.sod() ? "1" : "0"),
-            ro("halted", c.halted() ? "yes" : "no"),
-            ro("T-states", std::to_string(m.now()))};
+std::vector<Variable> interrupts(const debug::Debugger& d) {
+    const debug::CpuStatus c = d.cpu_status();
+    return {ro("IE", c.interrupts_enabled ? "1" : "0"),
+            ro("M7.5", c.masks & 4 ? "1 (masked)" : "0"),
+            ro("M6.5", c.masks & 2 ? "1 (masked)" : "0"),
+            ro("M5.5", c.masks & 1 ? "1 (masked)" : "0"),
+            ro("RST 7.5 latch", c.rst75_latched ? "1" : "0"),
+            ro("TRAP latch", c.trap_latched ? "1" : "0"),
+            ro("SOD", c.sod ? "1" : "0"),
+            ro("halted", c.halted ? "yes" : "no"),
+            ro("T-states", std::to_string(d.now()))};
 }
 
-std::vector<Variable> firmware_variables(const Machine& m, const SymbolTable& t) {
+std::vector<Variable> firmware_variables(const debug::Debugger& d, const SymbolTable& t) {
     std::vector<Variable> v;
-    for (const auto& [addr, name] : ram_symbols(m, t)) {
+    for (const auto& [addr, name] : ram_symbols(d, t)) {
         const std::uint16_t size = variable_size(t, addr);
-        Variable x{name, size == 1 ? h2(m.peek(addr)) : word_text(read_word(m, addr)), size == 1 ? "byte" : "word", 0, addr, false};
+        Variable x{name, size == 1 ? h2(d.peek(addr)) : word_text(read_word(d, addr)), size == 1 ? "byte" : "word", 0, addr, false};
         x.type += " at " + h4(addr);
         v.push_back(std::move(x));
     }
@@ -113,7 +107,7 @@ Variable part_variable(const periph::Field& f, std::int64_t ref) {
 }
 
 std::vector<Variable> part_variables(const debug::Debugger& d, std::int64_t ref) {
-    const auto& parts = d.machine().parts();
+    const auto& parts = d.parts();
     const std::int64_t index = ref / kPartScope - 1, item = ref % kPartScope - 1;
     if (index < 0 || index >= static_cast<std::int64_t>(parts.size())) return {};
     const periph::Description desc = d.describe(*parts[static_cast<std::size_t>(index)]);
@@ -127,9 +121,9 @@ std::vector<Variable> part_variables(const debug::Debugger& d, std::int64_t ref)
     return v;
 }
 
-std::vector<Variable> display(const Machine& m) {
-    const auto digits = m.display();
-    std::vector<Variable> v = {ro("text", "\"" + m.display_text() + "\"")};
+std::vector<Variable> display(const debug::Debugger& d) {
+    const auto digits = d.display();
+    std::vector<Variable> v = {ro("text", "\"" + d.display_text() + "\"")};
     for (std::size_t i = 0; i < digits.size(); ++i) v.push_back(ro(fmt::format("digit {}", i), h2(digits[i])));
     return v;
 }
@@ -138,7 +132,7 @@ std::vector<Variable> display(const Machine& m) {
 
 std::vector<ScopeInfo> scope_list(const debug::Debugger& d) {
     std::vector<ScopeInfo> out = {{"Registers", kRegisterScope, "registers"}, {"Firmware variables", kFirmwareScope, "locals"}};
-    const auto& parts = d.machine().parts();
+    const auto& parts = d.parts();
     for (std::size_t i = 0; i < parts.size(); ++i) {
         if (d.describe(*parts[i]).fields.empty()) continue;
         std::string name(parts[i]->name());
@@ -150,32 +144,29 @@ std::vector<ScopeInfo> scope_list(const debug::Debugger& d) {
 }
 
 std::vector<Variable> list_variables(const debug::Debugger& d, std::int64_t ref) {
-    const Machine& m = d.machine();
     switch (ref) {
-        case kRegisterScope: return registers(m);
+        case kRegisterScope: return registers(d);
         case kFlagScope: {
-            const std::uint16_t f = cpu::description().flag_register()->read(m.cpu().regs());
+            const std::uint16_t f = d.reg(*cpu::description().flag_register());
             std::vector<Variable> v;
             for (const cpu::Flag& fl : flags_by_bit()) v.push_back({std::string(fl.name), f & fl.bit ? "1" : "0", "flag", 0, {}, false});
             return v;
         }
-        case kInterruptScope: return interrupts(m);
-        case kFirmwareScope: return firmware_variables(m, d.program());
-        case kDisplayScope: return display(m);
+        case kInterruptScope: return interrupts(d);
+        case kFirmwareScope: return firmware_variables(d, d.program());
+        case kDisplayScope: return display(d);
         default: return ref >= kPartScope ? part_variables(d, ref) : std::vector<Variable>{};
     }
 }
 
 std::string assign_variable(debug::Debugger& d, std::int64_t ref, const std::string& name, std::int64_t value) {
-    Machine& m = d.machine();
-    Registers& r = m.cpu().regs();
     if (ref == kFlagScope) {
         const cpu::Flag* f = cpu::description().find_flag(name);
         if (!f) return fmt::format("no flag '{}'", name);
         if (value != 0 && value != 1) return "a flag is 0 or 1";
         const Register* fr = cpu::description().flag_register();
-        const std::uint16_t now = fr->read(r);
-        fr->write(r, static_cast<std::uint16_t>(value ? now | f->bit : now & ~f->bit));
+        const std::uint16_t now = d.reg(*fr);
+        d.set_reg(*fr, static_cast<std::uint16_t>(value ? now | f->bit : now & ~f->bit));
         return {};
     }
     if (ref == kRegisterScope) {
@@ -183,7 +174,7 @@ std::string assign_variable(debug::Debugger& d, std::int64_t ref, const std::str
         if (!reg) return fmt::format("'{}' cannot be set", name);
         if (value < -(std::int64_t{1} << (reg->width - 1)) || value > reg->mask())
             return fmt::format("{} does not fit in {} bits", value, reg->width);
-        reg->write(r, static_cast<std::uint16_t>(value & reg->mask()));
+        d.set_reg(*reg, static_cast<std::uint16_t>(value & reg->mask()));
         return {};
     }
     if (ref == kFirmwareScope) {
@@ -192,8 +183,8 @@ std::string assign_variable(debug::Debugger& d, std::int64_t ref, const std::str
         const std::uint16_t size = variable_size(d.program(), *addr);
         if (value < (size == 1 ? -128 : -32768) || value > (size == 1 ? 0xFF : 0xFFFF))
             return fmt::format("{} does not fit in {}", value, size == 1 ? "a byte" : "a word");
-        if (!m.poke(*addr, static_cast<std::uint8_t>(value))) return fmt::format("nothing at {:04X}H to write", *addr);
-        if (size == 2) m.poke(static_cast<std::uint16_t>(*addr + 1), static_cast<std::uint8_t>(value >> 8));
+        if (!d.poke(*addr, static_cast<std::uint8_t>(value))) return fmt::format("nothing at {:04X}H to write", *addr);
+        if (size == 2) d.poke(static_cast<std::uint16_t>(*addr + 1), static_cast<std::uint8_t>(value >> 8));
         return {};
     }
     return "this value is read-only here (the console's commands change the devices)";
@@ -207,7 +198,6 @@ std::uint16_t variable_size(const SymbolTable& symbols, std::uint16_t address) {
 }
 
 std::optional<std::string> expression_value(const debug::Debugger& d, const std::string& text, std::string& error) {
-    const Machine& m = d.machine();
     std::string t = text;
     while (!t.empty() && t.front() == ' ') t.erase(0, 1);
     while (!t.empty() && t.back() == ' ') t.pop_back();
@@ -215,9 +205,9 @@ std::optional<std::string> expression_value(const debug::Debugger& d, const std:
     // expression YAC is its address, as in the debugger's console.
     const std::string u = to_upper(t);
     if (!register_named(u) && !cpu::description().find_flag(u))
-        if (const auto v = d.program().value_of(u); v && in_ram(m, *v)) {
+        if (const auto v = d.program().value_of(u); v && d.in_ram(*v)) {
             const std::uint16_t size = variable_size(d.program(), *v);
-            return fmt::format("{} at {:04X}H", size == 1 ? h2(m.peek(*v)) : word_text(read_word(m, *v)), *v);
+            return fmt::format("{} at {:04X}H", size == 1 ? h2(d.peek(*v)) : word_text(read_word(d, *v)), *v);
         }
     const debug::Debugger::Value v = d.evaluate(t);
     if (!v.error.empty()) {
@@ -229,15 +219,14 @@ std::optional<std::string> expression_value(const debug::Debugger& d, const std:
 }
 
 std::vector<CallFrame> call_frames(const debug::Debugger& d) {
-    const Machine& m = d.machine();
     std::vector<CallFrame> out;
-    const bool i8080 = m.cpu().variant() == Variant::I8080;
+    const bool i8080 = d.cpu_status().variant == Variant::I8080;
     for (const debug::Frame& f : d.backtrace()) {
         // A caller is shown at its CALL (or RST), the line the user reads as "called from here".
         std::uint16_t at = f.pc;
         if (!out.empty()) {
             const auto call = static_cast<std::uint16_t>(f.pc - 3);
-            const isa::Flow flow = isa::flow_of(m.peek(call), i8080);
+            const isa::Flow flow = isa::flow_of(d.peek(call), i8080);
             at = flow == isa::Flow::Call || flow == isa::Flow::CallIf ? call : static_cast<std::uint16_t>(f.pc - 1);
         }
         // The routine by its name (a caller's, at its CALL, without an offset); an address that no

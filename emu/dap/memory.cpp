@@ -7,14 +7,6 @@
 #include "emu/script/parser.h"
 
 namespace alp85::dap {
-namespace {
-
-asm85::Disassembly disassemble_at(Machine& m, std::uint16_t a, const SymbolTable& symbols, bool resolve) {
-    return alp85::disassemble(m.bus(), a, m.cpu().variant(), resolve ? &symbols : nullptr);
-}
-
-}  // namespace
-
 std::uint16_t Adapter::address_of(const std::string& reference) const {
     if (!session_) throw RequestError("no program yet: send 'launch' first");
     if (const auto v = session_->debugger().program().value_of(reference)) return *v;
@@ -57,9 +49,8 @@ void Adapter::write_memory(const Json& args, Json& body) {
 }
 
 void Adapter::disassemble(const Json& args, Json& body) {
-    session();
-    Machine& m = machine();
-    const SymbolTable& symbols = session_->debugger().program();
+    const debug::Debugger& dbg = session().debugger();
+    const SymbolTable& symbols = dbg.program();
     std::int64_t addr = address_of(need_string(args, "memoryReference")) + opt_int(args, "offset").value_or(0);
     std::int64_t skip = std::clamp<std::int64_t>(opt_int(args, "instructionOffset").value_or(0), -65536, 65536);
     const std::int64_t count = need_int(args, "instructionCount");
@@ -72,13 +63,13 @@ void Adapter::disassemble(const Json& args, Json& body) {
         for (int len = 3; len >= 1; --len) {
             if (addr - len < 0) continue;
             const auto a = static_cast<std::uint16_t>(addr - len);
-            if (disassemble_at(m, a, symbols, resolve).length != len) continue;
+            if (dbg.disassemble(a, !resolve).length != len) continue;
             prev = a;
             if (symbols.line_of(a) && (a == 0 || symbols.line_of(a) != symbols.line_of(static_cast<std::uint16_t>(a - 1)))) break;
         }
         addr = prev;
     }
-    for (; skip > 0; --skip) addr += disassemble_at(m, static_cast<std::uint16_t>(addr & 0xFFFF), symbols, resolve).length;
+    for (; skip > 0; --skip) addr += dbg.disassemble(static_cast<std::uint16_t>(addr & 0xFFFF), !resolve).length;
     Json out = Json::array();
     std::optional<SourceLine> last;
     for (std::int64_t i = 0; i < count; ++i) {
@@ -88,7 +79,7 @@ void Adapter::disassemble(const Json& args, Json& body) {
             continue;
         }
         const auto a = static_cast<std::uint16_t>(addr);
-        const auto d = disassemble_at(m, a, symbols, resolve);
+        const auto d = dbg.disassemble(a, !resolve);
         std::string bytes;
         for (int k = 0; k < d.length; ++k) bytes += fmt::format("{}{:02X}", k ? " " : "", d.bytes[k]);
         Json j = {{"address", hex4(a)}, {"instructionBytes", bytes}, {"instruction", d.text}};

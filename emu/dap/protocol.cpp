@@ -17,19 +17,30 @@ const Json* find(const Json& args, std::string_view key) {
     throw RequestError(fmt::format("argument '{}' must be {}", key, type));
 }
 
+// The argument `key`: null when absent; an error saying it must be `type` when `is` says it is not.
+const Json* typed(const Json& args, std::string_view key, bool (Json::*is)() const noexcept, std::string_view type) {
+    const Json* v = find(args, key);
+    if (v && !(v->*is)()) wrong(key, type);
+    return v;
+}
+
+template <class T>
+T needed(std::optional<T> v, std::string_view key) {
+    if (!v) throw RequestError(fmt::format("argument '{}' is missing", key));
+    return *std::move(v);
+}
+
 }  // namespace
 
 std::optional<std::string> opt_string(const Json& args, std::string_view key) {
-    const Json* v = find(args, key);
+    const Json* v = typed(args, key, &Json::is_string, "a string");
     if (!v) return std::nullopt;
-    if (!v->is_string()) wrong(key, "a string");
     return v->get<std::string>();
 }
 
 std::optional<std::int64_t> opt_int(const Json& args, std::string_view key) {
-    const Json* v = find(args, key);
+    const Json* v = typed(args, key, &Json::is_number_integer, "an integer");
     if (!v) return std::nullopt;
-    if (!v->is_number_integer()) wrong(key, "an integer");
     // JSON's safe integers: sums of two arguments cannot overflow.
     constexpr std::int64_t kSafe = (std::int64_t{1} << 53) - 1;
     if (v->is_number_unsigned() ? v->get<std::uint64_t>() > static_cast<std::uint64_t>(kSafe)
@@ -45,38 +56,29 @@ int need_line(const Json& args, std::string_view key, bool from_1) {
 }
 
 std::optional<bool> opt_bool(const Json& args, std::string_view key) {
-    const Json* v = find(args, key);
+    const Json* v = typed(args, key, &Json::is_boolean, "true or false");
     if (!v) return std::nullopt;
-    if (!v->is_boolean()) wrong(key, "true or false");
     return v->get<bool>();
 }
 
 std::string need_string(const Json& args, std::string_view key) {
-    auto v = opt_string(args, key);
-    if (!v) throw RequestError(fmt::format("argument '{}' is missing", key));
-    return *v;
+    return needed(opt_string(args, key), key);
 }
 
 std::int64_t need_int(const Json& args, std::string_view key) {
-    auto v = opt_int(args, key);
-    if (!v) throw RequestError(fmt::format("argument '{}' is missing", key));
-    return *v;
+    return needed(opt_int(args, key), key);
 }
 
 const Json& opt_array(const Json& args, std::string_view key) {
     static const Json empty = Json::array();
-    const Json* v = find(args, key);
-    if (!v) return empty;
-    if (!v->is_array()) wrong(key, "an array");
-    return *v;
+    const Json* v = typed(args, key, &Json::is_array, "an array");
+    return v ? *v : empty;
 }
 
 const Json& opt_object(const Json& args, std::string_view key) {
     static const Json empty = Json::object();
-    const Json* v = find(args, key);
-    if (!v) return empty;
-    if (!v->is_object()) wrong(key, "an object");
-    return *v;
+    const Json* v = typed(args, key, &Json::is_object, "an object");
+    return v ? *v : empty;
 }
 
 void check_common(const Json& args) {

@@ -611,23 +611,18 @@ std::string Console::cmd_delete(std::string_view a, int col) {
     return for_each_number(a, col, "breakpoint or watchpoint", [&](int n) { return d_.remove(n); });
 }
 
-std::string Console::cmd_enable(std::string_view a, int col) {
+std::string Console::set_enabled(std::string_view a, int col, bool on) {
     if (a.empty()) {
-        for (const auto& b : d_.breakpoints()) d_.enable(b.number, true);
-        for (const auto& w : d_.watchpoints()) d_.enable(w.number, true);
+        for (const auto& b : d_.breakpoints()) d_.enable(b.number, on);
+        for (const auto& w : d_.watchpoints()) d_.enable(w.number, on);
         return {};
     }
-    return for_each_number(a, col, "breakpoint or watchpoint", [&](int n) { return d_.enable(n, true); });
+    return for_each_number(a, col, "breakpoint or watchpoint", [&](int n) { return d_.enable(n, on); });
 }
 
-std::string Console::cmd_disable(std::string_view a, int col) {
-    if (a.empty()) {
-        for (const auto& b : d_.breakpoints()) d_.enable(b.number, false);
-        for (const auto& w : d_.watchpoints()) d_.enable(w.number, false);
-        return {};
-    }
-    return for_each_number(a, col, "breakpoint or watchpoint", [&](int n) { return d_.enable(n, false); });
-}
+std::string Console::cmd_enable(std::string_view a, int col) { return set_enabled(a, col, true); }
+
+std::string Console::cmd_disable(std::string_view a, int col) { return set_enabled(a, col, false); }
 
 std::string Console::cmd_condition(std::string_view a, int col) {
     std::string err;

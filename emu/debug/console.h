@@ -114,7 +114,12 @@ private:
     std::string location_lines(std::uint16_t pc);
     std::string run_fallback(std::string_view line);
     std::string format_value(std::int64_t v, int width, char fmt) const;
+    // print and output: [/FMT] EXPR evaluated and formatted, as "$N = VALUE\n" when `numbered`
+    // (print's history number) or the value alone; `missing` is the error for no expression.
+    std::string formatted_expression(std::string_view a, int col, std::string_view missing, bool numbered);
     std::optional<int> number_arg(std::string_view& args, int& col, std::string& err);
+    // enable and disable: the points numbered in `a`, or every one.
+    std::string set_enabled(std::string_view a, int col, bool on);
     std::string for_each_number(std::string_view a, int col, std::string_view what, const std::function<bool(int)>& act);
 
     // handlers (console.cpp: control and points; console_view.cpp: looking)

@@ -47,31 +47,26 @@ std::string Console::format_value(std::int64_t v, int width, char f) const {
     }
 }
 
-std::string Console::cmd_print(std::string_view a, int col) {
+std::string Console::formatted_expression(std::string_view a, int col, std::string_view missing, bool numbered) {
     const char f = take_format(a, col);
-    if (a.empty()) return error(col, "expected an expression");
+    if (a.empty()) return error(col, std::string(missing));
     ExprError err;
     const auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1, &vars_);
     if (!e) return error(err.col, err.message);
     try {
-        const std::int64_t v = e->eval(d_.machine());
-        return fmt::format("${} = {}\n", ++print_count_, format_value(v, e->width(), f));
+        const std::string value = format_value(e->eval(d_.machine()), e->width(), f);
+        return numbered ? fmt::format("${} = {}\n", ++print_count_, value) : value;
     } catch (const ExprError& x) {
         return error(col + x.col - 1, x.message);
     }
 }
 
+std::string Console::cmd_print(std::string_view a, int col) {
+    return formatted_expression(a, col, "expected an expression", true);
+}
+
 std::string Console::cmd_output(std::string_view a, int col) {
-    const char f = take_format(a, col);
-    if (a.empty()) return error(col, "expected an expression: output EXPR");
-    ExprError err;
-    const auto e = Expr::parse(a, d_.program(), err, Expr::Names::RegistersFirst, col - 1, &vars_);
-    if (!e) return error(err.col, err.message);
-    try {
-        return format_value(e->eval(d_.machine()), e->width(), f);
-    } catch (const ExprError& x) {
-        return error(col + x.col - 1, x.message);
-    }
+    return formatted_expression(a, col, "expected an expression: output EXPR", false);
 }
 
 std::string Console::cmd_echo(std::string_view a, int) {

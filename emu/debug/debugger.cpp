@@ -46,6 +46,18 @@ Stop Debugger::here(StopReason reason) const {
     return s;
 }
 
+CpuStatus Debugger::cpu_status() const {
+    const I8085& c = m_.cpu();
+    return {c.halted(), c.interrupts_enabled(), c.masks(), c.rst75_latched(), c.trap_latched(), c.sod(), c.rim_value(),
+            c.variant()};
+}
+
+bool Debugger::in_ram(std::uint16_t address) const {
+    for (const board::MemoryRegion& r : m_.memory_map())
+        if (r.kind == board::MemoryKind::Ram && address >= r.base && address - r.base < r.size) return true;
+    return false;
+}
+
 void Debugger::arm() {
     Observer& mon = *observer_;
     mon.rebuild();

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "emu/board/machine.h"
+#include "emu/core/cpu_registers.h"
 #include "emu/debug/expr.h"
 #include "emu/program/symbols.h"
 
@@ -180,6 +181,17 @@ struct Executed {
     std::uint64_t at = 0;
     std::uint16_t pc = 0;
     Registers before, after;
+};
+
+// The CPU's state beside its registers, as a debugger shows it.
+struct CpuStatus {
+    bool halted = false;              // waiting after a HLT
+    bool interrupts_enabled = false;  // IE
+    std::uint8_t masks = 0;           // bit 2 M7.5, bit 1 M6.5, bit 0 M5.5 (SIM's)
+    bool rst75_latched = false, trap_latched = false;
+    bool sod = false;                 // the serial output line
+    std::uint8_t rim = 0;             // what RIM would read now
+    Variant variant = Variant::I8085;
 };
 
 // How long one slice of a resumable run may go on (Debugger::resume).
@@ -369,6 +381,28 @@ public:
     // Where the program is, to show: the PC, or the HLT's address while the CPU is halted (its PC
     // is past the HLT; gdb shows an exited program where it ended).
     std::uint16_t where() const;
+
+    // ---- the machine's state, as a debugger reads and writes it --------------------------------
+    // Front ends read the board here and through the Session, never the Machine: nothing below
+    // changes a device, and the writes are a debugger's (memory by poke, a register in the file).
+    std::uint64_t now() const { return m_.now(); }
+    // A register through the CPU's description (any kind but Memory, which is memory at HL).
+    std::uint16_t reg(const cpu::Register& r) const { return r.read(m_.cpu().regs()); }
+    void set_reg(const cpu::Register& r, std::uint16_t value) { r.write(m_.cpu().regs(), value & r.mask()); }
+    CpuStatus cpu_status() const;
+    // The bus without side effects (FFH where nothing answers), and a write into RAM or EPROM
+    // storage (false where nothing is mapped).
+    std::uint8_t peek(std::uint16_t address) const { return m_.peek(address); }
+    bool poke(std::uint16_t address, std::uint8_t value) { return m_.poke(address, value); }
+    bool in_ram(std::uint16_t address) const;  // the board's memory map says RAM there
+    // The instruction at `address`, its operands named from the program's symbols unless `plain`.
+    asm85::Disassembly disassemble(std::uint16_t address, bool plain = false) const {
+        return alp85::disassemble(m_.bus(), address, m_.cpu().variant(), plain ? nullptr : &program_);
+    }
+    // Every part beside the CPU, in the machine's order (describe() tells what each shows).
+    const std::vector<periph::Part*>& parts() const { return m_.parts(); }
+    std::array<std::uint8_t, 8> display() const { return m_.display(); }  // segment bytes, leftmost first
+    std::string display_text() const { return m_.display_text(); }
 
     // Every outside input applied so far, with its T-state (Machine::input_log).
     const std::vector<InputEvent>& input_log() const { return m_.input_log(); }

@@ -37,7 +37,7 @@ std::optional<std::array<std::int32_t, 4>> Toolpath::read_vars(const script::Ses
     std::array<std::int32_t, 4> v{};
     for (int i = 0; i < 4; ++i) {
         const auto a = static_cast<std::uint16_t>(*vars_at_ + 3 * i);
-        v[static_cast<std::size_t>(i)] = s.machine().peek(a) | s.machine().peek(static_cast<std::uint16_t>(a + 1)) << 8;
+        v[static_cast<std::size_t>(i)] = s.peek(a) | s.peek(static_cast<std::uint16_t>(a + 1)) << 8;
     }
     if (v[0] == 0 && v[1] == 0 && v[2] == 0 && v[3] == 0) return std::nullopt;
     return v;
@@ -85,7 +85,7 @@ std::optional<Toolpath::Line> Toolpath::ideal(const script::Session& s) const {
         const auto now = read_vars(s);
         if (!now) return std::nullopt;
         v = *now;
-        from = {s.machine().tool().commanded_steps(periph::MachineTool::Axis::X), s.machine().tool().commanded_steps(periph::MachineTool::Axis::Y)};
+        from = {s.tool().commanded_steps(periph::MachineTool::Axis::X), s.tool().commanded_steps(periph::MachineTool::Axis::Y)};
     }
     line.from = {static_cast<double>(from[0]) * kStepMm, static_cast<double>(from[1]) * kStepMm};
     line.to = {line.from.x + (v[2] - v[0]) * kStepMm, line.from.y + (v[3] - v[1]) * kStepMm};
@@ -98,8 +98,8 @@ Bounds Toolpath::workpiece(const script::Session& s) const {
     if (const auto l = ideal(s)) {
         o = l->origin;
     } else if (const auto v = past_unknown_ ? read_vars(s) : std::nullopt) {  // standing at (X2, Y2)
-        o = {static_cast<double>(s.machine().tool().commanded_steps(periph::MachineTool::Axis::X) - (*v)[2]) * kStepMm,
-             static_cast<double>(s.machine().tool().commanded_steps(periph::MachineTool::Axis::Y) - (*v)[3]) * kStepMm};
+        o = {static_cast<double>(s.tool().commanded_steps(periph::MachineTool::Axis::X) - (*v)[2]) * kStepMm,
+             static_cast<double>(s.tool().commanded_steps(periph::MachineTool::Axis::Y) - (*v)[3]) * kStepMm};
     }
     return {o.x, o.y, o.x + kWorkpieceW, o.y + kWorkpieceH};
 }

@@ -2,16 +2,16 @@
 
 namespace alp85::front {
 
-DisplayView display_view(const script::Session& s) { return {s.machine().display(), s.machine().display_text()}; }
+DisplayView display_view(const script::Session& s) { return {s.display(), s.display_text()}; }
 
 CpuView cpu_view(const script::Session& s) {
-    const auto& cpu = s.machine().cpu();
-    return {cpu.regs().pc, cpu.halted()};
+    static const cpu::Register& pc = *cpu::description().find("PC");
+    return {s.reg(pc), s.halted()};
 }
 
 ToolView tool_view(const script::Session& s) {
     ToolView v;
-    const auto& tool = s.machine().tool();
+    const auto& tool = s.tool();
     v.model = tool.model();
     for (std::size_t a = 0; a < v.axes.size(); ++a) {
         const auto axis = static_cast<Axis>(a);

@@ -88,7 +88,7 @@ public:
         : o_(o), window_(w), hook_(hook), shell_(session_options(o)), session_(shell_.session()) {
         if (!o.out_dir.empty()) session_.set_out_dir(o.out_dir);
         session_.set_motor(o.motor);
-        if (o.parts) o.parts(session_.machine());
+        if (o.parts) o.parts(session_);
         // The terminal leaves a character's time between the characters it sends (as alp85 run).
         if (o.serial) done(session_.connect_serial(*o.serial, o.serial->frame_tstates(board::kCpuHz)));
         panes_.shown_part = o.show_part;

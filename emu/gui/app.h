@@ -27,9 +27,9 @@ struct GuiOptions {
     bool debug = false;                 // the debugger's panes in place of the machine tool's views
     double scale = 0;                   // the window's first size: layout x scale; 0: fit the screen
     bool key_map = false;               // open with the key map shown (F1 or ? toggles it)
-    // An embedder's or a test's own parts: called with the machine before the script runs (it
-    // attaches them, Machine::attach); the front end shows them from their descriptions alone.
-    std::function<void(Machine&)> parts;
+    // An embedder's or a test's own parts: called with the session before the script runs (it
+    // attaches them, Session::attach); the front end shows them from their descriptions alone.
+    std::function<void(script::Session&)> parts;
     std::string show_part;                    // --debug: the chip pane brings this part's tab forward
     // --serial: a terminal on SID/SOD and its Terminal pane (emu/gui/terminal_pane.h).
     std::optional<periph::UartFormat> serial;

@@ -170,7 +170,7 @@ void draw_part_lines(const DebugPanes::PartPane& part) {
 
 std::vector<DebugPanes::PartPane> part_panes(script::DebugShell& shell) {
     std::vector<DebugPanes::PartPane> out;
-    for (const periph::Part* part : shell.debugger().machine().parts()) {
+    for (const periph::Part* part : shell.debugger().parts()) {
         if (shell.debugger().describe(*part).empty()) continue;
         DebugPanes::PartPane pane{std::string(part->name()), {}};
         const std::string text = shell.console().info(part->name());
@@ -186,9 +186,7 @@ std::vector<DebugPanes::PartPane> part_panes(script::DebugShell& shell) {
 
 std::string registers_text(const debug::Debugger& d) {
     const cpu::Description& desc = cpu::description();
-    const Machine& m = d.machine();
-    const Registers& r = m.cpu().regs();
-    auto shown = [&](const cpu::Register& x) { return fmt::format("{} {}", x.name, x.hex(x.read(r))); };
+    auto shown = [&](const cpu::Register& x) { return fmt::format("{} {}", x.name, x.hex(d.reg(x))); };
     std::vector<std::string> left, right;
     for (const cpu::Register& x : desc.registers)
         if (x.kind == cpu::Register::Kind::Pair) left.push_back(shown(*desc.find(x.high)) + "  " + shown(*desc.find(x.low)));
@@ -196,36 +194,37 @@ std::string registers_text(const debug::Debugger& d) {
         if (desc.standalone(x)) right.push_back(shown(x));
     for (const cpu::Register& x : desc.registers)
         if (x.kind == cpu::Register::Kind::Memory)
-            if (const cpu::Register* at = desc.find(x.high)) right.push_back(fmt::format("[{}] {:02X}H", at->name, m.peek(at->read(r))));
-    right.push_back(m.cpu().halted() ? "HALTED" : "");
+            if (const cpu::Register* at = desc.find(x.high)) right.push_back(fmt::format("[{}] {:02X}H", at->name, d.peek(d.reg(*at))));
+    const debug::CpuStatus status = d.cpu_status();
+    right.push_back(status.halted ? "HALTED" : "");
     std::string out;
     const std::size_t left_width = left.empty() ? 0 : left.front().size();
     for (std::size_t i = 0; i < std::max(left.size(), right.size()); ++i)
         out += fmt::format("{:<{}}   {}\n", i < left.size() ? left[i] : "", left_width, i < right.size() ? right[i] : "");
-    const auto f = desc.flag_register()->read(r);
+    const auto f = d.reg(*desc.flag_register());
     std::string flags;
     for (const cpu::Flag& flag : desc.flags) flags += fmt::format("{}{}={}", flags.empty() ? "" : " ", flag.name, (f & flag.bit) ? 1 : 0);
-    const std::uint8_t rim = m.cpu().rim_value();
-    out += fmt::format("{}\nIE={} M7.5={} M6.5={} M5.5={} I7.5={}\nT {} ({:.3f} ms)", flags, m.cpu().interrupts_enabled() ? 1 : 0,
-                       (rim >> 2) & 1, (rim >> 1) & 1, rim & 1, (rim >> 6) & 1, m.now(), board::ms_from_tstates(m.now()));
+    const std::uint8_t rim = status.rim;
+    out += fmt::format("{}\nIE={} M7.5={} M6.5={} M5.5={} I7.5={}\nT {} ({:.3f} ms)", flags, status.interrupts_enabled ? 1 : 0,
+                       (rim >> 2) & 1, (rim >> 1) & 1, rim & 1, (rim >> 6) & 1, d.now(), board::ms_from_tstates(d.now()));
     return out;
 }
 
 void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     debug::Debugger& d = shell.debugger();
-    Machine& m = d.machine();
-    const std::uint16_t pc = m.cpu().regs().pc;
+    static const cpu::Register& pc_register = *cpu::description().find("PC");
+    const std::uint16_t pc = d.reg(pc_register);
     const auto pc_line = d.program().line_of(d.where());  // a halted CPU: its HLT's line
     if (pc != p.last_pc) {
         if (pc_line && !p.pinned) p.show(*pc_line);
         p.last_pc = pc;
     }
-    if (m.now() != p.last_t) {
+    if (d.now() != p.last_t) {
         p.registers = registers_text(d);
         p.parts = part_panes(shell);
         p.frames = d.backtrace();
         if (p.files.size() != d.program().files().size()) p.files = d.program().files();
-        p.last_t = m.now();
+        p.last_t = d.now();
     }
 
     // ---- source: the current line, breakpoints, a click sets one ----
@@ -259,7 +258,7 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     begin_pane("Disassembly", kDisasmRect);
     std::uint16_t a = pc;
     for (int i = 0; i < 12; ++i) {
-        const auto dis = disassemble(m.bus(), a, m.cpu().variant(), &d.program());
+        const auto dis = d.disassemble(a);
         const auto label = d.program().label_at(a);
         ImGui::TextColored(a == pc ? ImVec4(1, 0.9f, 0.3f, 1) : ImVec4(0.85f, 0.85f, 0.85f, 1), "%s%04XH %-8s %s", a == pc ? "=>" : "  ", a,
                            label ? label->c_str() : "", dis.text.c_str());
@@ -278,7 +277,7 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
         for (int row = 0; row < 4; ++row) {
             const auto at = static_cast<std::uint16_t>(base.value + row * 16);
             std::string line = fmt::format("{:04X}H ", at);
-            for (int k = 0; k < 16; ++k) line += fmt::format(" {:02X}", m.peek(static_cast<std::uint16_t>(at + k)));
+            for (int k = 0; k < 16; ++k) line += fmt::format(" {:02X}", d.peek(static_cast<std::uint16_t>(at + k)));
             ImGui::TextUnformatted(line.c_str());
         }
     }
@@ -347,20 +346,21 @@ void draw_debug_panes(DebugPanes& p, script::DebugShell& shell, bool running) {
     begin_pane("Run", kStepButtonsRect);
     const ImVec2 b{100, 0};
     using R = DebugPanes::Request;
-    if (named_button("debug.continue", running ? "Pause###cont" : "Continue###cont", b.x)) p.request = running ? R::Pause : R::Continue;
-    ImGui::SameLine();
-    if (named_button("debug.step", "Step", b.x)) p.request = R::Step;
-    ImGui::SameLine();
-    if (named_button("debug.next", "Next", b.x)) p.request = R::Next;
-    ImGui::SameLine();
-    if (named_button("debug.finish", "Finish", b.x)) p.request = R::Finish;
-    if (named_button("debug.reverse-continue", "Rev continue", b.x)) p.request = R::ReverseContinue;
-    ImGui::SameLine();
-    if (named_button("debug.reverse-step", "Rev step", b.x)) p.request = R::ReverseStep;
-    ImGui::SameLine();
-    if (named_button("debug.reverse-next", "Rev next", b.x)) p.request = R::ReverseNext;
-    ImGui::SameLine();
-    if (named_button("debug.reverse-finish", "Rev finish", b.x)) p.request = R::ReverseFinish;
+    struct StepButton {
+        const char* id;
+        const char* label;
+        R request;
+    };
+    // Two rows of four, forward then back; Continue is Pause while the machine runs.
+    const StepButton steps[] = {
+        {"debug.continue", running ? "Pause###cont" : "Continue###cont", running ? R::Pause : R::Continue},
+        {"debug.step", "Step", R::Step}, {"debug.next", "Next", R::Next}, {"debug.finish", "Finish", R::Finish},
+        {"debug.reverse-continue", "Rev continue", R::ReverseContinue}, {"debug.reverse-step", "Rev step", R::ReverseStep},
+        {"debug.reverse-next", "Rev next", R::ReverseNext}, {"debug.reverse-finish", "Rev finish", R::ReverseFinish}};
+    for (std::size_t i = 0; i < std::size(steps); ++i) {
+        if (i % 4 != 0) ImGui::SameLine();
+        if (named_button(steps[i].id, steps[i].label, b.x)) p.request = steps[i].request;
+    }
     // Every source of the loaded program's map: the source pane shows the one chosen.
     ImGui::SetNextItemWidth(260);
     const std::string shown = p.file.empty() ? std::string("(none)") : std::filesystem::path(p.file).filename().string();

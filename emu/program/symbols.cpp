@@ -92,14 +92,15 @@ void SymbolTable::add_line(std::uint16_t address, std::uint16_t length, const st
     if (length == 0) return;
     spans_.push_back({address, length, file_index(file), line});
     starts_[address] = length;
+    if (span_at_.empty()) span_at_.assign(0x10000, 0);
+    const auto index = static_cast<std::uint32_t>(spans_.size());
+    for (std::uint32_t k = 0; k < length; ++k) span_at_[static_cast<std::uint16_t>(address + k)] = index;
 }
 
 std::optional<SourceLine> SymbolTable::line_of(std::uint16_t addr) const {
-    for (auto it = spans_.rbegin(); it != spans_.rend(); ++it) {
-        if (static_cast<std::uint16_t>(addr - it->address) < it->length)
-            return SourceLine{files_[static_cast<std::size_t>(it->file)], it->line};
-    }
-    return std::nullopt;
+    if (span_at_.empty() || span_at_[addr] == 0) return std::nullopt;
+    const Span& s = spans_[span_at_[addr] - 1];
+    return SourceLine{files_[static_cast<std::size_t>(s.file)], s.line};
 }
 
 bool SymbolTable::file_matches(int index, std::string_view file) const {

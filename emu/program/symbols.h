@@ -90,6 +90,9 @@ private:
     std::unordered_map<std::string, std::uint16_t> by_name_;
     std::vector<std::string> files_;
     std::vector<Span> spans_;  // in load order
+    // Address -> 1 + the index in spans_ of the last-loaded span covering it (0: none), so that
+    // line_of answers at once: a debugger asks it at every stop and for every frame of a backtrace.
+    std::vector<std::uint32_t> span_at_;
     std::map<std::uint16_t, std::uint16_t> starts_;  // the first address of each line -> its length (last load wins)
 };
 

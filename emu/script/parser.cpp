@@ -57,18 +57,18 @@ public:
         using F = std::vector<std::string_view>;
         static const std::vector<Verb> table = {
             {{"load", "load FILE [at ADDR]: an .asm (assembled, its symbols and lines kept), .hex or .bin (at ADDR) image", {}, true}, &LineParser::load},
-            {{"monitor", "monitor: the ALP 85 monitor ROM at 0000H and its symbols", {}, false}, &LineParser::monitor},
-            {{"firmware", "firmware NAME: built-in firmware with its symbols and lines (thesis, thesis-fixed, master, monitor)", {}, false}, &LineParser::firmware},
-            {{"reset", "reset: RESET IN now (CPU, 8155, 8279); expect time counts from here", {}, false}, &LineParser::reset},
-            {{"press", "press KEY [hold TIME] [gap TIME]: a key pressed, held (30ms), released, then the gap (30ms) run", {}, false}, &LineParser::press},
-            {{"type", "type KEY...: each key pressed in turn (type R 7 0800 EXEC)", {}, false}, &LineParser::type},
-            {{"keydown", "keydown KEY: a key down now, without running", {}, false}, &LineParser::keydown},
-            {{"keyup", "keyup KEY: a key up now, without running", {}, false}, &LineParser::keyup},
+            {{"monitor", "monitor: the ALP 85 monitor ROM at 0000H and its symbols"}, &LineParser::monitor},
+            {{"firmware", "firmware NAME: built-in firmware with its symbols and lines (thesis, thesis-fixed, master, monitor)"}, &LineParser::firmware},
+            {{"reset", "reset: RESET IN now (CPU, 8155, 8279); expect time counts from here"}, &LineParser::reset},
+            {{"press", "press KEY [hold TIME] [gap TIME]: a key pressed, held (30ms), released, then the gap (30ms) run"}, &LineParser::press},
+            {{"type", "type KEY...: each key pressed in turn (type R 7 0800 EXEC)"}, &LineParser::type},
+            {{"keydown", "keydown KEY: a key down now, without running"}, &LineParser::keydown},
+            {{"keyup", "keyup KEY: a key up now, without running"}, &LineParser::keyup},
             {{"run", "run TIME | run until ADDR [timeout TIME] | run until axis X|Y|Z steps [OP] N [timeout TIME]: run for TIME, or until the PC reaches ADDR (passing breakpoints) or the axis its position", F{"UNTIL"}, false}, &LineParser::run},
-            {{"wait", "wait display \"TEXT\" [timeout TIME]: run until the display reads TEXT (5s)", {}, false}, &LineParser::wait},
-            {{"step", "step [N]: N instructions", {}, false}, &LineParser::step},
-            {{"break", "break ADDR: a breakpoint (the debugger's break is taken at its prompt)", {}, false}, &LineParser::brk},
-            {{"delete", "delete ADDR|all: breakpoints (the debugger's delete is taken at its prompt)", {}, false}, &LineParser::del},
+            {{"wait", "wait display \"TEXT\" [timeout TIME]: run until the display reads TEXT (5s)"}, &LineParser::wait},
+            {{"step", "step [N]: N instructions"}, &LineParser::step},
+            {{"break", "break ADDR: a breakpoint (the debugger's break is taken at its prompt)"}, &LineParser::brk},
+            {{"delete", "delete ADDR|all: breakpoints (the debugger's delete is taken at its prompt)"}, &LineParser::del},
             {{"expect", "expect display|mem|word|reg|flag|port|symbol|time|halted|running|axis|count|lost ...: fails unless the machine shows it (docs/scripting.md)",
               F{"DISPLAY", "MEM", "WORD", "REG", "FLAG", "PORT", "SYMBOL", "TIME", "HALTED", "RUNNING", "AXIS", "COUNT", "LOST"}, false}, &LineParser::expect},
             {{"set", "set mem ADDR VALUE... | set reg REG VALUE: memory or a register", F{"MEM", "REG"}, false}, &LineParser::set},
@@ -76,11 +76,11 @@ public:
             {{"restore", "restore FILE: the machine as a snapshot holds it", {}, true}, &LineParser::restore},
             {{"print", "print display [text] | print axes | print time | print \"TEXT\"...: the display, the tool's axes, the time, a message",
               F{"\"", "DISPLAY", "AXES", "TIME"}, false}, &LineParser::print},
-            {{"motor", "motor ideal|physical: the stepper motors' model from now on", {}, false}, &LineParser::motor},
-            {{"feedback", "feedback scale|commanded: what the transducers read from now on", {}, false}, &LineParser::feedback},
-            {{"new", "new workpiece: every table wound back to its power-on position", {}, false}, &LineParser::new_workpiece},
-            {{"mark", "mark: the time print time also counts from", {}, false}, &LineParser::mark},
-            {{"option", "option expansion on|off: the 4 KB expansion EPROM at 3000H", {}, false}, &LineParser::option},
+            {{"motor", "motor ideal|physical: the stepper motors' model from now on"}, &LineParser::motor},
+            {{"feedback", "feedback scale|commanded: what the transducers read from now on"}, &LineParser::feedback},
+            {{"new", "new workpiece: every table wound back to its power-on position"}, &LineParser::new_workpiece},
+            {{"mark", "mark: the time print time also counts from"}, &LineParser::mark},
+            {{"option", "option expansion on|off: the 4 KB expansion EPROM at 3000H"}, &LineParser::option},
             {{"record", "record FILE.csv [every TIME] | record signals FILE.vcd [PIN...] [every TIME] | record stop: the tool or the pins", {}, true}, &LineParser::record},
             {{"plot", "plot toolpath|time FILE.svg|FILE.png [from X,Y to X,Y]: what record FILE.csv recorded", {}, true}, &LineParser::plot},
         };
@@ -191,39 +191,49 @@ private:
         return true;
     }
 
-    bool time(std::uint64_t& out, const char* what) {
+    // The unquoted operand that follows, read by `parse` into `out`; text it refuses is reported
+    // by `refused`, a format naming that text ("unknown key '{}'").
+    template <class T, class Parse>
+    bool parsed(T& out, const char* what, const Parse& parse, std::string_view refused) {
         if (!more() || peek().quoted) return missing(what);
-        const auto t = parse_time(peek().text);
-        if (!t) {
-            error(peek().col, fmt::format("bad time '{}' (a number with a unit: t, us, ms or s)", peek().text));
+        const auto r = parse(peek().text);
+        if (!r) {
+            error(peek().col, fmt::format(fmt::runtime(refused), peek().text));
             return false;
         }
-        out = *t;
+        out = *r;
         ++pos_;
         return true;
     }
 
-    bool key(KeyRef& k) {
-        if (!more() || peek().quoted) return missing("a key name");
-        const auto r = parse_key(peek().text);
-        if (!r) {
-            error(peek().col, fmt::format("unknown key '{}'", peek().text));
-            return false;
-        }
-        k = *r;
-        ++pos_;
-        return true;
+    bool time(std::uint64_t& out, const char* what) {
+        return parsed(out, what, parse_time, "bad time '{}' (a number with a unit: t, us, ms or s)");
     }
+
+    bool key(KeyRef& k) { return parsed(k, "a key name", parse_key, "unknown key '{}'"); }
 
     bool reg(const cpu::Register*& r) {
-        if (!more() || peek().quoted) return missing("a register");
-        const cpu::Register* v = parse_reg(peek().text);
-        if (!v) {
-            error(peek().col, fmt::format("unknown register '{}'", peek().text));
-            return false;
-        }
-        r = v;
+        // parse_reg's null for no register, as an empty optional
+        const auto known = [](std::string_view text) -> std::optional<const cpu::Register*> {
+            const cpu::Register* v = parse_reg(text);
+            return v ? std::optional(v) : std::nullopt;
+        };
+        return parsed(r, "a register", known, "unknown register '{}'");
+    }
+
+    // An address or symbol into c.address.
+    bool address(Command& c, const char* what) {
+        Value v;
+        if (!value(v, what, true)) return false;
+        c.address = v;
+        return true;
+    }
+
+    // The word `w` next makes the command `op`, with nothing after it (record stop, delete all).
+    bool word_alone(Command& c, std::string_view w, Op op) {
+        if (!at_word(w)) return false;
         ++pos_;
+        c.op = op;
         return true;
     }
 
@@ -237,13 +247,9 @@ private:
     bool load(Command& c) {
         c.op = Op::Load;
         if (!string_operand(c.text, "a file name")) return false;
-        if (at_word("AT")) {
-            ++pos_;
-            Value v;
-            if (!value(v, "an address", true)) return false;
-            c.address = v;
-        }
-        return true;
+        if (!at_word("AT")) return true;
+        ++pos_;
+        return address(c, "an address");
     }
     bool monitor(Command& c) {
         c.op = Op::Monitor;
@@ -257,11 +263,16 @@ private:
         c.op = Op::Reset;
         return true;
     }
-    bool press(Command& c) {
-        c.op = Op::Press;
+    // The command `op` on the one key that follows.
+    bool one_key(Command& c, Op op) {
+        c.op = op;
         KeyRef k;
         if (!key(k)) return false;
         c.keys.push_back(k);
+        return true;
+    }
+    bool press(Command& c) {
+        if (!one_key(c, Op::Press)) return false;
         c.time = kDefaultHold;
         c.gap = kDefaultGap;
         while (at_word("HOLD") || at_word("GAP")) {
@@ -285,20 +296,8 @@ private:
         }
         return true;
     }
-    bool keydown(Command& c) {
-        c.op = Op::KeyDown;
-        KeyRef k;
-        if (!key(k)) return false;
-        c.keys.push_back(k);
-        return true;
-    }
-    bool keyup(Command& c) {
-        c.op = Op::KeyUp;
-        KeyRef k;
-        if (!key(k)) return false;
-        c.keys.push_back(k);
-        return true;
-    }
+    bool keydown(Command& c) { return one_key(c, Op::KeyDown); }
+    bool keyup(Command& c) { return one_key(c, Op::KeyUp); }
     // ---- the machine tool ---------------------------------------------------------------------
     bool tool_axis(Command& c) {
         if (!more() || peek().quoted) return missing("an axis (X, Y or Z)");
@@ -407,11 +406,7 @@ private:
         return one_of(c, "SCALE", "COMMANDED", "feedback");
     }
     bool record(Command& c) {
-        if (at_word("STOP")) {
-            ++pos_;
-            c.op = Op::RecordStop;
-            return true;
-        }
+        if (word_alone(c, "STOP", Op::RecordStop)) return true;
         c.op = Op::Record;
         // record signals FILE.vcd [PIN...] [every T]; a CSV file named "signals" is `record "signals"`.
         if (at_word("SIGNALS")) {
@@ -488,9 +483,7 @@ private:
                 return optional_time("TIMEOUT", c.time);
             }
             c.op = Op::RunUntil;
-            Value v;
-            if (!value(v, "an address or symbol", true)) return false;
-            c.address = v;
+            if (!address(c, "an address or symbol")) return false;
             c.time = kDefaultUntil;
             return optional_time("TIMEOUT", c.time);
         }
@@ -519,22 +512,12 @@ private:
     }
     bool brk(Command& c) {
         c.op = Op::Break;
-        Value v;
-        if (!value(v, "an address or symbol", true)) return false;
-        c.address = v;
-        return true;
+        return address(c, "an address or symbol");
     }
     bool del(Command& c) {
-        if (at_word("ALL")) {
-            ++pos_;
-            c.op = Op::DeleteAll;
-            return true;
-        }
+        if (word_alone(c, "ALL", Op::DeleteAll)) return true;
         c.op = Op::Delete;
-        Value v;
-        if (!value(v, "an address, a symbol or 'all'", true)) return false;
-        c.address = v;
-        return true;
+        return address(c, "an address, a symbol or 'all'");
     }
     bool values(Command& c, const char* what) {
         if (!more()) return missing(what);

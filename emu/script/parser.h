@@ -30,7 +30,7 @@ struct CommandInfo {
     std::string_view help;  // "usage: what it does"
     // Where the debugger has a command of the same name (run, expect, set, print), the words after
     // the name that make a line this one's ("\"": a quoted string); empty: the debugger's takes it.
-    std::vector<std::string_view> forms;
+    std::vector<std::string_view> forms = {};
     bool takes_file = false;  // names a file: completion offers file names after it
 };
 const std::vector<CommandInfo>& commands();

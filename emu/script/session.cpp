@@ -178,6 +178,69 @@ void Session::set_trace(std::ostream* out) {
     });
 }
 
+std::string Session::check_monitor(std::set<std::string>& known) const {
+    if (!options_.monitor_rom) return "this alp85 was built without the monitor ROM";
+    const firmware::Firmware rom = options_.monitor_rom();
+    for (const auto& s : rom.symbols.names()) known.insert(s.first);
+    return {};
+}
+
+std::string Session::check_firmware(const std::string& name, std::set<std::string>& known) const {
+    const auto fw = firmware::find(name);
+    if (!fw) {
+        std::string names;
+        for (const auto& e : firmware::builtin()) names += (names.empty() ? "" : ", ") + std::string(e.name);
+        return fmt::format("no firmware '{}' in this alp85 (built in: {})", name, names);
+    }
+    for (const auto& s : fw->symbols.names()) known.insert(s.first);
+    return {};
+}
+
+std::string Session::check_program(const std::filesystem::path& file, bool has_address) const {
+    const auto path = resolve(file.string());
+    if (std::string why = program_file_problem(path); !why.empty()) return why;
+    const std::string ext = lower_extension(path);
+    if ((ext == ".bin" || ext == ".rom") && !has_address) return "a binary image needs 'at ADDRESS'";
+    return {};
+}
+
+std::string Session::check_image(const std::filesystem::path& file, const std::optional<Value>& address,
+                                 std::set<std::string>& known) {
+    const auto path = resolve(file.string());
+    try {
+        LoadOptions lo;
+        if (address)  // a number is checked where it goes; a symbol's address is known at run time
+            lo.address = !address->expression && address->number >= 0 && address->number <= 0xFFFF
+                             ? static_cast<std::uint16_t>(address->number)
+                             : std::uint16_t{0};
+        LoadedImage img = read_image(path, lo);
+        if (!address || !address->expression) check_board_regions(img, path);
+        for (const std::string& w : img.warnings)
+            if (std::find(warnings_.begin(), warnings_.end(), w) == warnings_.end()) warnings_.push_back(w);
+        for (const auto& s : img.symbols) known.insert(s.name);
+        if (!address) assembled_[path.string()] = std::move(img);
+    } catch (const LoadError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+std::vector<std::pair<int, std::string>> Session::check_value(const Value& v, std::int64_t lo, std::int64_t hi,
+                                                              const char* what, const std::set<std::string>& known) const {
+    std::vector<std::pair<int, std::string>> out;
+    if (v.expression) {  // each name a symbol loaded before this line, or a register or flag
+        for (const debug::Expr::Name& n : v.names)
+            if (!known.count(n.name) && (n.symbol_only || !n.machine))
+                out.emplace_back(v.col + n.col - 1,
+                                 fmt::format("unknown symbol '{}' (no source loaded before this line defines it)", n.name));
+        return out;
+    }
+    if (v.number < lo || v.number > hi) out.emplace_back(v.col, fmt::format("{} {} is out of range ({}..{})", what, v.text, lo, hi));
+    return out;
+}
+
+std::string Session::check_pin(const std::string& pin) const { return debug::SignalRecorder::check_selection(*machine_, {pin}); }
+
 void Session::check(const std::vector<Command>& commands, std::vector<ParseError>& errors) {
     std::set<std::string> known;  // symbols defined by loads so far
     std::set<std::string> saved;  // snapshot files an earlier command writes
@@ -189,46 +252,19 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
         const auto p = c.line.find(text);
         return p == std::string::npos ? c.where.col : static_cast<int>(p) + 1;
     };
-    auto check_value = [&](const Command& c, const Value& v, std::int64_t lo, std::int64_t hi, const char* what) {
-        if (v.expression) {  // each name a symbol loaded before this line, or a register or flag
-            for (const debug::Expr::Name& n : v.names)
-                if (!known.count(n.name) && (n.symbol_only || !n.machine))
-                    err(c, v.col + n.col - 1,
-                        fmt::format("unknown symbol '{}' (no source loaded before this line defines it)", n.name));
-            return;
-        }
-        if (v.number < lo || v.number > hi) err(c, v.col, fmt::format("{} {} is out of range ({}..{})", what, v.text, lo, hi));
+    auto value_in = [&](const Command& c, const Value& v, std::int64_t lo, std::int64_t hi, const char* what) {
+        for (auto& [col, why] : check_value(v, lo, hi, what, known)) err(c, col, std::move(why));
     };
     for (const Command& c : commands) {
         switch (c.op) {
             case Op::Load: {
-                const auto path = resolve(c.text);
                 const int col = col_of(c, c.text);
-                if (const std::string why = program_file_problem(path); !why.empty()) {
-                    err(c, col, why);
+                if (std::string why = check_program(c.text, c.address.has_value()); !why.empty()) {
+                    err(c, col, std::move(why));
                     break;
                 }
-                const std::string ext = lower_extension(path);
-                if ((ext == ".bin" || ext == ".rom") && !c.address) {
-                    err(c, col, "a binary image needs 'at ADDRESS'");
-                    break;
-                }
-                if (c.address) check_value(c, *c.address, 0, 0xFFFF, "address");
-                try {
-                    LoadOptions lo;
-                    if (c.address)  // a number is checked where it goes; a symbol's address is known at run time
-                        lo.address = !c.address->expression && c.address->number >= 0 && c.address->number <= 0xFFFF
-                                         ? static_cast<std::uint16_t>(c.address->number)
-                                         : std::uint16_t{0};
-                    LoadedImage img = read_image(path, lo);
-                    if (!c.address || !c.address->expression) check_board_regions(img, path);
-                    for (const std::string& w : img.warnings)
-                        if (std::find(warnings_.begin(), warnings_.end(), w) == warnings_.end()) warnings_.push_back(w);
-                    for (const auto& s : img.symbols) known.insert(s.name);
-                    if (!c.address) assembled_[path.string()] = std::move(img);
-                } catch (const LoadError& e) {
-                    err(c, col, e.what());
-                }
+                if (c.address) value_in(c, *c.address, 0, 0xFFFF, "address");
+                if (std::string why = check_image(c.text, c.address, known); !why.empty()) err(c, col, std::move(why));
                 break;
             }
             case Op::Restore:
@@ -238,56 +274,42 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 break;
             case Op::Save: saved.insert(resolve_output(c.text).string()); break;
             case Op::Monitor:
-                if (!options_.monitor_rom) err(c, c.where.col, "this alp85 was built without the monitor ROM");
-                else
-                {
-                    const firmware::Firmware rom = options_.monitor_rom();
-                    for (const auto& s : rom.symbols.names()) known.insert(s.first);
-                }
+                if (std::string why = check_monitor(known); !why.empty()) err(c, c.where.col, std::move(why));
                 break;
-            case Op::Firmware: {
-                const auto fw = firmware::find(c.text);
-                if (!fw) {
-                    std::string names;
-                    for (const auto& e : firmware::builtin()) names += (names.empty() ? "" : ", ") + std::string(e.name);
-                    err(c, col_of(c, c.text), fmt::format("no firmware '{}' in this alp85 (built in: {})", c.text, names));
-                } else {
-                    for (const auto& s : fw->symbols.names()) known.insert(s.first);
-                }
+            case Op::Firmware:
+                if (std::string why = check_firmware(c.text, known); !why.empty()) err(c, col_of(c, c.text), std::move(why));
                 break;
-            }
             case Op::Record:
                 if (!c.signals) {
                     recorded = true;
                     break;
                 }
                 for (const Value& v : c.pins)
-                    if (const std::string why = debug::SignalRecorder::check_selection(*machine_, {v.text}); !why.empty())
-                        err(c, v.col, why);
+                    if (std::string why = check_pin(v.text); !why.empty()) err(c, v.col, std::move(why));
                 break;
             case Op::Plot:
                 if (!recorded) err(c, c.where.col, "nothing recorded to plot: a 'record FILE.csv' must come first");
                 break;
             case Op::RunUntil:
             case Op::Break:
-            case Op::Delete: check_value(c, *c.address, 0, 0xFFFF, "address"); break;
+            case Op::Delete: value_in(c, *c.address, 0, 0xFFFF, "address"); break;
             case Op::ExpectMem:
             case Op::SetMem:
-                check_value(c, *c.address, 0, 0xFFFF, "address");
-                for (const Value& v : c.values) check_value(c, v, -128, 255, "byte");
+                value_in(c, *c.address, 0, 0xFFFF, "address");
+                for (const Value& v : c.values) value_in(c, v, -128, 255, "byte");
                 break;
             case Op::ExpectWord:
-                check_value(c, *c.address, 0, 0xFFFF, "address");
-                check_value(c, c.values[0], -32768, 0xFFFF, "word");
+                value_in(c, *c.address, 0, 0xFFFF, "address");
+                value_in(c, c.values[0], -32768, 0xFFFF, "word");
                 break;
             case Op::ExpectReg:
             case Op::SetReg:
-                check_value(c, c.values[0], -(std::int64_t{1} << (c.reg->width - 1)), c.reg->mask(), "value");
+                value_in(c, c.values[0], -(std::int64_t{1} << (c.reg->width - 1)), c.reg->mask(), "value");
                 break;
-            case Op::ExpectPort: check_value(c, c.values[0], 0, 0xFF, "value"); break;
+            case Op::ExpectPort: value_in(c, c.values[0], 0, 0xFF, "value"); break;
             case Op::ExpectSymbol:
                 if (!known.count(c.name)) err(c, col_of(c, c.name), fmt::format("unknown symbol '{}'", c.name));
-                check_value(c, c.values[0], -32768, 0xFFFF, "value");
+                value_in(c, c.values[0], -32768, 0xFFFF, "value");
                 break;
             default: break;
         }
@@ -452,6 +474,11 @@ void Session::key(Button button, periph::Key k, bool down, std::optional<std::ui
     Machine& m = *machine_;
     schedule_key(m, button, k, down, at.value_or(m.now()));
     if (button == Button::Reset && down) time_origin_ = m.now();
+}
+
+void Session::attach(periph::Part& part, IoDevice* io, std::uint8_t first, std::uint8_t last) {
+    machine_->attach(part, io, first, last);
+    debugger_.state_changed(true);  // a part came in: no earlier snapshot has it
 }
 
 void Session::set_pc(std::uint16_t pc) {
@@ -975,7 +1002,18 @@ Session::Outcome Session::run_command(const Command& c) {
         }
         return out;
     };
-    auto value = [&]() { return resolve(c.values[0], e); };
+    // `call` with the command's first value, or why it has none.
+    auto with_value = [&](const auto& call) -> Outcome {
+        const auto v = resolve(c.values[0], e);
+        return v ? call(*v) : fail(e);
+    };
+    // `call` with the command's address and bytes, or why they have none.
+    auto with_bytes = [&](const auto& call) -> Outcome {
+        const auto a = address();
+        const auto b = a ? bytes() : std::nullopt;
+        return b ? call(*a, *b) : fail(e);
+    };
+    using Bytes = std::vector<std::uint8_t>;
     switch (c.op) {
         case Op::Load: {
             std::optional<std::uint16_t> at;
@@ -1003,15 +1041,8 @@ Session::Outcome Session::run_command(const Command& c) {
             return c.op == Op::Break ? add_breakpoint(*a) : delete_breakpoints(*a);
         }
         case Op::DeleteAll: return delete_all_breakpoints();
-        case Op::SetMem: {
-            const auto a = address();
-            const auto b = a ? bytes() : std::nullopt;
-            return b ? set_mem(*a, *b) : fail(e);
-        }
-        case Op::SetReg: {
-            const auto v = value();
-            return v ? set_reg(*c.reg, static_cast<std::uint16_t>(*v)) : fail(e);
-        }
+        case Op::SetMem: return with_bytes([&](std::uint16_t a, const Bytes& b) { return set_mem(a, b); });
+        case Op::SetReg: return with_value([&](std::int64_t v) { return set_reg(*c.reg, static_cast<std::uint16_t>(v)); });
         case Op::Save: return save(c.text);
         case Op::Restore: return restore(c.text);
         case Op::Option: return set_option(c.real == 1);
@@ -1039,34 +1070,21 @@ Session::Outcome Session::run_command(const Command& c) {
         case Op::PrintDisplay: return print_display(c.text == "text");
         case Op::Print: return print(c.text);
         case Op::ExpectDisplay: return expect_display(c.text);
-        case Op::ExpectMem: {
-            const auto a = address();
-            const auto b = a ? bytes() : std::nullopt;
-            return b ? expect_mem(*a, *b) : fail(e);
-        }
+        case Op::ExpectMem: return with_bytes([&](std::uint16_t a, const Bytes& b) { return expect_mem(a, b); });
         case Op::ExpectWord: {
             const auto a = address();
-            const auto v = value();
+            const auto v = resolve(c.values[0], e);
             return a && v ? expect_word(*a, static_cast<std::uint16_t>(*v)) : fail(e);
         }
-        case Op::ExpectReg: {
-            const auto v = value();
-            return v ? expect_reg(*c.reg, static_cast<std::uint16_t>(*v)) : fail(e);
-        }
+        case Op::ExpectReg: return with_value([&](std::int64_t v) { return expect_reg(*c.reg, static_cast<std::uint16_t>(v)); });
         case Op::ExpectFlag: {  // the flag of the parsed bit, named as written
             const auto& flags = cpu::description().flags;
             const auto f = std::find_if(flags.begin(), flags.end(), [&](const cpu::Flag& x) { return x.bit == c.flag; });
             if (f == flags.end()) return fail(fmt::format("no flag of bit {:02X}H", c.flag));
             return expect_flag(*f, c.values[0].number != 0, c.flag_name);
         }
-        case Op::ExpectPort: {
-            const auto v = value();
-            return v ? expect_port(c.port, static_cast<std::uint8_t>(*v)) : fail(e);
-        }
-        case Op::ExpectSymbol: {
-            const auto v = value();
-            return v ? expect_symbol(c.name, static_cast<std::uint16_t>(*v)) : fail(e);
-        }
+        case Op::ExpectPort: return with_value([&](std::int64_t v) { return expect_port(c.port, static_cast<std::uint8_t>(v)); });
+        case Op::ExpectSymbol: return with_value([&](std::int64_t v) { return expect_symbol(c.name, static_cast<std::uint16_t>(v)); });
         case Op::ExpectTime: return expect_time(c.compare, c.time);
         case Op::ExpectHalted: return expect_halted(true);
         case Op::ExpectRunning: return expect_halted(false);

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -135,6 +136,41 @@ public:
     periph::SerialTerminal* serial() { return serial_.get(); }
     // Characters typed at that terminal now, scheduled as the keys are; sent one after another.
     void serial_type(std::string_view text);
+
+    // ---- state, read and written as a debugger does -------------------------------------------
+    // A register through the CPU's description (cpu::description()): read, or set to the low
+    // `width` bits (no history ends: set_reg does that for a script's `set reg`).
+    std::uint16_t reg(const cpu::Register& r) const { return debugger_.reg(r); }
+    bool halted() const { return machine_->cpu().halted(); }
+    // The eight digits' segment bytes (leftmost first) and their nearest characters.
+    std::array<std::uint8_t, 8> display() const { return machine_->display(); }
+    std::string display_text() const { return machine_->display_text(); }
+    // The machine tool as it stands (not caught up with the machine's time: what it last did).
+    const periph::MachineTool& tool() const { return machine_->tool(); }
+    // An accessory added to the board (Machine::attach): advanced, reset and saved with the
+    // board's own parts from now on; it must outlive the session.
+    void attach(periph::Part& part, IoDevice* io = nullptr, std::uint8_t first = 0, std::uint8_t last = 0);
+
+    // ---- checks before a run ----------------------------------------------------------------------
+    // What check() checks of a script's lines, for a front end that makes the typed calls itself
+    // (alp85 run) and reports the problems at its own arguments. Each gives "" or why; `known`
+    // collects the symbols the loads so far define (an address may name only those). Paths are
+    // taken as load_image takes them.
+    std::string check_monitor(std::set<std::string>& known) const;
+    std::string check_firmware(const std::string& name, std::set<std::string>& known) const;
+    // The file can be read as a program; a binary (.bin, .rom) needs an address.
+    std::string check_program(const std::filesystem::path& path, bool has_address) const;
+    // It assembles (or reads) and fits the board at `address` (an expression: its regions are
+    // checked when it loads). The image is kept for load_image; its warnings join warnings().
+    std::string check_image(const std::filesystem::path& path, const std::optional<Value>& address,
+                            std::set<std::string>& known);
+    // A value's problems, each with its column in the line: a number outside lo..hi (`what`
+    // names it), a name that no load before it defines.
+    std::vector<std::pair<int, std::string>> check_value(const Value& v, std::int64_t lo, std::int64_t hi,
+                                                         const char* what, const std::set<std::string>& known) const;
+    std::string check_pin(const std::string& pin) const;  // a word of record signals (docs/signals.md)
+    // A value against the symbols and the machine of now (nullopt: `error` says why).
+    std::optional<std::int64_t> value(const Value& v, std::string& error) const { return resolve(v, error); }
 
     // Every other command of the language, one call each (docs/scripting.md names them by their
     // command): the script's lines are parsed, their values resolved, then these do the work.

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <string>
 
-#include "emu/board/machine.h"
 #include "emu/gui/app.h"
+#include "emu/script/session.h"
 #include "tests/board/led_latch.h"
 
 int main(int argc, char** argv) {
@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     o.debug = true;
-    o.parts = [&](alp85::Machine& m) { m.attach(leds, &leds, 0x00, 0x00); };
+    o.parts = [&](alp85::script::Session& s) { s.attach(leds, &leds, 0x00, 0x00); };
     o.show_part = "leds";
     return alp85::gui::run(o);
 }
