@@ -8,8 +8,8 @@
 #include "asm/asm85.h"
 #include "asm/lexer.h"
 #include "asm/version.h"
-#include "emu/util/atomic_file.h"
-#include "emu/util/output_paths.h"
+#include "asm/files/atomic_file.h"
+#include "asm/files/output_paths.h"
 
 namespace {
 

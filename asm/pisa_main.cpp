@@ -5,8 +5,8 @@
 
 #include "asm/pisa_asm.h"
 #include "asm/version.h"
-#include "emu/util/atomic_file.h"
-#include "emu/util/output_paths.h"
+#include "asm/files/atomic_file.h"
+#include "asm/files/output_paths.h"
 
 int main(int argc, char** argv) {
     using namespace alp85;

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "emu/util/state_io.h"
+#include "peripherals/state_io.h"
 
 namespace alp85::periph {
 

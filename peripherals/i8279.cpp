@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <bit>
 
-#include "emu/util/state_io.h"
+#include "peripherals/state_io.h"
 
 namespace alp85::periph {
 

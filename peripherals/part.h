@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-#include "emu/util/state_io.h"
+#include "peripherals/state_io.h"
 #include "peripherals/description.h"
 
 namespace alp85::periph {
@@ -53,7 +53,7 @@ public:
     // The T-state the part has caught up to (a snapshot requires it to equal the CPU's).
     virtual std::uint64_t now() const = 0;
 
-    // The part's state, listed once (StateWriter / StateReader, emu/util/state_io.h). load_state
+    // The part's state, listed once (StateWriter / StateReader, peripherals/state_io.h). load_state
     // reads the whole record into a scratch state, checks r.expect_end() and the state's
     // invariants, and only then commits: on SnapshotError the part is unchanged.
     virtual void save_state(StateWriter& w) const = 0;

@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-#include "emu/util/state_io.h"
+#include "peripherals/state_io.h"
 
 namespace alp85::periph {
 

@@ -1,6 +1,6 @@
 #include "emu/board/snapshot_file.h"
 
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 #include "emu/util/input_file.h"
 
 #include <zlib.h>

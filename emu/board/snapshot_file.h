@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-#include "emu/util/state_io.h"
+#include "peripherals/state_io.h"
 
 namespace alp85::snapshot {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 #include "emu/cli/commands.h"
 #include "emu/util/input_file.h"
 #include "emu/cpm/cpm.h"

@@ -13,7 +13,7 @@
 #include "emu/util/input_file.h"
 #include "emu/gcode/gcode.h"
 #include "emu/gcode/path_table.h"
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 
 namespace alp85::cli {
 

@@ -18,7 +18,7 @@
 #include "emu/pisa/run.h"
 #include "emu/pisa/run_plot.h"
 #include "emu/plot/plot.h"
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 
 namespace alp85 {
 extern const char pisa_interp_source[];  // firmware/pisa/interp.pasm, embedded at build time

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 #include "emu/util/input_file.h"
 #include "emu/cli/commands.h"
 #include "emu/program/firmware.h"

@@ -10,7 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "emu/util/output_paths.h"
+#include "asm/files/output_paths.h"
 #include "emu/util/stopwatch.h"
 
 #include "peripherals/machine_tool.h"

@@ -1,6 +1,6 @@
 // The CPU's part of a machine snapshot: one field list (fields) for save and load.
 #include "emu/core/i8085.h"
-#include "emu/util/state_io.h"
+#include "peripherals/state_io.h"
 
 namespace alp85 {
 namespace {

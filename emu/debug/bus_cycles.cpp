@@ -6,7 +6,7 @@
 
 #include "asm/isa.h"
 #include "emu/board/board_map.h"
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 
 namespace alp85::debug {
 

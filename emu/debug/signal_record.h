@@ -22,7 +22,7 @@
 
 #include "emu/board/machine.h"
 #include "emu/debug/pin_tap.h"
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 
 namespace alp85::debug {
 

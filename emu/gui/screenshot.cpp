@@ -8,7 +8,7 @@
 #include <SDL_opengl.h>
 #include <cairo.h>
 
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 
 namespace alp85::gui {
 

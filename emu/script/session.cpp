@@ -8,7 +8,7 @@
 
 #include "emu/board/snapshot_file.h"
 #include "emu/plot/plot.h"
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 #include "emu/util/input_file.h"
 #include "emu/debug/trace_csv.h"
 #include "emu/util/text.h"

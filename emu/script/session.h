@@ -26,7 +26,7 @@
 #include "emu/debug/tool_record.h"
 #include "emu/script/command.h"
 #include "emu/script/parser.h"
-#include "emu/util/output_paths.h"
+#include "asm/files/output_paths.h"
 
 namespace alp85::script {
 

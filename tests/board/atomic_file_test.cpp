@@ -1,5 +1,5 @@
 // Output files appear whole or not at all, and devices and links are written through, never
-// replaced (emu/util/atomic_file.h).
+// replaced (asm/files/atomic_file.h).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 
 namespace alp85::test {
 namespace {

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "emu/util/state_io.h"
+#include "peripherals/state_io.h"
 
 namespace {
 

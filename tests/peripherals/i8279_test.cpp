@@ -12,7 +12,7 @@
 #include <array>
 #include <vector>
 
-#include "emu/util/state_io.h"
+#include "peripherals/state_io.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include "peripherals/i8279.h"
 #include "peripherals/keypad.h"
 #include "peripherals/seven_segment.h"
-#include "emu/util/state_io.h"
+#include "peripherals/state_io.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 
 namespace alp85 {
 namespace {

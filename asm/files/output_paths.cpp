@@ -1,4 +1,4 @@
-#include "emu/util/output_paths.h"
+#include "asm/files/output_paths.h"
 
 #include <filesystem>
 #include <system_error>

@@ -1,4 +1,4 @@
-#include "emu/util/atomic_file.h"
+#include "asm/files/atomic_file.h"
 
 #include <atomic>
 #include <memory>
