@@ -6,8 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "emu/core/bus.h"
-#include "emu/core/i8085.h"
+#include "emu/bench/bench_cpu.h"
 #include "emu/board/machine.h"
 
 namespace alp85 {
@@ -21,9 +20,7 @@ public:
     const Machine& board() const { return board_; }
 
 private:
-    std::vector<std::uint8_t> ram_;
-    Bus bus_;
-    I8085 bare_cpu_;
+    BareCore bare_;
     Machine board_;
 };
 

@@ -7,16 +7,22 @@
 
 namespace alp85 {
 
-CpuBench::CpuBench(Variant variant, CpuWorkload workload) : ram_(0x10000, 0), cpu_(bus_, variant) {
-    if (workload == CpuWorkload::Registers)
-        std::copy_n(bench::kCpuBenchProgram, bench::kCpuBenchProgram_size, ram_.begin() + bench::kCpuBenchProgram_origin);
-    else
-        std::copy_n(bench::kCpuMemBenchProgram, bench::kCpuMemBenchProgram_size,
-                    ram_.begin() + bench::kCpuMemBenchProgram_origin);
-    bus_.map_ram(0, 0x10000, ram_.data());
-    cpu_.set_fast_loops(false);  // the interpreter alone: every DL iteration executed
+BareCore::BareCore(Variant variant, std::span<const std::uint8_t> program, std::uint16_t origin)
+    : ram(0x10000, 0), cpu(bus, variant) {
+    std::copy(program.begin(), program.end(), ram.begin() + origin);
+    bus.map_ram(0, 0x10000, ram.data());
+    cpu.set_fast_loops(false);
 }
 
-std::uint64_t CpuBench::run(std::uint64_t tstates) { return cpu_.run(cpu_.tstates() + tstates); }
+namespace {
+BareCore workload_core(Variant variant, CpuWorkload workload) {
+    if (workload == CpuWorkload::Registers)
+        return {variant, std::span(bench::kCpuBenchProgram, bench::kCpuBenchProgram_size), bench::kCpuBenchProgram_origin};
+    return {variant, std::span(bench::kCpuMemBenchProgram, bench::kCpuMemBenchProgram_size),
+            bench::kCpuMemBenchProgram_origin};
+}
+}  // namespace
+
+CpuBench::CpuBench(Variant variant, CpuWorkload workload) : core_(workload_core(variant, workload)) {}
 
 }  // namespace alp85
