@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "emu/script/parser.h"
+#include "tests/scripts/parse_helpers.h"
 #include "emu/script/session.h"
 
 namespace alp85::script {
@@ -42,22 +43,7 @@ TEST(ScriptExpressions, ErrorsPointIntoTheExpression) {
     EXPECT_EQ(errors[0].message, "division by zero");
 }
 
-class ScriptExpressionRun : public ::testing::Test {
-protected:
-    ScriptExpressionRun() : s(SessionOptions{ALP85_BOARD_PROGRAMS, Variant::I8085, {}, nullptr, false}) {}
-    Session::Outcome run(std::string_view line) {
-        std::vector<ParseError> errors;
-        auto c = parse_line(line, "t.alp", ++n, errors);
-        EXPECT_TRUE(errors.empty() && c) << line << (errors.empty() ? "" : ": " + errors[0].message);
-        return c ? s.execute(*c) : Session::Outcome{Session::Status::Failed, "parse"};
-    }
-    void ok(std::string_view line) {
-        const auto o = run(line);
-        EXPECT_EQ(o.status, Session::Status::Ok) << line << "\n" << o.message;
-    }
-    Session s;
-    int n = 0;
-};
+using ScriptExpressionRun = test::SessionLines;
 
 // hello.asm: KEY1 EQU 1000H, KEY2 EQU 1001H, DONE EQU 1002H.
 TEST_F(ScriptExpressionRun, SymbolsArithmeticRegistersAndMemory) {

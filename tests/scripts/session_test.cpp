@@ -3,28 +3,14 @@
 #include <gtest/gtest.h>
 
 #include "emu/script/parser.h"
+#include "tests/scripts/parse_helpers.h"
 #include "emu/script/runner.h"
 #include "emu/script/session.h"
 
 namespace alp85::script {
 namespace {
 
-class SessionTest : public ::testing::Test {
-protected:
-    SessionTest() : s(SessionOptions{ALP85_BOARD_PROGRAMS, Variant::I8085, {}, nullptr, false}) {}
-    Session::Outcome run(std::string_view line) {
-        std::vector<ParseError> errors;
-        auto c = parse_line(line, "t.alp", ++n, errors);
-        EXPECT_TRUE(errors.empty() && c) << line;
-        return c ? s.execute(*c) : Session::Outcome{Session::Status::Failed, "parse"};
-    }
-    void ok(std::string_view line) {
-        const auto o = run(line);
-        EXPECT_EQ(o.status, Session::Status::Ok) << line << "\n" << o.message;
-    }
-    Session s;
-    int n = 0;
-};
+using SessionTest = test::SessionLines;
 
 TEST_F(SessionTest, PressAdvancesTimeByHoldAndGap) {
     ok("load hello.asm");
