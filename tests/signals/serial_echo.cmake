@@ -8,6 +8,7 @@
 if(NOT SIGROK)
   message(FATAL_ERROR "sigrok-cli is missing: scripts/setup.sh --tests installs it")
 endif()
+include(${CMAKE_CURRENT_LIST_DIR}/sigrok.cmake)
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 file(WRITE ${OUT}/input.txt "${TEXT}")
@@ -31,16 +32,8 @@ endif()
 # sigrok-cli: the VCD's SOD channel through its UART decoder at the same rate and frame. The file's
 # unit is 1 ns; downsample=1000 reads it on a 1 us grid (a 9600-baud bit is 104 us), so that 110
 # baud's second of recording is a million samples, not a thousand million.
-execute_process(COMMAND ${SIGROK} -l 5 -I vcd:downsample=1000 -i ${OUT}/sod.vcd
-                        -P uart:rx=SOD:baudrate=${BAUD}:data_bits=8:parity=none:stop_bits=1.0 -A uart=rx-data
-                RESULT_VARIABLE rc OUTPUT_VARIABLE decoded ERROR_VARIABLE log)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "sigrok-cli could not decode sod.vcd: exit ${rc}\n${log}")
-endif()
-string(REGEX MATCHALL "[^\n]*(Unexpected|[Ee]rror|[Ff]ailed|[Ii]nvalid)[^\n]*" bad "${log}")
-if(bad)
-  message(FATAL_ERROR "sigrok-cli reading sod.vcd:\n${bad}")
-endif()
+sigrok_read(sod.vcd decoded -I vcd:downsample=1000 -i ${OUT}/sod.vcd
+            -P uart:rx=SOD:baudrate=${BAUD}:data_bits=8:parity=none:stop_bits=1.0 -A uart=rx-data)
 # One line per character, "uart-1: 48" (hex; at log level 5 with the samples and the annotation's
 # name: "933639-934473 uart-1: rx-data: "48""); the text sent, as hex, for comparison.
 string(REGEX MATCHALL "uart-1: (rx-data: \")?[0-9A-Fa-f][0-9A-Fa-f]" lines "${decoded}")

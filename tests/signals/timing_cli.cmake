@@ -56,12 +56,9 @@ file(READ ${DIR}/sta.svg svg)
 if(NOT svg MATCHES "<title>STA 2050H at 0800H</title>")
   message(FATAL_ERROR "sta.svg has no title")
 endif()
+include(${SRC}/sigrok.cmake)
 foreach(vcd sta.vcd ack.vcd)
-  execute_process(COMMAND ${SIGROK} -l 5 -I vcd -i ${DIR}/${vcd} -O vcd RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  string(REGEX MATCHALL "[^\n]*(Unexpected|[Ee]rror|[Ff]ailed|[Ii]nvalid)[^\n]*" bad "${out}${err}")
-  if(NOT rc EQUAL 0 OR bad)
-    message(FATAL_ERROR "sigrok-cli reading ${vcd}: ${rc}\n${bad}")
-  endif()
+  sigrok_read(${vcd} "" -I vcd -i ${DIR}/${vcd} -O vcd)  # the rewrite on standard output, searched too
 endforeach()
 
 # The diagrams of docs/signals.md, written by the command once its output was checked above
