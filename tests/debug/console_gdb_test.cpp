@@ -117,6 +117,21 @@ TEST_F(Gdb, TbreakSaysWhereAndItsHitIsTemporary) {
     EXPECT_EQ(run("info breakpoints"), "No breakpoints or watchpoints.\n");
 }
 
+// gdb's note for a line without code, for tbreak as for break: the point goes to the next line that has.
+TEST_F(Gdb, TbreakOnALineWithoutCodeSaysWhereItBinds) {
+    const auto& program = shell.debugger().program();
+    int blank = 0;  // the first line of thesis.asm without code followed by one with code
+    for (int line = 1; line < 2000 && !blank; ++line)
+        if (program.addresses_of("thesis.asm", line).empty() && !program.addresses_of("thesis.asm", line + 1).empty())
+            blank = line;
+    ASSERT_NE(blank, 0);
+    const std::uint16_t at = program.addresses_of("thesis.asm", blank + 1).front();
+    EXPECT_EQ(run(fmt::format("tbreak thesis.asm:{}", blank)),
+              fmt::format("thesis.asm:{} has no code: the breakpoint binds to line {}\n"
+                          "Temporary breakpoint 1 at {:04X}H: file thesis.asm, line {}.\n",
+                          blank, blank + 1, at, blank + 1));
+}
+
 TEST_F(Gdb, HelpShowsEveryCommandsWholeText) {
     const std::string h = run("help");
     // Unwrapped, the text holds each command's full help (the break line's description too).
