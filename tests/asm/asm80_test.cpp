@@ -169,6 +169,10 @@ TEST(Asm80, MisusesNameTheirPlace) {
         // An ENDIF in a body can't close an IF outside it.
         {"SHUT\tMACRO\n  ENDIF\n\tENDM\n\tIF\t1\n\tSHUT\n\tENDIF\n", 2, 3,
          "ENDIF without IF in the expansion of SHUT (an IF opened outside a macro or repeat block must end outside it)"},
+        {"ALT\tMACRO\n  ELSE\n\tENDM\n\tIF\t1\n\tALT\n\tENDIF\n", 2, 3,
+         "ELSE without IF in the expansion of ALT (an IF opened outside a macro or repeat block must end outside it)"},
+        {"\tIF\t1\n\tREPT\t1\n  ENDIF\n\tENDM\n\tENDIF\n", 3, 3,
+         "ENDIF without IF in the expansion of REPT (an IF opened outside a macro or repeat block must end outside it)"},
         {"$INCLUDE\n", 1, 2, "$INCLUDE needs (filename)"},
     };
     for (const auto& c : cases) {
