@@ -205,6 +205,13 @@ void Assembler::process_statement(const std::vector<Token>& toks, const Line& li
     const std::size_t args = p + 1;
     op_col_ = toks[p].col;
     if (is_conditional_word(op)) {
+        // A label names the line's address where the line itself is assembled: an IF outside a
+        // false branch, an ELSE or ENDIF where its IF is (it was dropped without a word before).
+        const bool closing = op == "ELSE" || op == "ENDIF" || op == "ENDC";
+        if (!label.empty() && (closing ? cond_.empty() || cond_.back().parent_active : !skipping())) {
+            define(label, label_col, loc(), SymbolKind::Label);
+            listing_.back().address = loc();
+        }
         conditional(op, toks, args, line);
         return;
     }

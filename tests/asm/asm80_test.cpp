@@ -149,6 +149,16 @@ TEST(Asm80, LocationCounterOperatorsDsAndEndStart) {
     EXPECT_EQ(*r.image.start_address, 0x800);
 }
 
+// A label on IF, ELSE or ENDIF is the address of its line, where the line is assembled.
+TEST(Asm80, ALabelOnAConditionalLineIsDefined) {
+    // HERE = 0, THERE = 1 (after the NOP); JMP = 0C3H.
+    EXPECT_EQ(ok_bytes("HERE:\tIF\t1\n\tNOP\nTHERE:\tENDIF\n\tJMP\tHERE\n\tDB\tTHERE\n"), (V{0x00, 0xC3, 0x00, 0x00, 0x01}));
+    // Inside a false branch the line is skipped, its label too.
+    auto r = assemble("\tIF\t0\nSKIP:\tIF\t1\n\tENDIF\n\tENDIF\n\tDW\tSKIP\n");
+    EXPECT_EQ(first_error(r).message, "undefined symbol 'SKIP'");
+    EXPECT_EQ(first_error(r).line, 5);
+}
+
 struct Misuse {
     const char* src;
     int line, col;
