@@ -55,7 +55,7 @@ int hex_record_line(const std::string& text, std::uint16_t address) {
     return 0;
 }
 
-std::string range(const RomSpec& rom) {
+std::string rom_range(const RomSpec& rom) {
     return fmt::format("{:04X}H-{:04X}H", rom.base, rom.base + rom.size - 1);
 }
 
@@ -79,10 +79,10 @@ RomImage read_rom_image(const std::filesystem::path& path, const RomSpec& rom, c
         if (data.size() < rom.size)
             throw LoadError(fmt::format("{}: short: {} bytes, but a ROM image is a dump of the whole {}-byte ROM ({}); "
                                         "a smaller program goes in a .hex or .asm file, whose addresses place it",
-                                        name, data.size(), rom.size, range(rom)));
+                                        name, data.size(), rom.size, rom_range(rom)));
         if (data.size() > rom.size)
             throw LoadError(fmt::format("{}: {} bytes, larger than the {}-byte ROM ({})", name, data.size(), rom.size,
-                                        range(rom)));
+                                        rom_range(rom)));
         std::copy(data.begin(), data.end(), img.bytes.begin());
         img.programmed = data.size();
         return img;
@@ -97,7 +97,7 @@ RomImage read_rom_image(const std::filesystem::path& path, const RomSpec& rom, c
             if (inside(a)) continue;
             // The record's address field (columns 4-7 of ":LLAAAATT").
             throw LoadError(fmt::format("{}:{}:4: error: data at {:04X}H is outside the ROM ({})", name,
-                                        hex_record_line(text, a), a, range(rom)));
+                                        hex_record_line(text, a), a, rom_range(rom)));
         }
     } else if (ext == ".asm" || ext == ".a85" || ext == ".s" || ext == ".mac") {
         asm85::Result r = asm85::assemble_file(path, assembler);
@@ -116,7 +116,7 @@ RomImage read_rom_image(const std::filesystem::path& path, const RomSpec& rom, c
                     const asm85::LineSpan* at = r.origin(static_cast<std::uint16_t>(a));
                     const std::string where =
                         at ? fmt::format("{}:{}:1", r.files[static_cast<std::size_t>(at->file)], at->line) : name;
-                    throw LoadError(fmt::format("{}: error: code at {:04X}H is outside the ROM ({})", where, a, range(rom)));
+                    throw LoadError(fmt::format("{}: error: code at {:04X}H is outside the ROM ({})", where, a, rom_range(rom)));
                 }
                 bytes[static_cast<std::uint16_t>(a)] = s.bytes[i];
             }
@@ -128,7 +128,7 @@ RomImage read_rom_image(const std::filesystem::path& path, const RomSpec& rom, c
                                     ".hex; or .asm source)",
                                     name, ext, rom.size));
     }
-    if (bytes.empty()) throw LoadError(fmt::format("{}: no data: the file puts no byte into the ROM ({})", name, range(rom)));
+    if (bytes.empty()) throw LoadError(fmt::format("{}: no data: the file puts no byte into the ROM ({})", name, rom_range(rom)));
     for (const auto& [a, v] : bytes) img.bytes[a - rom.base] = v;
     img.programmed = bytes.size();
     return img;
