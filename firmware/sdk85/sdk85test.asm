@@ -3,9 +3,9 @@
 ; Intel's monitor leans on: the memory-mapped 8279 (keys in, digits out), the single step
 ; (the 8155's timer pulse on TRAP after exactly one user instruction) and a serial line
 ; bit-banged on SID and SOD. docs/sdk85.md runs it:
-;       alp85 run --board sdk85 --rom build/firmware/sdk85/sdk85test.hex
+;       alp85 run --board sdk85 --rom build/firmware/sdk85/sdk85test.hex   (with --board, issue 38)
 ;
-; ---- the board (SDK-85 user's manual memory and I/O map) -------------------------------------
+; ---- the board (the SDK-85's memory and I/O map, docs/sdk85.md) -------------------------------
 ;   0000H-07FFH ROM (the 8355): this program, ORG 0000H
 ;   1800H       8279 data (memory-mapped: A8 low)    1900H  8279 command / status (A8 high)
 ;   2000H-20FFH 8155 RAM (IO/M low)
