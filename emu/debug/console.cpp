@@ -97,7 +97,7 @@ std::vector<Console::CommandDef> Console::own_commands() {
         {"reverse-finish", "rfin", &Console::cmd_rfin, "reverse-finish: back to the CALL that entered this routine"},
         {"reverse-continue", "rc", &Console::cmd_rc, "reverse-continue: back to the previous breakpoint or watchpoint hit"},
         {"print", "p inspect", &Console::cmd_print, "print[/x|d|t|c] EXPR: registers, flags, [HL], word[1B30H], symbols, arithmetic, comparison"},
-        {"set", "", &Console::cmd_set, "set [var] LVALUE = EXPR: a register, flag or memory; set history on|off"},
+        {"set", "", &Console::cmd_set, "set [var] LVALUE = EXPR: a register, flag or memory; set history on|off; set limit TIME: how long continue, finish, until and advance run before they give up (10 min of machine time)"},
         {"display", "disp", &Console::cmd_display, "display[/FMT] EXPR: print EXPR after every stop (no EXPR: now); /i and /s show memory at EXPR as x does (display/i $pc)"},
         {"undisplay", "undisp", &Console::cmd_undisplay, "undisplay [N...]: stop displaying"},
         {"x", "", &Console::cmd_x, "x/NFU ADDRESS: memory; F x d u o t c a s i, U b (byte) or w (16-bit word)"},
@@ -371,7 +371,7 @@ std::string Console::run_commands(Stop s) {
     for (int stops = 0;; ++stops) {
         const std::vector<std::string> list = d_.commands_for(s);
         if (list.empty() || quit_) return out;
-        if (stops == kMaxStops || ran >= Debugger::kContinueLimit) {
+        if (stops == kMaxStops || ran >= d_.continue_limit()) {
             out += fmt::format("Stopped: the commands of {} {} resumed the run {} times ({:.1f} s of simulated time); "
                                "the session goes on here, continue goes on\n",
                                s.reason == StopReason::Watchpoint ? "watchpoint" : "breakpoint", s.number, stops,
@@ -719,21 +719,27 @@ std::string Console::cmd_advance(std::string_view a, int col) {
     return report(d_.advance(loc.addresses.front()));
 }
 
-std::string Console::cmd_run(std::string_view a, int col) {
-    if (to_upper(first_word(a)) == "FOR") {
-        col += 3;
-        a = trim_blanks(a.substr(3), &col);
-    }
-    if (a.empty()) return error(col, "expected a time: run [for] TIME (10ms, 2s, 3070t)");
-    // TIME: a number and a unit (t, us, ms, s).
+// TIME: a number and a unit (t, us, ms, s), in T-states.
+std::optional<std::uint64_t> Console::tstates_of(std::string_view a) {
     std::size_t i = 0;
     while (i < a.size() && (std::isdigit(static_cast<unsigned char>(a[i])) || a[i] == '.')) ++i;
     const std::string unit = to_upper(a.substr(i));
     const double v = i ? std::strtod(std::string(a.substr(0, i)).c_str(), nullptr) : -1;
     constexpr double hz = board::kCpuHz;
     const double scale = unit == "T" ? 1 : unit == "US" ? hz / 1e6 : unit == "MS" ? hz / 1e3 : unit == "S" ? hz : -1;
-    if (v < 0 || scale < 0) return error(col, fmt::format("bad time '{}' (a number with a unit: t, us, ms or s)", a));
-    const Stop s = d_.run_for(static_cast<std::uint64_t>(v * scale + 0.5));
+    if (v < 0 || scale < 0 || v * scale > 1e18) return std::nullopt;
+    return static_cast<std::uint64_t>(v * scale + 0.5);
+}
+
+std::string Console::cmd_run(std::string_view a, int col) {
+    if (to_upper(first_word(a)) == "FOR") {
+        col += 3;
+        a = trim_blanks(a.substr(3), &col);
+    }
+    if (a.empty()) return error(col, "expected a time: run [for] TIME (10ms, 2s, 3070t)");
+    const auto t = tstates_of(a);
+    if (!t) return error(col, fmt::format("bad time '{}' (a number with a unit: t, us, ms or s)", a));
+    const Stop s = d_.run_for(*t);
     if (s.reason == StopReason::Deadline) return {};
     return report(s);
 }
