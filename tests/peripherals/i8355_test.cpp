@@ -14,17 +14,17 @@
 namespace {
 
 using alp85::periph::I8355;
-using Port = I8355::Port;
+using RomPort = I8355::Port;
 
 TEST(I8355Test, ResetLeavesEveryLineAnInputReadingThePins) {
     I8355 chip;
     chip.reset(0);
-    chip.set_port_input(Port::A, 0x5A);
-    chip.set_port_input(Port::B, 0xC3);
+    chip.set_port_input(RomPort::A, 0x5A);
+    chip.set_port_input(RomPort::B, 0xC3);
     EXPECT_EQ(chip.read(I8355::kPortA, 1), 0x5A);
     EXPECT_EQ(chip.read(I8355::kPortB, 1), 0xC3);
-    EXPECT_EQ(chip.port_output_mask(Port::A), 0x00);
-    EXPECT_EQ(chip.port_output_mask(Port::B), 0x00);
+    EXPECT_EQ(chip.port_output_mask(RomPort::A), 0x00);
+    EXPECT_EQ(chip.port_output_mask(RomPort::B), 0x00);
     EXPECT_EQ(chip.next_event(), I8355::kNever);  // no timer, nothing happens by itself
 }
 
@@ -35,26 +35,26 @@ TEST(I8355Test, AddressBitsSelectPortsAndDirectionRegisters) {
     chip.write(I8355::kPortA, 0x81, 2);  // 00: port A latch
     chip.write(I8355::kDdrB, 0x0F, 3);  // 11: DDR B, low nibble output
     chip.write(I8355::kPortB, 0x3C, 4);  // 01: port B latch
-    EXPECT_EQ(chip.port_output_mask(Port::A), 0xFF);
-    EXPECT_EQ(chip.port_output(Port::A), 0x81);
-    EXPECT_EQ(chip.port_output_mask(Port::B), 0x0F);
-    EXPECT_EQ(chip.port_output(Port::B), 0x0C);  // 3CH on the output lines 0-3 only
+    EXPECT_EQ(chip.port_output_mask(RomPort::A), 0xFF);
+    EXPECT_EQ(chip.port_output(RomPort::A), 0x81);
+    EXPECT_EQ(chip.port_output_mask(RomPort::B), 0x0F);
+    EXPECT_EQ(chip.port_output(RomPort::B), 0x0C);  // 3CH on the output lines 0-3 only
     // Only AD1-AD0 reach the selection: offset 4 is port A again, 7 is DDR B.
     chip.write(4, 0x7E, 5);
-    EXPECT_EQ(chip.port_output(Port::A), 0x7E);
+    EXPECT_EQ(chip.port_output(RomPort::A), 0x7E);
     chip.write(7, 0x00, 6);
-    EXPECT_EQ(chip.port_output_mask(Port::B), 0x00);
+    EXPECT_EQ(chip.port_output_mask(RomPort::B), 0x00);
 }
 
 TEST(I8355Test, ReadGivesLatchOnOutputLinesAndPinsOnInputLines) {
     I8355 chip;
     chip.reset(0);
-    chip.set_port_input(Port::A, 0x00);  // every pin pulled low from outside
+    chip.set_port_input(RomPort::A, 0x00);  // every pin pulled low from outside
     chip.write(I8355::kPortA, 0xFF, 1);
     chip.write(I8355::kDdrA, 0xF0, 2);  // PA7-4 out, PA3-0 in
     // PA7-4 from the latch (1111), PA3-0 from the pins (0000).
     EXPECT_EQ(chip.read(I8355::kPortA, 3), 0xF0);
-    chip.set_port_input(Port::A, 0x05);
+    chip.set_port_input(RomPort::A, 0x05);
     EXPECT_EQ(chip.read(I8355::kPortA, 4), 0xF5);
     // All outputs: the pins no longer matter, the latch is read back.
     chip.write(I8355::kDdrA, 0xFF, 5);
@@ -66,7 +66,7 @@ TEST(I8355Test, InputCallbackSuppliesThePinsAtTheTimeOfTheRead) {
     I8355 chip;
     chip.reset(0);
     chip.set_input_callback([](Port p, std::uint64_t now) {
-        return static_cast<std::uint8_t>(p == Port::B ? now & 0xFF : 0x11);
+        return static_cast<std::uint8_t>(p == RomPort::B ? now & 0xFF : 0x11);
     });
     chip.write(I8355::kDdrB, 0x80, 1);  // PB7 out (latch 0), PB6-0 in
     EXPECT_EQ(chip.read(I8355::kPortB, 0x37), 0x37);
@@ -82,8 +82,8 @@ TEST(I8355Test, WritesAreReportedWithTheLatchAndTime) {
     chip.write(I8355::kPortB, 0x42, 10);
     chip.write(I8355::kDdrB, 0xFF, 20);  // the lines start driving the latch: reported too
     ASSERT_EQ(writes.size(), 2u);
-    EXPECT_EQ(writes[0], std::make_tuple(Port::B, std::uint8_t{0x42}, std::uint64_t{10}));
-    EXPECT_EQ(writes[1], std::make_tuple(Port::B, std::uint8_t{0x42}, std::uint64_t{20}));
+    EXPECT_EQ(writes[0], std::make_tuple(RomPort::B, std::uint8_t{0x42}, std::uint64_t{10}));
+    EXPECT_EQ(writes[1], std::make_tuple(RomPort::B, std::uint8_t{0x42}, std::uint64_t{20}));
 }
 
 TEST(I8355Test, ResetClearsTheDirectionRegistersAndTellsTheBoard) {
@@ -93,13 +93,13 @@ TEST(I8355Test, ResetClearsTheDirectionRegistersAndTellsTheBoard) {
     chip.write(I8355::kPortA, 0x99, 2);
     std::vector<Port> told;
     chip.on_port_write([&](Port p, std::uint8_t, std::uint64_t) { told.push_back(p); });
-    chip.set_port_input(Port::A, 0x12);
+    chip.set_port_input(RomPort::A, 0x12);
     chip.reset(3);
-    EXPECT_EQ(chip.port_output_mask(Port::A), 0x00);
-    EXPECT_EQ(chip.port_output(Port::A), 0x00);
+    EXPECT_EQ(chip.port_output_mask(RomPort::A), 0x00);
+    EXPECT_EQ(chip.port_output(RomPort::A), 0x00);
     EXPECT_EQ(chip.read(I8355::kPortA, 4), 0x12);  // an input again: the pins
     ASSERT_EQ(told.size(), 1u);                     // port A stopped driving; B never did
-    EXPECT_EQ(told[0], Port::A);
+    EXPECT_EQ(told[0], RomPort::A);
 }
 
 TEST(I8355Test, RomIsTwoKilobytesAddressedByA10ToA0) {
@@ -138,7 +138,7 @@ TEST(I8355Test, SnapshotRoundTripAndRefusals) {
     chip.reset(0);
     chip.write(I8355::kDdrB, 0xF0, 5);
     chip.write(I8355::kPortB, 0xAB, 6);
-    chip.set_port_input(Port::A, 0x3C);
+    chip.set_port_input(RomPort::A, 0x3C);
     std::vector<std::uint8_t> blob;
     chip.save(blob);
 
