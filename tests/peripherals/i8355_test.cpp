@@ -65,7 +65,7 @@ TEST(I8355Test, ReadGivesLatchOnOutputLinesAndPinsOnInputLines) {
 TEST(I8355Test, InputCallbackSuppliesThePinsAtTheTimeOfTheRead) {
     I8355 chip;
     chip.reset(0);
-    chip.set_input_callback([](Port p, std::uint64_t now) {
+    chip.set_input_callback([](RomPort p, std::uint64_t now) {
         return static_cast<std::uint8_t>(p == RomPort::B ? now & 0xFF : 0x11);
     });
     chip.write(I8355::kDdrB, 0x80, 1);  // PB7 out (latch 0), PB6-0 in
@@ -76,8 +76,8 @@ TEST(I8355Test, InputCallbackSuppliesThePinsAtTheTimeOfTheRead) {
 
 TEST(I8355Test, WritesAreReportedWithTheLatchAndTime) {
     I8355 chip;
-    std::vector<std::tuple<Port, std::uint8_t, std::uint64_t>> writes;
-    chip.on_port_write([&](Port p, std::uint8_t latch, std::uint64_t at) { writes.emplace_back(p, latch, at); });
+    std::vector<std::tuple<RomPort, std::uint8_t, std::uint64_t>> writes;
+    chip.on_port_write([&](RomPort p, std::uint8_t latch, std::uint64_t at) { writes.emplace_back(p, latch, at); });
     chip.reset(0);
     chip.write(I8355::kPortB, 0x42, 10);
     chip.write(I8355::kDdrB, 0xFF, 20);  // the lines start driving the latch: reported too
@@ -91,8 +91,8 @@ TEST(I8355Test, ResetClearsTheDirectionRegistersAndTellsTheBoard) {
     chip.reset(0);
     chip.write(I8355::kDdrA, 0xFF, 1);
     chip.write(I8355::kPortA, 0x99, 2);
-    std::vector<Port> told;
-    chip.on_port_write([&](Port p, std::uint8_t, std::uint64_t) { told.push_back(p); });
+    std::vector<RomPort> told;
+    chip.on_port_write([&](RomPort p, std::uint8_t, std::uint64_t) { told.push_back(p); });
     chip.set_port_input(RomPort::A, 0x12);
     chip.reset(3);
     EXPECT_EQ(chip.port_output_mask(RomPort::A), 0x00);
