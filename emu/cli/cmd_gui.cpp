@@ -42,6 +42,7 @@ void add_gui_command(CLI::App& app, int& status) {
         gui::TestHookOptions hooks;
         std::vector<std::string> firmware;  // --firmware, added to the positional ones
         std::string motor = "physical";
+        std::string board = "alp85";
         std::string speed = "1";
         std::string serial;
         long frames = 0;
@@ -94,6 +95,7 @@ void add_gui_command(CLI::App& app, int& status) {
         ->check(CLI::IsMember({"0.1", "1", "10", "100", "max"}))
         ->capture_default_str();
     add_motor_option(cmd, args->motor);
+    add_board_option(cmd, args->board);
     cmd->add_option("--serial", args->serial,
                     "A serial terminal on SID/SOD at BAUD[,FRAME] (as alp85 run --serial: 9600, 1200,7E1) and its Terminal "
                     "pane: what SOD sends is shown, what is typed there goes to SID");
@@ -153,6 +155,7 @@ void add_gui_command(CLI::App& app, int& status) {
             }
         }
         args->o.motor = motor_model_of(args->motor);
+        args->o.board = args->board;
         if (!args->o.out_dir.empty()) {
             std::error_code ec;
             std::filesystem::create_directories(args->o.out_dir, ec);

@@ -79,6 +79,7 @@ script::SessionOptions session_options(const GuiOptions& o) {
     }
     if (firmware::have_monitor()) s.monitor_rom = firmware::monitor;
     s.out = &std::cout;
+    if (const board::Board* b = script::Session::find_board(o.board)) s.board = b;
     return s;
 }
 
@@ -248,6 +249,7 @@ int App::start() {
         std::vector<script::ParseError> errors;
         script::RunnerOptions ro;
         ro.monitor_rom = session_options(o_).monitor_rom;
+        ro.board = session_options(o_).board;
         ro.out_dir = o_.out_dir;
         ro.err = &std::cerr;
         ro.outputs = {{o_.screenshot, "--screenshot"}};  // no save, record or plot of the script may write it
@@ -276,7 +278,10 @@ int App::start() {
         return 0;
     }
     script::Session::Boot boot;
-    for (const auto& f : o_.firmware.empty() ? std::vector<std::string>{"thesis-fixed"} : o_.firmware) {
+    // The built-in monitor and the thesis firmware are the ALP 85's; another board boots what it is given.
+    const bool alp85 = o_.board == script::Session::default_board().name;
+    boot.monitor = alp85;
+    for (const auto& f : o_.firmware.empty() && alp85 ? std::vector<std::string>{"thesis-fixed"} : o_.firmware) {
         if (firmware::find(f)) boot.firmware.push_back(f);
         else boot.images.push_back({absolute(f), std::nullopt});
     }
