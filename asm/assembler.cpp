@@ -191,9 +191,21 @@ bool Assembler::fetch(Line& out) {
 
 void Assembler::end_frame() {
     Frame& f = frames_.back();
-    if (f.kind != FrameKind::File && cond_.size() > f.cond_depth) {
-        diags_.push_back({Severity::Error, files_[static_cast<std::size_t>(f.site_file)].name, f.site_line, 0,
-                          "IF without ENDIF in the expansion of " + f.name, ""});
+    if (f.kind != FrameKind::File && f.cond_scope && cond_.size() > f.cond_depth) {
+        // At the IF in the body that is still open, with the invocation as a note.
+        const Cond& c = cond_[f.cond_depth];
+        Line at;
+        at.file = c.file;
+        at.line = c.line;
+        at.depth = 1;
+        at.site_file = f.site_file;
+        at.site_line = f.site_line;
+        const SourceFile& src = files_[static_cast<std::size_t>(c.file)];
+        if (c.line >= 1 && static_cast<std::size_t>(c.line) <= src.lines.size()) at.text = src.lines[static_cast<std::size_t>(c.line - 1)];
+        const Line* saved = cur_line_;
+        cur_line_ = &at;
+        error(c.col - 1, "IF without ENDIF in the expansion of " + f.name);
+        cur_line_ = saved;
         cond_.resize(f.cond_depth);
     }
     frames_.pop_back();

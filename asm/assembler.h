@@ -50,7 +50,10 @@ struct Frame {
     std::size_t iteration = 0;
     std::size_t count = 0;  // iterations
     std::vector<std::pair<std::string, std::string>> locals;
-    std::size_t cond_depth = 0;
+    std::size_t cond_depth = 0;  // IFs open when the expansion began
+    // An IF opened in the expansion must end in it, and ELSE/ENDIF can't reach an IF opened outside
+    // (ASM80's rule); not for the rest of a '!' line run after a macro, which is the line's own.
+    bool cond_scope = true;
     int site_file = 0;  // outermost invocation in a real file
     int site_line = 0;
     std::string name;
@@ -118,6 +121,7 @@ private:
     // --- statements (statement.cpp)
     void process_line(const Line& line);
     void process_statement(const std::vector<Token>& toks, const Line& line);
+    void control_line(const std::string& text);  // '$' in column 1 (ASM80 controls)
     bool is_op_word(const std::string& w) const;
     void collect_line(const Line& line);
 

@@ -1,6 +1,9 @@
 // Conditional assembly: IF and its M80 relatives, ELSE, ENDIF/ENDC, nested to 1000 levels.
 // An expression is true when non-zero (CP/M ASM manual 3.4); IF1 is true only in the first pass.
+// Inside a macro or repeat expansion, ELSE and ENDIF reach only the IFs opened in it (ASM80).
 #include <unordered_set>
+
+#include <fmt/format.h>
 
 #include "asm/assembler.h"
 
@@ -14,6 +17,20 @@ bool is_conditional_word(const std::string& w) {
 
 void Assembler::conditional(const std::string& op, const std::vector<Token>& toks, std::size_t p, const Line& line) {
     const int opcol = toks[p - 1].col;
+    // The IFs below this level were opened outside the innermost macro or repeat expansion.
+    std::size_t floor = 0;
+    const Frame* expansion = nullptr;
+    for (auto it = frames_.rbegin(); it != frames_.rend(); ++it)
+        if (it->kind != FrameKind::File && it->cond_scope) {
+            floor = it->cond_depth;
+            expansion = &*it;
+            break;
+        }
+    if ((op == "ELSE" || op == "ENDIF" || op == "ENDC") && !cond_.empty() && cond_.size() <= floor) {
+        error(opcol, op + " without IF in the expansion of " + expansion->name +
+                         " (an IF opened outside a macro or repeat block must end outside it)");
+        return;
+    }
     if (op == "ELSE") {
         if (cond_.empty()) {
             error(opcol, "ELSE without IF");
@@ -55,6 +72,12 @@ void Assembler::conditional(const std::string& op, const std::vector<Token>& tok
         if (op == "IF" || op == "IFT" || op == "IFE" || op == "IFF" || op == "COND") {
             Value v;
             if (expr_all(toks, p, v)) truth = v.v != 0;
+            // Intel's ASM80 tests bit 0 of an IF's value, M80 and DR ASM any bit: the two agree on
+            // 0, relations (0FFFFH) and odd values, and part only on an even non-zero value.
+            if (op == "IF" && truth && v.known && (v.v & 1) == 0)
+                warning(toks[p].col, fmt::format("IF value {:04X}H is even: true here (non-zero), but false to Intel's "
+                                                 "ASM80, which tests only bit 0",
+                                                 v.v));
             if (op == "IFE" || op == "IFF") truth = !truth;
         } else if (op == "IFDEF" || op == "IFNDEF") {
             if (toks[p].kind != Tok::Ident) {

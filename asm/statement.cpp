@@ -1,4 +1,7 @@
 // One source line: comment and control lines, the label field, then dispatch of the operation.
+#include <cctype>
+#include <optional>
+
 #include "asm/assembler.h"
 #include "asm/instructions.h"
 
@@ -60,21 +63,7 @@ void Assembler::process_line(const Line& line) {
     auto first = text.find_first_not_of(" \t\f\r");
     if (first == std::string::npos || text[0] == '*' || text[first] == ';') return;
     if (text[0] == '$') {  // Intel control line: $INCLUDE(file) matters, the rest is listing control
-        if (skipping()) return;
-        std::string up = to_upper(text);
-        auto pos = up.find("INCLUDE");
-        if (pos != std::string::npos) {
-            auto open = text.find('(', pos);
-            auto close = text.find(')', pos);
-            if (open == std::string::npos || close == std::string::npos || close < open) {
-                error(static_cast<int>(pos), "$INCLUDE needs (filename)");
-                return;
-            }
-            std::string name = text.substr(open + 1, close - open - 1);
-            // ISIS drive prefixes (:F1:) mean nothing here.
-            if (name.size() > 4 && name[0] == ':' && name[3] == ':') name = name.substr(4);
-            do_include(name, static_cast<int>(open + 1));
-        }
+        if (!skipping()) control_line(text);
         return;
     }
     LexError le;
@@ -98,6 +87,7 @@ void Assembler::process_line(const Line& line) {
             rest.body->push_back({text.substr(static_cast<std::size_t>(from)), line.file, line.line});
             rest.count = 1;
             rest.cond_depth = cond_.size();
+            rest.cond_scope = false;
             rest.site_file = line.site_file;
             rest.site_line = line.site_line;
             rest.name = "the rest of the line";
@@ -105,6 +95,76 @@ void Assembler::process_line(const Line& line) {
             break;
         }
     }
+}
+
+// An ASM80 control line: '$' in column 1, then controls separated by blanks, each a word with an
+// optional (argument); quotes in an argument may hold parentheses. INCLUDE(file) includes the
+// file after this line (several are read in their order); the other controls ($MOD85, $NOLIST,
+// $TITLE('...'), $EJECT, ...) steer ISIS listings and object files and change no byte here.
+void Assembler::control_line(const std::string& text) {
+    struct Included {
+        std::string name;
+        int col = 0;
+    };
+    std::vector<Included> includes;
+    std::size_t i = 1;
+    const std::size_t n = text.size();
+    while (i < n) {
+        const char c = text[i];
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\f') {
+            ++i;
+            continue;
+        }
+        if (c == ';') break;
+        const std::size_t word_at = i;
+        while (i < n && std::isalnum(static_cast<unsigned char>(text[i]))) ++i;
+        const std::string word = to_upper(text.substr(word_at, i - word_at));
+        if (word.empty()) {
+            ++i;  // not a control word: listing text such as a stray character, ignored as before
+            continue;
+        }
+        std::size_t j = i;
+        while (j < n && (text[j] == ' ' || text[j] == '\t')) ++j;
+        std::optional<std::string> arg;
+        std::size_t arg_at = j + 1;
+        if (j < n && text[j] == '(') {
+            int depth = 0;
+            char quote = 0;
+            std::size_t k = j;
+            for (; k < n; ++k) {
+                const char d = text[k];
+                if (quote) {
+                    if (d == quote) quote = 0;
+                } else if (d == '\'' || d == '"') {
+                    quote = d;
+                } else if (d == '(') {
+                    ++depth;
+                } else if (d == ')' && --depth == 0) {
+                    break;
+                }
+            }
+            if (k < n) {
+                arg = text.substr(j + 1, k - j - 1);
+                i = k + 1;
+            } else {
+                i = n;  // unclosed: only INCLUDE needs its argument
+            }
+        }
+        if (word != "INCLUDE") continue;
+        if (!arg) {
+            error(static_cast<int>(word_at), "$INCLUDE needs (filename)");
+            continue;
+        }
+        std::string name = *arg;
+        // ISIS drive prefixes (:F1:) mean nothing here.
+        if (name.size() > 4 && name[0] == ':' && name[3] == ':') {
+            name = name.substr(4);
+            arg_at += 4;
+        }
+        includes.push_back({name, static_cast<int>(arg_at)});
+    }
+    // Frames are read last-in first: push the last file first so that the files follow the line's order.
+    for (auto it = includes.rbegin(); it != includes.rend(); ++it) do_include(it->name, it->col);
 }
 
 void Assembler::process_statement(const std::vector<Token>& toks, const Line& line) {
@@ -145,6 +205,13 @@ void Assembler::process_statement(const std::vector<Token>& toks, const Line& li
     const std::size_t args = p + 1;
     op_col_ = toks[p].col;
     if (is_conditional_word(op)) {
+        // A label names the line's address where the line itself is assembled: an IF outside a
+        // false branch, an ELSE or ENDIF where its IF is (it was dropped without a word before).
+        const bool closing = op == "ELSE" || op == "ENDIF" || op == "ENDC";
+        if (!label.empty() && (closing ? cond_.empty() || cond_.back().parent_active : !skipping())) {
+            define(label, label_col, loc(), SymbolKind::Label);
+            listing_.back().address = loc();
+        }
         conditional(op, toks, args, line);
         return;
     }

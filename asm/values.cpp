@@ -124,7 +124,13 @@ void Assembler::define(const std::string& full_name, int col, std::uint16_t valu
             return;
         }
         std::string where = e.file >= 0 ? fmt::format(" (first defined at {}:{})", files_[static_cast<std::size_t>(e.file)].name, e.line) : "";
-        error(col, "'" + name + "' is already defined" + where);
+        // SET and EQU don't mix (ASM80): a SET symbol is a variable, an EQU one a constant.
+        if (kind == SymbolKind::Set && e.kind == SymbolKind::Equ)
+            error(col, "'" + name + "' is an EQU constant" + where + "; SET can't redefine it");
+        else if (kind == SymbolKind::Equ && e.kind == SymbolKind::Set)
+            error(col, "'" + name + "' is a SET symbol" + where + "; EQU can't redefine it");
+        else
+            error(col, "'" + name + "' is already defined" + where);
         return;
     }
     // A value that is not known yet counts only when it becomes known: a circle's value (A EQU A+1)

@@ -130,18 +130,16 @@ int run_cpm(const CpmArgs& args) {
 }  // namespace
 
 void add_cpm_command(CLI::App& app, int& status) {
-    auto args = std::make_shared<CpmArgs>();
-    std::vector<std::string> outputs;
-    CLI::App* cmd = app.add_subcommand("cpm", "Run a CP/M .COM program (loaded at 0100H) with a small BDOS");
-    cmd->add_option("program", args->program, "the .COM file")->required();
-    add_cpu_option(cmd, args->cpu, "processor variant");
-    cmd->add_option("--max-tstates", args->max_tstates, "stop with an error after N T-states (0 = no limit)")->type_name("UINT");
-    cmd->add_option("--max-cycles", args->max_tstates, "the old name of --max-tstates")->group("");  // hidden alias
-    cmd->add_flag("--stats", args->stats, "print instructions, T-states, wall time and T-states per second");
-    auto* trace = add_output_option(cmd, outputs, "--trace", args->trace,
+    Subcommand<CpmArgs> cmd(app, "cpm", "Run a CP/M .COM program (loaded at 0100H) with a small BDOS");
+    cmd->add_option("program", cmd.args->program, "the .COM file")->required();
+    add_cpu_option(cmd.cmd, cmd.args->cpu, "processor variant");
+    cmd->add_option("--max-tstates", cmd.args->max_tstates, "stop with an error after N T-states (0 = no limit)")->type_name("UINT");
+    cmd->add_option("--max-cycles", cmd.args->max_tstates, "the old name of --max-tstates")->group("");  // hidden alias
+    cmd->add_flag("--stats", cmd.args->stats, "print instructions, T-states, wall time and T-states per second");
+    auto* trace = cmd.output("--trace", cmd.args->trace,
                                     "write every executed instruction as CSV (T-state, PC, opcode, disassembly, "
                                     "registers before it)");
-    cmd->add_option("--trace-last", args->trace_last, "with --trace: only the last N instructions of the run")
+    cmd->add_option("--trace-last", cmd.args->trace_last, "with --trace: only the last N instructions of the run")
         ->needs(trace)
         ->check(CLI::Range(std::size_t{1}, std::size_t{10'000'000}));  // the ring is kept in memory
     cmd->footer(
@@ -149,7 +147,7 @@ void add_cpm_command(CLI::App& app, int& status) {
         "file cannot be read or written, 2 a usage error (a bad number, a --trace that is the program)\n"
         "or a HLT outside the BDOS, 3 an undefined BDOS\n"
         "function, 4 the T-state limit was reached, 5 stopped by a debug hook.");
-    on_run(cmd, status, outputs, [args] { return run_cpm(*args); });
+    cmd.run(status, run_cpm);
 }
 
 }  // namespace alp85::cli

@@ -107,35 +107,29 @@ int run_disasm(const DisasmArgs& args) {
     const DisasmResult r = disassemble_image(segments, o);
     if (r.bytes == 0) return fail(fmt::format("{}: no bytes in the range asked for", origin), 1);
     const std::string text = args.source ? format_source(r, o, origin) : format_listing(r);
-    if (args.output.empty()) {
-        std::cout << text;
-        std::cout.flush();
-        return std::cout ? 0 : 1;
+    if (!args.output.empty()) {
+        write_atomic(args.output, text);  // throws when it cannot: on_run reports it (status 1)
+        return 0;
     }
-    try {
-        write_atomic(args.output, text);
-    } catch (const std::exception& e) {
-        return fail(e.what(), 1);
-    }
-    return 0;
+    std::cout << text << std::flush;
+    return std::cout ? 0 : 1;  // a closed pipe or a full disk
 }
 
 }  // namespace
 
 void add_disasm_command(CLI::App& app, int& status) {
-    auto args = std::make_shared<DisasmArgs>();
-    std::vector<std::string> outputs;
-    CLI::App* cmd = app.add_subcommand("disasm", "Disassemble a program image (.hex, .bin, .com, .asm) or the monitor ROM");
-    cmd->add_option("image", args->image, "The image: .hex, .bin/.rom (with --org), .com (at 0100H) or .asm");
-    cmd->add_flag("--monitor", args->monitor, "Disassemble the built-in monitor ROM, with its symbols");
-    cmd->add_option("--org", args->org, "Load address of a .bin/.rom/.com image");
-    cmd->add_option("--from", args->from, "First address to decode (decoding starts exactly there)");
-    cmd->add_option("--to", args->to, "Last address to decode");
-    cmd->add_option("--map", args->maps, "asm85 JSON map(s) with symbols (asm85 --map)");
-    cmd->add_flag("--no-symbols", args->no_symbols, "Print every address as a number");
-    add_cpu_option(cmd, args->cpu, "Decode as this processor");
-    cmd->add_flag("--source", args->source, "Write asm85 source that assembles back to the same bytes");
-    add_output_option(cmd, outputs, "-o,--output", args->output, "Write to this file instead of standard output");
+    Subcommand<DisasmArgs> cmd(app, "disasm", "Disassemble a program image (.hex, .bin, .com, .asm) or the monitor ROM");
+    cmd->add_option("image", cmd.args->image, "The image: .hex, .bin/.rom (with --org), .com (at 0100H) or .asm")
+        ->type_name("FILE");
+    cmd->add_flag("--monitor", cmd.args->monitor, "Disassemble the built-in monitor ROM, with its symbols");
+    cmd->add_option("--org", cmd.args->org, "Load address of a .bin/.rom/.com image");
+    cmd->add_option("--from", cmd.args->from, "First address to decode (decoding starts exactly there)");
+    cmd->add_option("--to", cmd.args->to, "Last address to decode");
+    cmd->add_option("--map", cmd.args->maps, "asm85 JSON map(s) with symbols (asm85 --map)");
+    cmd->add_flag("--no-symbols", cmd.args->no_symbols, "Print every address as a number");
+    add_cpu_option(cmd.cmd, cmd.args->cpu, "Decode as this processor");
+    cmd->add_flag("--source", cmd.args->source, "Write asm85 source that assembles back to the same bytes");
+    cmd.output("-o,--output", cmd.args->output, "Write to this file instead of standard output");
     cmd->footer(
         "Addresses: 0800H, 0x800, 2048 or a symbol. Decoding is linear: data tables show as instructions.\n"
         "Examples:\n"
@@ -145,7 +139,7 @@ void add_disasm_command(CLI::App& app, int& status) {
         "Exit status: 0 success, 1 an image or map that cannot be read, no bytes in the range, or an\n"
         "output that cannot be written, 2 a usage error (a bad address, range or option, an output that\n"
         "is the image or a map).");
-    on_run(cmd, status, outputs, [args] { return run_disasm(*args); });
+    cmd.run(status, run_disasm);
 }
 
 }  // namespace alp85::cli

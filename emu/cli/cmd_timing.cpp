@@ -111,29 +111,23 @@ int run_timing(const TimingArgs& a) {
         title = fmt::format("{} acknowledged before the instruction at {:04X}H", a.interrupt == "trap" ? "TRAP" : "RST " + a.interrupt.substr(3), r.pc);
     }
     std::cout << title << '\n' << debug::cycles_text(cycles);
-    try {
-        if (!a.svg.empty()) plot::write_timing(diagram(cycles, title), a.svg);
-        if (!a.png.empty()) plot::write_timing(diagram(cycles, title), a.png);
-        if (!a.vcd.empty()) debug::write_cycles_vcd(cycles, a.vcd, title);
-    } catch (const std::exception& x) {
-        std::cerr << "alp85 timing: " << x.what() << '\n';
-        return 1;
-    }
+    // A file that cannot be written throws: on_run reports it (status 1).
+    if (!a.svg.empty()) plot::write_timing(diagram(cycles, title), a.svg);
+    if (!a.png.empty()) plot::write_timing(diagram(cycles, title), a.png);
+    if (!a.vcd.empty()) debug::write_cycles_vcd(cycles, a.vcd, title);
     return 0;
 }
 
 }  // namespace
 
 void add_timing_command(CLI::App& app, int& status) {
-    auto args = std::make_shared<TimingArgs>();
-    std::vector<std::string> outputs;
-    CLI::App* cmd = app.add_subcommand("timing", "The machine cycles of an instruction as the 8085 data sheet draws them");
-    cmd->add_option("instruction", args->instruction, "One instruction in asm85's syntax, e.g. \"MVI A,32H\" or \"STA 2050H\"");
-    cmd->add_option("--at", args->at, "Its address (default 0800H)");
-    cmd->add_option("--interrupt", args->interrupt, "Draw the acknowledge of rst7.5, rst6.5, rst5.5 or trap instead");
-    add_output_option(cmd, outputs, "--svg", args->svg, "Draw the timing diagram to an SVG file");
-    add_output_option(cmd, outputs, "--png", args->png, "Draw the timing diagram to a PNG file");
-    add_output_option(cmd, outputs, "--vcd", args->vcd, "Write the waveforms as a VCD file (GTKWave, PulseView)");
+    Subcommand<TimingArgs> cmd(app, "timing", "The machine cycles of an instruction as the 8085 data sheet draws them");
+    cmd->add_option("instruction", cmd.args->instruction, "One instruction in asm85's syntax, e.g. \"MVI A,32H\" or \"STA 2050H\"");
+    cmd->add_option("--at", cmd.args->at, "Its address (default 0800H)");
+    cmd->add_option("--interrupt", cmd.args->interrupt, "Draw the acknowledge of rst7.5, rst6.5, rst5.5 or trap instead");
+    cmd.output("--svg", cmd.args->svg, "Draw the timing diagram to an SVG file");
+    cmd.output("--png", cmd.args->png, "Draw the timing diagram to a PNG file");
+    cmd.output("--vcd", cmd.args->vcd, "Write the waveforms as a VCD file (GTKWave, PulseView)");
     cmd->footer(
         "Each machine cycle with IO/M, S1 S0, its strobes and A15-A8, AD7-AD0; the diagrams show CLK, ALE,\n"
         "IO/M, S1, S0, /RD, /WR, /INTA and the buses T-state by T-state (T1...T6). The registers are 0 (SP too:\n"
@@ -144,10 +138,10 @@ void add_timing_command(CLI::App& app, int& status) {
         "  alp85 timing --interrupt rst7.5 --vcd ack.vcd\n"
         "Exit status: 0 success, 1 a file could not be written, 2 a usage error or an instruction that does not\n"
         "assemble.");
-    on_run(cmd, status, outputs, [args] {
+    cmd.run(status, [](const TimingArgs& a) {
         // Two drawings on one file; the options not given are empty and not compared.
-        const bool clash = refuse_output_clash("timing", {}, {{args->svg, "--svg"}, {args->png, "--png"}, {args->vcd, "--vcd"}});
-        return clash ? kUsageError : run_timing(*args);
+        const bool clash = refuse_output_clash("timing", {}, {{a.svg, "--svg"}, {a.png, "--png"}, {a.vcd, "--vcd"}});
+        return clash ? kUsageError : run_timing(a);
     });
 }
 

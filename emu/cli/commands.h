@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -49,7 +50,29 @@ CLI::Option* add_output_option(CLI::App* cmd, std::vector<std::string>& outputs,
                                std::string& path, const std::string& help);
 // What the command runs: a usage error when one of `outputs` was given an empty name
 // (refuse_empty_outputs), else the exit status `run` gives, into `status`.
+// An exception out of `run` (an output that cannot be written, an input gone since it was checked)
+// is reported as `alp85 COMMAND: WHAT` with status 1.
 void on_run(CLI::App* cmd, int& status, std::vector<std::string> outputs, std::function<int()> run);
+
+// A subcommand being declared: its CLI11 node (`cmd->add_option(...)`), the arguments its options
+// fill (kept alive by its callback), and the output options it names, which on_run checks.
+template <class Args>
+struct Subcommand {
+    Subcommand(CLI::App& app, const std::string& name, const std::string& summary)
+        : cmd(app.add_subcommand(name, summary)) {}
+    CLI::App* operator->() const { return cmd; }
+    CLI::Option* output(const std::string& name, std::string& path, const std::string& help) {
+        return add_output_option(cmd, outputs, name, path, help);
+    }
+    // What the command runs once its options are parsed: `run(args)` gives the exit status.
+    void run(int& status, std::function<int(const Args&)> run) {
+        on_run(cmd, status, outputs, [a = args, run = std::move(run)] { return run(*a); });
+    }
+
+    CLI::App* cmd;
+    std::shared_ptr<Args> args = std::make_shared<Args>();
+    std::vector<std::string> outputs;
+};
 // "" when `path` can be opened as an input file; else why not, naming it ("'x.com' is a
 // directory", "no such file 'x.com'").
 std::string input_file_problem(const std::string& path);

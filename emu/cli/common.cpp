@@ -74,7 +74,18 @@ CLI::Option* add_output_option(CLI::App* cmd, std::vector<std::string>& outputs,
 
 void on_run(CLI::App* cmd, int& status, std::vector<std::string> outputs, std::function<int()> run) {
     cmd->callback([cmd, &status, outputs = std::move(outputs), run = std::move(run)] {
-        status = refuse_empty_outputs(cmd->get_name(), *cmd, outputs) ? kUsageError : run();
+        if (refuse_empty_outputs(cmd->get_name(), *cmd, outputs)) {
+            status = kUsageError;
+            return;
+        }
+        try {
+            status = run();
+        } catch (const CLI::Error&) {
+            throw;  // CLI11's own (--help, a usage error), which main() reports
+        } catch (const std::exception& e) {
+            std::cerr << "alp85 " << cmd->get_name() << ": " << e.what() << '\n';
+            status = 1;
+        }
     });
 }
 

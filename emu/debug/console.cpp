@@ -65,63 +65,67 @@ Console::Console(Debugger& d) : d_(d), table_(own_commands()), vars_(d.variables
 std::vector<Console::CommandDef> Console::own_commands() {
     struct Own {
         std::string_view name;
-        std::vector<std::string_view> aliases;
+        std::string_view aliases;  // gdb's short names beside the unique prefixes, blank-separated
         Handler handler;
         std::string_view help;
     };
     static const std::vector<Own> defs = {
-        {"break", {"b", "br", "brea"}, &Console::cmd_break, "break [LOCATION] [if EXPR]: stop before the instruction at LOCATION (address, symbol, FILE:LINE)"},
-        {"tbreak", {"tb"}, &Console::cmd_tbreak, "tbreak [LOCATION] [if EXPR]: a breakpoint deleted at its first stop"},
-        {"watch", {"wa"}, &Console::cmd_watch, "watch WHAT [if EXPR]: stop after WHAT changes (memory written with a new value, a port, the machine tool, a chip register)"},
-        {"rwatch", {"rw"}, &Console::cmd_rwatch, "rwatch MEMORY [if EXPR]: stop after MEMORY is read"},
-        {"awatch", {"aw"}, &Console::cmd_awatch, "awatch MEMORY [if EXPR]: stop after MEMORY is read or written"},
-        {"delete", {"d"}, &Console::cmd_delete, "delete [N...|LOCATION|all]: delete breakpoints and watchpoints (all without N)"},
-        {"enable", {"en"}, &Console::cmd_enable, "enable [N...]: enable breakpoints and watchpoints"},
-        {"disable", {"dis", "disa"}, &Console::cmd_disable, "disable [N...]: disable breakpoints and watchpoints"},
-        {"condition", {"cond"}, &Console::cmd_condition, "condition N [EXPR]: stop at N only when EXPR is not 0 (no EXPR: always)"},
-        {"ignore", {}, &Console::cmd_ignore, "ignore N COUNT: pass N the next COUNT times"},
-        {"commands", {"comm"}, &Console::cmd_commands, "commands [N]: lines up to 'end' run at each stop of N (silent first: no stop report; one that resumes the run ends them; a log point: print ... then continue)"},
-        {"continue", {"c", "cont", "fg"}, &Console::cmd_continue, "continue [N]: run until a breakpoint or watchpoint (N: ignore this breakpoint N-1 more times)"},
-        {"step", {"s"}, &Console::cmd_step, "step [N]: one source line, into CALL and RST"},
-        {"stepi", {"si"}, &Console::cmd_stepi, "stepi [N]: one instruction, into CALL and RST"},
-        {"next", {"n"}, &Console::cmd_next, "next [N]: one line, a CALL or RST run whole"},
-        {"nexti", {"ni"}, &Console::cmd_nexti, "nexti [N]: one instruction, a CALL or RST run whole"},
-        {"finish", {"fin"}, &Console::cmd_finish, "finish: run until the current routine returns"},
-        {"until", {"u"}, &Console::cmd_until, "until [LOCATION]: run past this instruction in this routine (out of a loop), or to LOCATION"},
-        {"advance", {}, &Console::cmd_advance, "advance LOCATION: run until LOCATION"},
-        {"run", {"r"}, &Console::cmd_run, "run [for] TIME: run for TIME (10ms, 2s, 3070t), stopping at breakpoints; run until ... as in scripts"},
-        {"reverse-step", {"rs"}, &Console::cmd_rs, "reverse-step: back one line (into a routine that just returned)"},
-        {"reverse-stepi", {"rsi"}, &Console::cmd_rsi, "reverse-stepi: back one instruction"},
-        {"reverse-next", {"rn"}, &Console::cmd_rn, "reverse-next: back one line of this routine, a call undone whole"},
-        {"reverse-nexti", {"rni"}, &Console::cmd_rn, "reverse-nexti: as reverse-next"},
-        {"reverse-finish", {"rfin"}, &Console::cmd_rfin, "reverse-finish: back to the CALL that entered this routine"},
-        {"reverse-continue", {"rc"}, &Console::cmd_rc, "reverse-continue: back to the previous breakpoint or watchpoint hit"},
-        {"print", {"p", "inspect"}, &Console::cmd_print, "print[/x|d|t|c] EXPR: registers, flags, [HL], word[1B30H], symbols, arithmetic, comparison"},
-        {"set", {}, &Console::cmd_set, "set [var] LVALUE = EXPR: a register, flag or memory; set history on|off"},
-        {"display", {"disp"}, &Console::cmd_display, "display[/FMT] EXPR: print EXPR after every stop (no EXPR: now); /i and /s show memory at EXPR as x does (display/i $pc)"},
-        {"undisplay", {"undisp"}, &Console::cmd_undisplay, "undisplay [N...]: stop displaying"},
-        {"x", {}, &Console::cmd_x, "x/NFU ADDRESS: memory; F x d u o t c a s i, U b (byte) or w (16-bit word)"},
-        {"list", {"l"}, &Console::cmd_list, "list [LOCATION|FILE:LINE|FIRST,LAST]: source around it (or around the PC); FIRST,LAST: those lines (numbers or locations)"},
-        {"disassemble", {"disas"}, &Console::cmd_disassemble, "disassemble [LOCATION] [N]: N instructions with symbols and source lines"},
-        {"backtrace", {"bt", "where"}, &Console::cmd_backtrace, "backtrace: the routines called, from the return addresses on the stack"},
-        {"frame", {"f"}, &Console::cmd_frame, "frame [N]: select frame N of the backtrace (no N: show the selected one)"},
-        {"up", {}, &Console::cmd_up, "up [N]: select the frame N (default 1) calls out, the caller's"},
-        {"down", {"do"}, &Console::cmd_down, "down [N]: select the frame N (default 1) calls in"},
-        {"jump", {"j"}, &Console::cmd_jump, "jump LOCATION: continue at LOCATION (the PC set there, then continue)"},
-        {"info", {"i"}, &Console::cmd_info, "info registers|breakpoints|watchpoints|displays|display|board|PART (8155, 8279, ...)|axis [X|Y|Z]|line|frame|symbol ADDR"},
-        {"timing", {}, &Console::cmd_timing, "timing: the machine cycles of the next instruction as the 8085 data sheet draws them (IO/M, S1 S0, RD/WR, A15-A8, AD7-AD0; docs/signals.md)"},
-        {"history", {}, &Console::cmd_history, "history [N]: the last N instructions (default 10) with the registers each changed"},
-        {"echo", {}, &Console::cmd_echo, "echo TEXT: show TEXT (\\n a new line, \\t a tab, \\\\ a backslash); no new line of its own, as gdb's"},
-        {"output", {}, &Console::cmd_output, "output[/x|d|t|c] EXPR: EXPR's value alone, without $N = and without a new line (for breakpoint commands)"},
-        {"expect", {}, &Console::cmd_expect, "expect EXPR: an error unless EXPR is not 0 (for batch sessions); the script language's expect forms work too"},
-        {"help", {"h"}, &Console::cmd_help, "help [COMMAND]"},
-        {"quit", {"q", "exit"}, &Console::cmd_quit, "quit"},
+        {"break", "b br brea", &Console::cmd_break, "break [LOCATION] [if EXPR]: stop before the instruction at LOCATION (address, symbol, FILE:LINE)"},
+        {"tbreak", "tb", &Console::cmd_tbreak, "tbreak [LOCATION] [if EXPR]: a breakpoint deleted at its first stop"},
+        {"watch", "wa", &Console::cmd_watch, "watch WHAT [if EXPR]: stop after WHAT changes (memory written with a new value, a port, the machine tool, a chip register)"},
+        {"rwatch", "rw", &Console::cmd_rwatch, "rwatch MEMORY [if EXPR]: stop after MEMORY is read"},
+        {"awatch", "aw", &Console::cmd_awatch, "awatch MEMORY [if EXPR]: stop after MEMORY is read or written"},
+        {"delete", "d", &Console::cmd_delete, "delete [N...|LOCATION|all]: delete breakpoints and watchpoints (all without N)"},
+        {"enable", "en", &Console::cmd_enable, "enable [N...]: enable breakpoints and watchpoints"},
+        {"disable", "dis disa", &Console::cmd_disable, "disable [N...]: disable breakpoints and watchpoints"},
+        {"condition", "cond", &Console::cmd_condition, "condition N [EXPR]: stop at N only when EXPR is not 0 (no EXPR: always)"},
+        {"ignore", "", &Console::cmd_ignore, "ignore N COUNT: pass N the next COUNT times"},
+        {"commands", "comm", &Console::cmd_commands, "commands [N]: lines up to 'end' run at each stop of N (silent first: no stop report; one that resumes the run ends them; a log point: print ... then continue)"},
+        {"continue", "c cont fg", &Console::cmd_continue, "continue [N]: run until a breakpoint or watchpoint (N: ignore this breakpoint N-1 more times)"},
+        {"step", "s", &Console::cmd_step, "step [N]: one source line, into CALL and RST"},
+        {"stepi", "si", &Console::cmd_stepi, "stepi [N]: one instruction, into CALL and RST"},
+        {"next", "n", &Console::cmd_next, "next [N]: one line, a CALL or RST run whole"},
+        {"nexti", "ni", &Console::cmd_nexti, "nexti [N]: one instruction, a CALL or RST run whole"},
+        {"finish", "fin", &Console::cmd_finish, "finish: run until the current routine returns"},
+        {"until", "u", &Console::cmd_until, "until [LOCATION]: run past this instruction in this routine (out of a loop), or to LOCATION"},
+        {"advance", "", &Console::cmd_advance, "advance LOCATION: run until LOCATION"},
+        {"run", "r", &Console::cmd_run, "run [for] TIME: run for TIME (10ms, 2s, 3070t), stopping at breakpoints; run until ... as in scripts"},
+        {"reverse-step", "rs", &Console::cmd_rs, "reverse-step: back one line (into a routine that just returned)"},
+        {"reverse-stepi", "rsi", &Console::cmd_rsi, "reverse-stepi: back one instruction"},
+        {"reverse-next", "rn", &Console::cmd_rn, "reverse-next: back one line of this routine, a call undone whole"},
+        {"reverse-nexti", "rni", &Console::cmd_rn, "reverse-nexti: as reverse-next"},
+        {"reverse-finish", "rfin", &Console::cmd_rfin, "reverse-finish: back to the CALL that entered this routine"},
+        {"reverse-continue", "rc", &Console::cmd_rc, "reverse-continue: back to the previous breakpoint or watchpoint hit"},
+        {"print", "p inspect", &Console::cmd_print, "print[/x|d|t|c] EXPR: registers, flags, [HL], word[1B30H], symbols, arithmetic, comparison"},
+        {"set", "", &Console::cmd_set, "set [var] LVALUE = EXPR: a register, flag or memory; set history on|off; set limit TIME: how long continue, finish, until and advance run before they give up (10 min of machine time)"},
+        {"display", "disp", &Console::cmd_display, "display[/FMT] EXPR: print EXPR after every stop (no EXPR: now); /i and /s show memory at EXPR as x does (display/i $pc)"},
+        {"undisplay", "undisp", &Console::cmd_undisplay, "undisplay [N...]: stop displaying"},
+        {"x", "", &Console::cmd_x, "x/NFU ADDRESS: memory; F x d u o t c a s i, U b (byte) or w (16-bit word)"},
+        {"list", "l", &Console::cmd_list, "list [LOCATION|FILE:LINE|FIRST,LAST]: source around it (or around the PC); FIRST,LAST: those lines (numbers or locations)"},
+        {"disassemble", "disas", &Console::cmd_disassemble, "disassemble [LOCATION] [N]: N instructions with symbols and source lines"},
+        {"backtrace", "bt where", &Console::cmd_backtrace, "backtrace: the routines called, from the return addresses on the stack"},
+        {"frame", "f", &Console::cmd_frame, "frame [N]: select frame N of the backtrace (no N: show the selected one)"},
+        {"up", "", &Console::cmd_up, "up [N]: select the frame N (default 1) calls out, the caller's"},
+        {"down", "do", &Console::cmd_down, "down [N]: select the frame N (default 1) calls in"},
+        {"jump", "j", &Console::cmd_jump, "jump LOCATION: continue at LOCATION (the PC set there, then continue)"},
+        {"info", "i", &Console::cmd_info, "info registers|breakpoints|watchpoints|displays|display|board|PART (8155, 8279, ...)|axis [X|Y|Z]|line|frame|symbol ADDR"},
+        {"timing", "", &Console::cmd_timing, "timing: the machine cycles of the next instruction as the 8085 data sheet draws them (IO/M, S1 S0, RD/WR, A15-A8, AD7-AD0; docs/signals.md)"},
+        {"history", "", &Console::cmd_history, "history [N]: the last N instructions (default 10) with the registers each changed"},
+        {"echo", "", &Console::cmd_echo, "echo TEXT: show TEXT (\\n a new line, \\t a tab, \\\\ a backslash); no new line of its own, as gdb's"},
+        {"output", "", &Console::cmd_output, "output[/x|d|t|c] EXPR: EXPR's value alone, without $N = and without a new line (for breakpoint commands)"},
+        {"expect", "", &Console::cmd_expect, "expect EXPR: an error unless EXPR is not 0 (for batch sessions); the script language's expect forms work too"},
+        {"help", "h", &Console::cmd_help, "help [COMMAND]"},
+        {"quit", "q exit", &Console::cmd_quit, "quit"},
     };
     std::vector<CommandDef> out;
     for (const Own& o : defs) {
         CommandDef c;
         c.name = o.name;
-        c.aliases = o.aliases;
+        for (std::string_view rest = o.aliases; !rest.empty();) {
+            const std::size_t blank = rest.find(' ');
+            c.aliases.push_back(rest.substr(0, blank));
+            rest = blank == std::string_view::npos ? std::string_view{} : rest.substr(blank + 1);
+        }
         c.handler = o.handler;
         c.help = o.help;
         out.push_back(std::move(c));
@@ -367,7 +371,7 @@ std::string Console::run_commands(Stop s) {
     for (int stops = 0;; ++stops) {
         const std::vector<std::string> list = d_.commands_for(s);
         if (list.empty() || quit_) return out;
-        if (stops == kMaxStops || ran >= Debugger::kContinueLimit) {
+        if (stops == kMaxStops || ran >= d_.continue_limit()) {
             out += fmt::format("Stopped: the commands of {} {} resumed the run {} times ({:.1f} s of simulated time); "
                                "the session goes on here, continue goes on\n",
                                s.reason == StopReason::Watchpoint ? "watchpoint" : "breakpoint", s.number, stops,
@@ -409,36 +413,28 @@ int error_column(int col, int ccol, std::string_view cond, const Debugger::Added
 }
 }  // namespace
 
-std::string Console::cmd_break(std::string_view a, int col) {
-    int ccol = 0;
-    auto [loc, cond] = split_if(a, ccol);
-    loc = trim_blanks(loc);
-    const std::string where = loc.empty() ? hex4h(d_.machine().cpu().regs().pc) : std::string(loc);
-    const Debugger::Added r = d_.add_breakpoint(where, false, trim_blanks(cond));
-    if (!r.number) return error(error_column(col, ccol, cond, r), r.error);
-    return fmt::format("{}{}", r.bound ? fmt::format("{}:{} has no code: the breakpoint binds to line {}\n",
-                                                    std::filesystem::path(r.bound->file).filename().string(),
-                                                    loc.substr(loc.rfind(':') + 1), r.bound->line)
-                                       : "",
-                       [&] {
-                           const Breakpoint* b = d_.breakpoint(r.number);
-                           std::string s = fmt::format("Breakpoint {} at {}", b->number, hex4h(b->address));
-                           if (b->line) s += fmt::format(": file {}, line {}.", std::filesystem::path(b->line->file).filename().string(), b->line->line);
-                           return s + '\n';
-                       }());
-}
+std::string Console::cmd_break(std::string_view a, int col) { return breakpoint(a, col, false); }
+std::string Console::cmd_tbreak(std::string_view a, int col) { return breakpoint(a, col, true); }
 
-std::string Console::cmd_tbreak(std::string_view a, int col) {
+// break|tbreak [LOCATION] [if EXPR]: gdb's report, with a note when a source line had no code and
+// the point went to the next line that has.
+std::string Console::breakpoint(std::string_view a, int col, bool temporary) {
     int ccol = 0;
     auto [loc, cond] = split_if(a, ccol);
     loc = trim_blanks(loc);
     const std::string where = loc.empty() ? hex4h(d_.machine().cpu().regs().pc) : std::string(loc);
-    const Debugger::Added r = d_.add_breakpoint(where, true, trim_blanks(cond));
+    const Debugger::Added r = d_.add_breakpoint(where, temporary, trim_blanks(cond));
     if (!r.number) return error(error_column(col, ccol, cond, r), r.error);
+    std::string s;
+    if (r.bound)
+        s = fmt::format("{}:{} has no code: the breakpoint binds to line {}\n",
+                        std::filesystem::path(r.bound->file).filename().string(), loc.substr(loc.rfind(':') + 1),
+                        r.bound->line);
     const Breakpoint* b = d_.breakpoint(r.number);
-    temporary_.push_back(b->number);
-    std::string s = fmt::format("Temporary breakpoint {} at {}", b->number, hex4h(b->address));
-    if (b->line) s += fmt::format(": file {}, line {}.", std::filesystem::path(b->line->file).filename().string(), b->line->line);
+    if (temporary) temporary_.push_back(b->number);
+    s += fmt::format("{} {} at {}", temporary ? "Temporary breakpoint" : "Breakpoint", b->number, hex4h(b->address));
+    if (b->line)
+        s += fmt::format(": file {}, line {}.", std::filesystem::path(b->line->file).filename().string(), b->line->line);
     return s + '\n';
 }
 
@@ -723,21 +719,27 @@ std::string Console::cmd_advance(std::string_view a, int col) {
     return report(d_.advance(loc.addresses.front()));
 }
 
-std::string Console::cmd_run(std::string_view a, int col) {
-    if (to_upper(first_word(a)) == "FOR") {
-        col += 3;
-        a = trim_blanks(a.substr(3), &col);
-    }
-    if (a.empty()) return error(col, "expected a time: run [for] TIME (10ms, 2s, 3070t)");
-    // TIME: a number and a unit (t, us, ms, s).
+// TIME: a number and a unit (t, us, ms, s), in T-states.
+std::optional<std::uint64_t> Console::tstates_of(std::string_view a) {
     std::size_t i = 0;
     while (i < a.size() && (std::isdigit(static_cast<unsigned char>(a[i])) || a[i] == '.')) ++i;
     const std::string unit = to_upper(a.substr(i));
     const double v = i ? std::strtod(std::string(a.substr(0, i)).c_str(), nullptr) : -1;
     constexpr double hz = board::kCpuHz;
     const double scale = unit == "T" ? 1 : unit == "US" ? hz / 1e6 : unit == "MS" ? hz / 1e3 : unit == "S" ? hz : -1;
-    if (v < 0 || scale < 0) return error(col, fmt::format("bad time '{}' (a number with a unit: t, us, ms or s)", a));
-    const Stop s = d_.run_for(static_cast<std::uint64_t>(v * scale + 0.5));
+    if (v < 0 || scale < 0 || v * scale > 1e18) return std::nullopt;
+    return static_cast<std::uint64_t>(v * scale + 0.5);
+}
+
+std::string Console::cmd_run(std::string_view a, int col) {
+    if (to_upper(first_word(a)) == "FOR") {
+        col += 3;
+        a = trim_blanks(a.substr(3), &col);
+    }
+    if (a.empty()) return error(col, "expected a time: run [for] TIME (10ms, 2s, 3070t)");
+    const auto t = tstates_of(a);
+    if (!t) return error(col, fmt::format("bad time '{}' (a number with a unit: t, us, ms or s)", a));
+    const Stop s = d_.run_for(*t);
     if (s.reason == StopReason::Deadline) return {};
     return report(s);
 }

@@ -125,6 +125,8 @@ private:
     // handlers (console.cpp: control and points; console_view.cpp: looking)
     std::string cmd_break(std::string_view a, int col);
     std::string cmd_tbreak(std::string_view a, int col);
+    std::string breakpoint(std::string_view a, int col, bool temporary);
+    static std::optional<std::uint64_t> tstates_of(std::string_view time);  // 10ms, 2s, 3070t
     std::string cmd_watch(std::string_view a, int col);
     std::string cmd_rwatch(std::string_view a, int col);
     std::string cmd_awatch(std::string_view a, int col);

@@ -94,6 +94,16 @@ std::string Console::cmd_set(std::string_view a, int col) {
         d_.set_history(v == "ON");
         return fmt::format("History {}.\n", v == "ON" ? "on: reverse execution from here" : "off");
     }
+    if (first == "LIMIT" && !trim_blanks(a.substr(5)).starts_with('=')) {  // set limit = 5: a symbol LIMIT
+        int tcol = col + 5;
+        const std::string_view time = trim_blanks(a.substr(5), &tcol);
+        const auto t = tstates_of(time);
+        if (!t || *t == 0)
+            return error(tcol, fmt::format("expected: set limit TIME (10ms, 2s, 3070t; not 0), not '{}'", time));
+        d_.set_continue_limit(*t);
+        return fmt::format("continue, finish, until and advance give up after {:.3f} s of machine time.\n",
+                           board::ms_from_tstates(*t) / 1000.0);
+    }
     if (first == "VAR") {
         col += 3;
         a = trim_blanks(a.substr(3), &col);

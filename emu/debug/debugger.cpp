@@ -310,8 +310,8 @@ Stop Debugger::stepi() {
 
 std::optional<Stop> Debugger::begin_with_target(std::function<bool(const I8085&)> target, StopReason reason) {
     Active a;
-    a.until = m_.now() + kContinueLimit;
-    a.limit = kContinueLimit;  // for the message when it gives up
+    a.until = m_.now() + continue_limit_;
+    a.limit = continue_limit_;  // for the message when it gives up
     a.stop_at_halt = true;
     a.target_as = reason;
     return begin(std::move(a), std::move(target));

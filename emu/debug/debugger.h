@@ -235,7 +235,8 @@ public:
     // Runs until the PC reaches `pc` (Target) or `until` (Deadline); breakpoints do not stop it.
     Stop run_to(std::uint16_t pc, std::uint64_t until);
     // Until a breakpoint, a watchpoint, interrupt(), or `limit` T-states (Deadline).
-    Stop cont(std::uint64_t limit = kContinueLimit) { return complete(begin_continue(limit)); }
+    Stop cont() { return cont(continue_limit_); }
+    Stop cont(std::uint64_t limit) { return complete(begin_continue(limit)); }
     Stop stepi();    // one instruction (into CALL and RST)
     Stop step() { return complete(begin_step()); }      // one source line: into a CALL or RST, over routines without lines
     Stop next() { return complete(begin_next()); }      // one instruction, a CALL, RST or RSTV run whole
@@ -263,7 +264,12 @@ public:
     // Ends a run from another thread or a signal handler (Ctrl-C); the run returns Interrupted.
     void interrupt() { interrupt_.store(true); }
     void interrupt_clear() { interrupt_.store(false); }
+    // How much machine time continue, finish, until and advance run before they give up (a routine
+    // that never returns, a breakpoint never reached): kContinueLimit unless the user sets another
+    // (the console's `set limit TIME`).
     static constexpr std::uint64_t kContinueLimit = 600ull * board::kCpuHz;  // 10 minutes simulated
+    void set_continue_limit(std::uint64_t tstates) { continue_limit_ = tstates; }
+    std::uint64_t continue_limit() const { return continue_limit_; }
 
     // ---- resumable runs ----------------------------------------------------------------------------
     // The same runs cut into slices, for front ends that draw or read messages between them (the
@@ -272,7 +278,8 @@ public:
     // Stop once it has ended. pause() ends it between slices. Breakpoint conditions, hit conditions,
     // log points and the runaway guard are decided here, the same for every front end.
     // stop_at_halt false: a HLT does not end it (a board left running, woken by a key or RESET).
-    std::optional<Stop> begin_continue(std::uint64_t limit = kContinueLimit, bool stop_at_halt = true);
+    std::optional<Stop> begin_continue() { return begin_continue(continue_limit_); }
+    std::optional<Stop> begin_continue(std::uint64_t limit, bool stop_at_halt = true);
     std::optional<Stop> begin_step();
     std::optional<Stop> begin_next();
     std::optional<Stop> begin_finish();
@@ -477,6 +484,7 @@ private:
     bool halted_ = false;  // set by the CPU's HLT while a run that stops there is under way
     bool track_stack_ = false;
     std::uint64_t time_limit_ = ~std::uint64_t{0};
+    std::uint64_t continue_limit_ = kContinueLimit;
     std::string time_limit_why_;
     bool time_limit_hit_ = false;
     Stop time_limit_stop();

@@ -173,6 +173,16 @@ TEST_F(Cli, OneUnwritableOutputMeansNoOutputAtAll) {
 namespace alp85::asm85::test {
 namespace {
 
+// A misused ASM80 construct is an error in the source: exit status 1 (as --help says), the
+// place on stderr, and no output file.
+TEST_F(Cli, AnOpenIfExitsOneWithItsPlaceAndWritesNothing) {
+    write("m.asm", "\tNOP\n\tIF\t1\n\tNOP\n");
+    EXPECT_EQ(run("m.asm --lst m.lst"), 1);
+    EXPECT_NE(read("err.txt").find("m.asm:2:2: error: IF without ENDIF\n"), std::string::npos) << read("err.txt");
+    EXPECT_FALSE(fs::exists(dir / "m.hex"));
+    EXPECT_FALSE(fs::exists(dir / "m.lst"));
+}
+
 // Issue #11, 4: usage errors exit 2, not CLI11's own codes (105, 106, 109, ...); --help says so.
 TEST_F(Cli, UsageErrorsExit2AndHelpListsTheExitStatuses) {
     write("p.asm", "\tNOP\n");

@@ -117,6 +117,21 @@ TEST_F(Gdb, TbreakSaysWhereAndItsHitIsTemporary) {
     EXPECT_EQ(run("info breakpoints"), "No breakpoints or watchpoints.\n");
 }
 
+// gdb's note for a line without code, for tbreak as for break: the point goes to the next line that has.
+TEST_F(Gdb, TbreakOnALineWithoutCodeSaysWhereItBinds) {
+    const auto& program = shell.debugger().program();
+    int blank = 0;  // the first line of thesis.asm without code followed by one with code
+    for (int line = 1; line < 2000 && !blank; ++line)
+        if (program.addresses_of("thesis.asm", line).empty() && !program.addresses_of("thesis.asm", line + 1).empty())
+            blank = line;
+    ASSERT_NE(blank, 0);
+    const std::uint16_t at = program.addresses_of("thesis.asm", blank + 1).front();
+    EXPECT_EQ(run(fmt::format("tbreak thesis.asm:{}", blank)),
+              fmt::format("thesis.asm:{} has no code: the breakpoint binds to line {}\n"
+                          "Temporary breakpoint 1 at {:04X}H: file thesis.asm, line {}.\n",
+                          blank, blank + 1, at, blank + 1));
+}
+
 TEST_F(Gdb, HelpShowsEveryCommandsWholeText) {
     const std::string h = run("help");
     // Unwrapped, the text holds each command's full help (the break line's description too).
@@ -222,8 +237,25 @@ TEST_F(Gdb, FinishThatGivesUpSaysWhy) {
     run("continue");
     ASSERT_EQ(m().cpu().regs().pc, symbol("DGIR1"));
     run("delete");
+    // The limit is 10 min of machine time; 20 s give the same answer sooner (600 s took 87 s of
+    // the sanitizer pass).
+    EXPECT_EQ(debug::Debugger::kContinueLimit, 600ull * 3'072'000);
+    EXPECT_EQ(shell.debugger().continue_limit(), debug::Debugger::kContinueLimit);
+    EXPECT_EQ(run("set limit 20s"), "continue, finish, until and advance give up after 20.000 s of machine time.\n");
+    const std::uint64_t t0 = m().now();
     const std::string f = run("finish");
-    EXPECT_NE(f.find("the routine did not return within 600 s of simulated time"), std::string::npos) << f;
+    EXPECT_NE(f.find("the routine did not return within 20 s of simulated time"), std::string::npos) << f;
+    EXPECT_GE(m().now() - t0, 20ull * 3'072'000);
+    EXPECT_LT(m().now() - t0, 21ull * 3'072'000);
+}
+
+TEST_F(Gdb, SetLimitRefusesWhatIsNoTime) {
+    for (const char* bad : {"set limit", "set limit 0s", "set limit 5 parsecs", "set limit -1s"}) {
+        const int before = shell.console().errors();
+        shell.execute(bad);
+        EXPECT_EQ(shell.console().errors(), before + 1) << bad;
+    }
+    EXPECT_EQ(shell.debugger().continue_limit(), debug::Debugger::kContinueLimit);
 }
 
 // Item 6: smaller gdb habits.

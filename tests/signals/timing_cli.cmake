@@ -43,6 +43,8 @@ expect_output(RST75 0 ${ALP85} timing --interrupt rst7.5 --vcd ack.vcd
 expect_output(bad 2 ${ALP85} timing "MVI Q,3" PATTERNS "alp85 timing:1:15: error: undefined symbol 'Q'")
 expect_output(none 2 ${ALP85} timing PATTERNS "give one instruction")
 expect_output(clash 2 ${ALP85} timing "NOP" --svg x.vcd --vcd x.vcd PATTERNS "nothing written")
+# A drawing that cannot be written: exit 1, the command and the file named (--help's exit status).
+expect_output(unwritable 1 ${ALP85} timing "NOP" --svg no-such-dir/x.svg PATTERNS "^NOP at 0800H" "alp85 timing: .*no-such-dir/x.svg")
 # the debugger's timing: the next instruction with the machine's registers (A = 0 after RESET)
 expect_output(debugger 0 ${ALP85} debug --script ${SRC}/timing.gdb --batch
               PATTERNS "0800H\tSTA 2050H" "M4  ${W} +A15-A8=20H AD7-AD0=50H" "13 T-states")
