@@ -82,6 +82,32 @@ std::optional<PadKey> pad_key_for_pc(std::string_view pc_name, const script::Ses
     return for_pc_in(pc_name, s.board());
 }
 
+namespace {
+// The mouse's rows of the key map, after the keys'.
+void mouse_rows(std::vector<KeyMapRow>& rows, bool debug, bool table) {
+    if (!debug && table) {
+        rows.push_back({"wheel on the table", "zoom about the pointer"});
+        rows.push_back({"right or middle drag", "pan the table view"});
+        rows.push_back({"Home, double click", "frame the toolpath"});
+        rows.push_back({"End", "back to the automatic fit"});
+    } else if (debug) {
+        rows.push_back({"click a source line", "set or clear a breakpoint"});
+    }
+    rows.push_back({"F1, ?", "show or hide this key map"});
+}
+
+}  // namespace
+
+std::vector<KeyMapRow> key_map_rows(bool debug, const script::Session& s) {
+    if (&s.board() == &default_board()) return key_map_rows(debug);
+    std::vector<KeyMapRow> rows = {{"0-9, A-F", "the hex keys"}};
+    for (const KeypadKey& k : keypad_view(s))
+        if (k.fn) rows.push_back({k.pc, k.cap});  // a caption of two lines ("VECT\nINTR") as it is on the cap
+    rows.push_back({"click a key", "press it (held at least 30 ms of machine time)"});
+    mouse_rows(rows, debug, !s.board().tool.empty());
+    return rows;
+}
+
 std::vector<KeyMapRow> key_map_rows(bool debug) {
     std::vector<KeyMapRow> rows = {
         {"0-9, A-F", "the hex keys"},
@@ -97,15 +123,7 @@ std::vector<KeyMapRow> key_map_rows(bool debug) {
         {"V", "VECT INTR (RST 7.5)"},
         {"click a key", "press it (held at least 30 ms of machine time)"},
     };
-    if (!debug) {
-        rows.push_back({"wheel on the table", "zoom about the pointer"});
-        rows.push_back({"right or middle drag", "pan the table view"});
-        rows.push_back({"Home, double click", "frame the toolpath"});
-        rows.push_back({"End", "back to the automatic fit"});
-    } else {
-        rows.push_back({"click a source line", "set or clear a breakpoint"});
-    }
-    rows.push_back({"F1, ?", "show or hide this key map"});
+    mouse_rows(rows, debug, true);
     return rows;
 }
 
@@ -114,6 +132,16 @@ std::string_view pc_key_label(const PadKey& k, const script::Session& s) { retur
 
 std::string_view cap_label(const PadKey& k) { return cap_in(k, default_board()); }
 std::string_view cap_label(const PadKey& k, const script::Session& s) { return cap_in(k, s.board()); }
+
+std::vector<KeypadKey> keypad_view(const script::Session& s) {
+    std::vector<KeypadKey> out;
+    for (const board::BoardKey& k : s.board().keys) {
+        const PadKey p = pad_of(k);
+        const bool hex = p.pad == Button::Matrix && p.key <= periph::Key::KF;
+        out.push_back({p, k.name, k.cap, k.pc_label, !hex});
+    }
+    return out;
+}
 
 std::optional<std::string_view> feed_prompt_hint(std::string_view display, bool physical_motors) {
     if (!physical_motors || !display.starts_with("H=")) return std::nullopt;

@@ -54,11 +54,22 @@ std::string_view pc_key_label(const PadKey& k, const script::Session& s);
 // The caption on the keycap ("EXEC", "VECT\nINTR").
 std::string_view cap_label(const PadKey& k);
 std::string_view cap_label(const PadKey& k, const script::Session& s);
+// The session's keypad as the window and the page draw it, all from its board's description: each
+// key's stable name (what find_pad_key takes), its caption, the PC key shown under it, its place
+// (in PadKey), and whether it is a function key (a hex key 0-F is not).
+struct KeypadKey {
+    PadKey key;
+    std::string_view name, cap, pc;
+    bool fn = false;
+};
+std::vector<KeypadKey> keypad_view(const script::Session& s);
 // What the keyboard and the mouse do, as rows of (keys, action), for the key map.
 struct KeyMapRow {
     std::string_view keys, action;
 };
 std::vector<KeyMapRow> key_map_rows(bool debug);
+// The same for the session's board: its function keys' PC keys and captions from its description.
+std::vector<KeyMapRow> key_map_rows(bool debug, const script::Session& s);
 
 // A line shown under the display while the thesis firmware's feed prompt ("H=----", F in mm/min,
 // D = 1500 / F) is typed with the physical motors: F 0006-1500 is accepted, but at F <= 0300
