@@ -95,7 +95,11 @@ public:
         if (o.serial) done(session_.connect_serial(*o.serial, o.serial->frame_tstates(board::kCpuHz)));
         panes_.shown_part = o.show_part;
         session_.debugger().listen([this](const debug::Event& e) { ui_.add_log(e.text); });
-        for (const auto& e : firmware::builtin()) ui_.firmware_names.emplace_back(e.name);
+        // The built-in firmware is the ALP 85's (the default board's); the machine tool's menu only
+        // on a board that has the tool.
+        if (&session_.board() == &script::Session::default_board())
+            for (const auto& e : firmware::builtin()) ui_.firmware_names.emplace_back(e.name);
+        ui_.tool = has_tool(session_);
         for (std::size_t i = 0; i < ui_.firmware_names.size(); ++i)
             if (ui_.firmware_names[i] == "thesis-fixed") ui_.firmware = static_cast<int>(i);
         ui_.speed = o.speed;
