@@ -1,4 +1,4 @@
-// The window's geometry, in pixels from the window's top left corner: where the eight digits and
+// The window's geometry, in pixels from the window's top left corner: where the board's digits and
 // their segments are, where each keypad button is, where the table view, the Z gauge and the
 // travel strip are, and how the table view maps millimetres to pixels. Plain arithmetic, no
 // drawing: the views draw from it and the tests compute the pixels they check from it.
