@@ -120,14 +120,16 @@ public:
     using PortWriteFn = std::function<void(Port, std::uint8_t value, std::uint64_t at)>;
 
     I8155() = default;
+    // A second 8155 on one board needs its own name and snapshot tag (four characters).
+    I8155(std::string_view name, std::string_view tag) : name_(name), tag_(tag) {}
 
     // Part
-    std::string_view name() const override { return "8155"; }
+    std::string_view name() const override { return name_; }
     void describe(Description& d) const override;
     // PA0-7, PB0-7, PC0-5 (an input pin: 'z', this chip does not drive it) and TIMER OUT. TIMER IN
     // is CLK OUT, one pulse per T-state: the recording's time base, not a pin of its own.
     void pins(Pins& p, std::uint64_t now) const override;
-    std::string_view tag() const override { return "8155"; }
+    std::string_view tag() const override { return tag_; }
     std::uint8_t state_version() const override { return 2; }
     void reset(std::uint64_t now) override;
     void advance(std::uint64_t now) override;
@@ -176,6 +178,8 @@ private:
     void timer_event(std::uint64_t t);
 
     State s_;
+    std::string_view name_ = "8155";
+    std::string_view tag_ = "8155";
     InputFn input_;
     LevelFn on_timer_out_;
     IntrFn on_intr_;

@@ -44,15 +44,32 @@ std::optional<Key> Keypad::from_code(std::uint8_t fifo_code) {
     return std::nullopt;
 }
 
+std::array<std::uint8_t, Keypad::kKeyCount> Keypad::layout_places() {
+    std::array<std::uint8_t, kKeyCount> places{};
+    for (const KeyInfo& k : kLayout) places[static_cast<std::size_t>(k.key)] = k.code();
+    return places;
+}
+
+void Keypad::clear_places() {
+    place_.fill(kNowhere);
+    closed_.fill(0);
+}
+
+void Keypad::place(Key key, std::uint8_t row, std::uint8_t column) {
+    place_[static_cast<std::size_t>(key)] = static_cast<std::uint8_t>((row & 7) * 8 + (column & 7));
+}
+
 void Keypad::set(Key key, bool down) {
-    const KeyInfo& k = info(key);
-    const auto bit = static_cast<std::uint8_t>(1u << k.column);
-    closed_[k.row] = static_cast<std::uint8_t>(down ? (closed_[k.row] | bit) : (closed_[k.row] & ~bit));
+    const std::uint8_t p = place_[static_cast<std::size_t>(key)];
+    if (p == kNowhere) return;
+    const std::uint8_t row = p / 8;
+    const auto bit = static_cast<std::uint8_t>(1u << (p % 8));
+    closed_[row] = static_cast<std::uint8_t>(down ? (closed_[row] | bit) : (closed_[row] & ~bit));
 }
 
 bool Keypad::is_pressed(Key key) const {
-    const KeyInfo& k = info(key);
-    return (closed_[k.row] >> k.column) & 1;
+    const std::uint8_t p = place_[static_cast<std::size_t>(key)];
+    return p != kNowhere && ((closed_[p / 8] >> (p % 8)) & 1);
 }
 
 std::uint8_t Keypad::return_lines(std::uint8_t scan_lines) const {
@@ -64,8 +81,11 @@ void Keypad::load_state(StateReader& r) {
     std::uint64_t now = 0;
     r(now), r(rows);
     r.expect_end();
-    for (std::size_t i = 3; i < rows.size(); ++i) {
-        if (rows[i]) r.fail("key down on an unused row");
+    std::array<std::uint8_t, 8> used{};  // per row: the return lines a key sits on
+    for (const std::uint8_t p : place_)
+        if (p != kNowhere) used[p / 8] = static_cast<std::uint8_t>(used[p / 8] | 1u << (p % 8));
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (rows[i] & ~used[i]) r.fail(used[i] ? "key down where this board has none" : "key down on an unused row");
     }
     closed_ = rows;
     now_ = now;

@@ -1,4 +1,6 @@
-// The ALP 85 keypad as a key matrix on the 8279's scan and return lines (board level).
+// A keypad as a key matrix on the 8279's scan and return lines (board level). Where each key sits
+// is the board's (its description places the keys, Keypad::place); a keypad not placed by a board
+// has the ALP 85's matrix, which layout() lists.
 //
 // The real ALP 85 matrix is not documented; this is a design in the manner of Intel's SDK-85:
 // SL0-2 are decoded (74LS138-style, active low) into eight row lines; rows 0 and 1 carry the hex
@@ -66,14 +68,23 @@ public:
 
     void press(Key key) { set(key, true); }
     void release(Key key) { set(key, false); }
-    void set(Key key, bool down);
+    void set(Key key, bool down);  // a key this board lacks: ignored
     void release_all() { closed_.fill(0); }
     bool is_pressed(Key key) const;
+
+    // The board's matrix: none of the keys (clear), then each key on its scan line and return line.
+    void clear_places();
+    void place(Key key, std::uint8_t row, std::uint8_t column);
+    bool has(Key key) const { return place_[static_cast<std::size_t>(key)] != kNowhere; }
 
     // RL0-7 levels for the given SL0-3 value: a closed key on the selected row pulls its line low.
     std::uint8_t return_lines(std::uint8_t scan_lines) const;
 
 private:
+    static constexpr std::uint8_t kNowhere = 0xFF;
+    static std::array<std::uint8_t, kKeyCount> layout_places();
+
+    std::array<std::uint8_t, kKeyCount> place_ = layout_places();  // row * 8 + column, or kNowhere
     std::array<std::uint8_t, 8> closed_{};  // per row: bit n = key on RL n is down
     std::uint64_t now_ = 0;
 };

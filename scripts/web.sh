@@ -31,12 +31,13 @@ fi
 export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
 
 # The firmware the page carries, assembled by the native build: only its generated texts (the
-# monitor ROM and map, the thesis and master images and maps), which wait for asm85 alone, not for
-# the native programs. A folder that has built alp85 has them already.
-if [ ! -f "$native/emu/program/embed_kMasterHex.cpp" ] || [ ! -f "$native/firmware/monitor/monitor_embed.cpp" ]; then
+# monitor ROM and map, the thesis and master images and maps) and the SDK-85 test program's ROM,
+# which wait for asm85 alone, not for the native programs. A folder that has built alp85 has them already.
+if [ ! -f "$native/emu/program/embed_kMasterHex.cpp" ] || [ ! -f "$native/firmware/monitor/monitor_embed.cpp" ] ||
+   [ ! -f "$native/firmware/sdk85/sdk85test.bin" ]; then
   echo "web: assembling the firmware the page carries with asm85 (native build in $native)"
   [ -f "$native/CMakeCache.txt" ] || cmake -S . -B "$native" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON >/dev/null
-  cmake --build "$native" --target alp85_firmware_text monitor_embed
+  cmake --build "$native" --target alp85_firmware_text monitor_embed firmware_sdk85test
 fi
 
 launcher=()

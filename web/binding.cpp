@@ -7,6 +7,7 @@
 #include <emscripten/val.h>
 
 #include <array>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -24,6 +25,7 @@
 #include "emu/front/toolpath.h"
 #include "emu/front/views.h"
 #include "emu/program/firmware.h"
+#include "emu/program/rom_image.h"
 #include "emu/script/session.h"
 
 namespace alp85::web {
@@ -36,10 +38,15 @@ using front::HostClock;
 // the firmware sources the editor's INCLUDEs reach are packed under /src (web/CMakeLists.txt).
 const std::filesystem::path kWork = "/work";
 constexpr std::uint64_t kSamplePeriod = board::tstates_from_ms(1);  // the window's toolpath clock
+// The project's own SDK-85 test program (firmware/sdk85/sdk85test.asm, as the native build
+// assembled it): the ROM a board whose ROM is the user's runs until the user loads one.
+const std::filesystem::path kTestRom = "/src/sdk85/sdk85test.bin";
 
-script::SessionOptions options() {
+// The board by its name (the page's ?board=), the default one for a name there is none of.
+script::SessionOptions options(const std::string& board) {
     script::SessionOptions o;
     o.monitor_rom = [] { return firmware::monitor(); };
+    if (const auto* b = script::Session::find_board(board)) o.board = b;
     return o;
 }
 
@@ -52,11 +59,23 @@ constexpr std::size_t kSnapT = 0, kSnapPc = 1, kSnapRunning = 2, kSnapStops = 3,
                       kSnapDigits = 5, kSnapAxes = 13, kSnapPathSize = 25, kSnapIdeal = 26, kSnapLog = 31,
                       kSnapHalted = 32, kSnapSize = 33;
 
+// The boards there are, for the page's selector: [name, title], the default first.
+val boards() {
+    val out = val::array();
+    for (const front::BoardChoice& b : front::board_choices()) {
+        val o = val::array();
+        o.call<void>("push", std::string(b.name));
+        o.call<void>("push", std::string(b.title));
+        out.call<void>("push", o);
+    }
+    return out;
+}
+
 }  // namespace
 
 class Board {
 public:
-    Board() : session_(options()) {
+    explicit Board(const std::string& board) : session_(options(board)) {
         std::filesystem::create_directories(kWork);
         session_.debugger().listen([this](const debug::Event& e) {
             if (!e.text.empty()) log_.push_back(e.text);
@@ -76,6 +95,30 @@ public:
         start();
         return {};
     }
+
+    // The board's name and title, and whether its ROM is the user's (no monitor built in: the page
+    // offers Load ROM... and runs the test program until then).
+    std::string name() const { return std::string(session_.board().name); }
+    std::string title() const { return std::string(session_.board().title); }
+    bool user_rom() const { return &session_.board() != &script::Session::default_board() && front::monitor_rom(session_); }
+    bool has_tool() const { return front::has_tool(session_); }
+    int digits() const { return static_cast<int>(front::display_digits(session_)); }
+
+    // Load ROM...: the user's file (a .bin, .hex or source, by its name's extension) checked by the
+    // ROM loader as --rom is (emu/program/rom_image.h), then put in the board's ROM through the
+    // session, RESET, and the board runs. The loader's refusal is returned for the page to show;
+    // the board is then as it was.
+    std::string load_rom(const std::string& file_name, const std::string& bytes) {
+        const std::filesystem::path file = kWork / "rom" / std::filesystem::path(file_name).filename();
+        std::filesystem::create_directories(file.parent_path());
+        {
+            std::ofstream out(file, std::ios::binary | std::ios::trunc);
+            out << bytes;
+        }
+        return boot_rom(file);
+    }
+    // The test program built into the page, as the board boots by default.
+    std::string boot_test_rom() { return boot_rom(kTestRom); }
 
     std::string reset() {
         const auto o = session_.reset();
@@ -117,36 +160,39 @@ public:
     // A board key by its name (find_pad_key: "0"-"F", "EXEC", "NEXT", "RESET", "VECT", ...), down
     // or up, or a PC key by the key map's name (KeyboardEvent.key: "Enter", "a", "Escape").
     bool key(const std::string& name, bool down) {
-        const auto k = front::find_pad_key(name);
+        const auto k = front::find_pad_key(name, session_);
         if (!k) return false;
         press(*k, down);
         return true;
     }
     std::string pc_key(const std::string& pc_name, bool down) {
-        const auto k = front::pad_key_for_pc(pc_name);
+        const auto k = front::pad_key_for_pc(pc_name, session_);
         if (!k) return {};
         press(*k, down);
-        return pad_name(*k);
+        for (const front::KeypadKey& d : front::keypad_view(session_))
+            if (d.key.pad == k->pad && d.key.row == k->row && d.key.col == k->col) return std::string(d.name);
+        return {};
     }
 
-    // The keypad as the window lays it out: name, caption, PC key, row, column.
+    // The keypad as the window lays it out, from the board's description (front::keypad_view):
+    // name, caption, PC key, row, column, function key.
     val keypad() const {
         val out = val::array();
-        for (const front::PadKey& k : front::pad_keys()) {
+        for (const front::KeypadKey& k : front::keypad_view(session_)) {
             val o = val::object();
-            o.set("name", pad_name(k));
-            o.set("cap", std::string(front::cap_label(k)));
-            o.set("pc", std::string(front::pc_key_label(k)));
-            o.set("row", k.row);
-            o.set("col", k.col);
-            o.set("fn", k.pad != Button::Matrix || static_cast<int>(k.key) >= static_cast<int>(periph::Key::Exec));
+            o.set("name", std::string(k.name));
+            o.set("cap", std::string(k.cap));
+            o.set("pc", std::string(k.pc));
+            o.set("row", k.key.row);
+            o.set("col", k.key.col);
+            o.set("fn", k.fn);
             out.call<void>("push", o);
         }
         return out;
     }
     val key_map() const {
         val out = val::array();
-        for (const front::KeyMapRow& r : front::key_map_rows(false)) {
+        for (const front::KeyMapRow& r : front::key_map_rows(false, session_)) {
             if (r.keys.find("drag") != std::string_view::npos || r.keys.find("wheel") != std::string_view::npos ||
                 r.keys.find("Home") != std::string_view::npos || r.keys.find("End") != std::string_view::npos)
                 continue;  // the window's table view; the page has its own
@@ -313,10 +359,25 @@ public:
     }
 
 private:
-    static std::string pad_name(const front::PadKey& k) {
-        if (k.pad == Button::Reset) return "RESET";
-        if (k.pad == Button::Vect) return "VECT";
-        return std::string(periph::Keypad::info(k.key).name);
+    std::string boot_rom(const std::filesystem::path& file) {
+        const auto place = front::monitor_rom(session_);
+        if (!place) return "this board has no ROM to load";
+        try {
+            read_rom_image(file, RomSpec{place->base, place->size});
+        } catch (const LoadError& e) {
+            return e.what();
+        }
+        std::string ext = file.extension().string();
+        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        pause();
+        script::Session::Boot b;
+        b.monitor = false;
+        b.images.push_back({file, ext == ".bin" || ext == ".rom" ? std::optional<std::uint16_t>(place->base) : std::nullopt});
+        const auto o = session_.boot(b);
+        path_.clear();
+        after_load();
+        start();
+        return o.status == script::Session::Status::Ok ? std::string() : o.message;
     }
     void press(const front::PadKey& k, bool down) {
         if (down) presser_.down(k, session_);
@@ -352,7 +413,14 @@ private:
 EMSCRIPTEN_BINDINGS(alp85) {
     using alp85::web::Board;
     emscripten::class_<Board>("Board")
-        .constructor<>()
+        .constructor<std::string>()
+        .function("name", &Board::name)
+        .function("title", &Board::title)
+        .function("userRom", &Board::user_rom)
+        .function("hasTool", &Board::has_tool)
+        .function("digits", &Board::digits)
+        .function("loadRom", &Board::load_rom)
+        .function("bootTestRom", &Board::boot_test_rom)
         .function("boot", &Board::boot)
         .function("reset", &Board::reset)
         .function("start", &Board::start)
@@ -374,4 +442,5 @@ EMSCRIPTEN_BINDINGS(alp85) {
         .function("save", &Board::save)
         .function("restore", &Board::restore)
         .function("takeLog", &Board::take_log);
+    emscripten::function("boards", &alp85::web::boards);
 }

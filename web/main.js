@@ -10,15 +10,33 @@ const CLOCK_HZ = 3072000;
 const FRAME_BUDGET_S = 0.010, UNPACED_BUDGET_S = 0.014;
 
 const mod = await createAlp85();
-const board = new mod.Board();
+// The board the URL asks for (?board=sdk85; the default board without one, or for a name there is
+// none of); the selector loads the page again with another.
+const board = new mod.Board(new URLSearchParams(location.search).get('board') ?? '');
+for (const [name, title] of mod.boards()) {
+  const o = document.createElement('option');
+  o.value = name;
+  o.textContent = title;
+  o.selected = name === board.name();
+  $('board-choice').appendChild(o);
+}
+$('board-choice').addEventListener('change', (e) => { location.search = `?board=${encodeURIComponent(e.target.value)}`; });
+document.title = `ALP85 — ${board.title()}`;
+// What the page shows of a board is what its description has: the machine tool's views only with
+// the tool, the firmware choice for the board whose monitor is built in, Load ROM... for the rest.
+for (const id of ['tool', 'demo', 'gcode']) $(id).hidden = !board.hasTool();
+// The editor's demo and its INCLUDE are the built-in monitor's (the ALP 85's).
+for (const id of ['firmware-choice', 'editor']) $(id).hidden = board.userRom();
+$('rom-choice').hidden = !board.userRom();
 
-// ---- the display: eight seven-segment digits (a = bit 0 ... g = bit 6, dp = bit 7) -------------
+// ---- the display: the board's seven-segment digits (a = bit 0 ... g = bit 6, dp = bit 7) -------
 const SEGMENTS = [  // polygons in a 44 x 72 box, a b c d e f g, then the dot
   '8,4 36,4 32,9 12,9', '37,6 37,34 33,32 33,10', '37,38 37,66 33,62 33,40', '8,68 36,68 32,63 12,63',
   '7,38 7,66 11,62 11,40', '7,6 7,34 11,32 11,10', '9,36 13,33 31,33 35,36 31,39 13,39',
 ];
 const digits = [];
-for (let i = 0; i < 8; i++) {
+const DIGITS = board.digits();
+for (let i = 0; i < DIGITS; i++) {
   const svg = document.createElementNS('http://www.w3.org/2000/svg', 'svg');
   svg.setAttribute('viewBox', '0 0 44 72');
   const segs = SEGMENTS.map((pts) => {
@@ -39,11 +57,11 @@ for (let i = 0; i < 8; i++) {
 const SNAP = { t: 0, pc: 1, running: 2, stops: 3, displayChanges: 4, digits: 5, axes: 13, pathSize: 25, ideal: 26, log: 31, halted: 32 };
 const S = new Float64Array(33);
 let shownChanges = -1;
-const shown = new Array(8).fill(-1);
+const shown = new Array(DIGITS).fill(-1);
 function drawDisplay() {  // only when the segments changed
   if (S[SNAP.displayChanges] === shownChanges) return;
   shownChanges = S[SNAP.displayChanges];
-  for (let i = 0; i < 8; i++) {
+  for (let i = 0; i < DIGITS; i++) {
     const byte = S[SNAP.digits + i];
     if (byte === shown[i]) continue;
     const was = shown[i] < 0 ? ~byte : shown[i];
@@ -55,9 +73,11 @@ function drawDisplay() {  // only when the segments changed
   if (d.dataset.text !== text) { d.dataset.text = text; d.setAttribute('aria-label', `display: ${text}`); }
 }
 
-// ---- the keypad, laid out and captioned as the window's; the PC keys of its key map ------------
+// ---- the keypad, laid out and captioned as the window's (the board's description); its PC keys -
 const keyButtons = new Map();
-for (const k of board.keypad()) {
+const pad = board.keypad();
+$('keypad').style.gridTemplateColumns = `repeat(${Math.max(...pad.map((k) => k.col)) + 1}, 62px)`;  // as the description places them
+for (const k of pad) {
   const b = document.createElement('button');
   b.type = 'button';
   b.dataset.key = k.name;
@@ -378,6 +398,21 @@ function boot(name) {
   board.setSpeed(speed);
 }
 $('firmware').addEventListener('change', (e) => boot(e.target.value));
+// Load ROM...: the user's file, checked by the board's ROM loader (as alp85's --rom); its refusal
+// is shown beside the button, and the board then runs what it ran before.
+function romLoaded(what, err) {
+  $('rom-msg').textContent = err ? `ROM ${what}: ${err}` : `ROM ${what}: loaded, RESET`;
+  $('rom-msg').className = err ? 'error' : '';
+  log([$('rom-msg').textContent]);
+  resetPath();
+  board.setSpeed(speed);
+}
+$('rom').addEventListener('change', async (e) => {
+  const f = e.target.files[0];
+  if (!f) return;
+  romLoaded(f.name, board.loadRom(f.name, new Uint8Array(await f.arrayBuffer())));
+  e.target.value = '';
+});
 
 // ---- snapshots: the file alp85 save writes, downloaded and picked ------------------------------
 $('save').addEventListener('click', () => {
@@ -502,6 +537,7 @@ $('demo-next').addEventListener('click', async () => {
 });
 showDemo();
 
-boot('thesis-fixed');
+if (board.userRom()) romLoaded('the SDK-85 test program (firmware/sdk85/sdk85test.asm)', board.bootTestRom());
+else boot('thesis-fixed');
 window.alp85 = { board, ready: true, ticks: 0, frames: 0, late: 0, t: 0, at: 0, pathPoints: () => pathLen / 2 };
 tick();

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "emu/board/snapshot_file.h"
 #include "peripherals/seven_segment.h"
@@ -63,17 +64,27 @@ private:
     }
 };
 
-// A chip on the I/O bus as board::kIoMap declares it: the chip sees the register offset, and a
-// write may move the chip's next event, so the batch ends there and the scheduler looks again.
-// `after_write` lets the board follow pins a write may change (the 8155's port A drives the tool).
-template <class Chip>
-class ChipPorts final : public IoDevice {
+// A chip as its board's description decodes it, in I/O or memory space: the chip sees as its
+// register the address lines the description selects, and a write may move the chip's next event,
+// so the batch ends there and the scheduler looks again.
+class Machine::Decoder : public IoDevice, public MemoryDevice {
 public:
-    ChipPorts(Chip& chip, I8085& cpu, const board::IoRegion& region, std::function<void(std::uint64_t)> after_write = {})
-        : chip_(chip), cpu_(cpu), region_(region), after_write_(std::move(after_write)) {}
-    std::uint8_t in(std::uint8_t port, std::uint64_t t) override { return chip_.read(region_.offset(port), t); }
-    void out(std::uint8_t port, std::uint8_t value, std::uint64_t t) override {
-        chip_.write(region_.offset(port), value, t);
+    explicit Decoder(const board::DeviceRegion& region) : region(region) {}
+    const board::DeviceRegion& region;
+};
+
+namespace {
+// `after_write` lets the board follow pins a write may change (the 8155's port A drives the tool).
+template <class Chip, class Base>
+class ChipDecoder final : public Base {
+public:
+    ChipDecoder(Chip& chip, I8085& cpu, const board::DeviceRegion& region, std::function<void(std::uint64_t)> after_write = {})
+        : Base(region), chip_(chip), cpu_(cpu), after_write_(std::move(after_write)) {}
+    std::uint8_t in(std::uint8_t port, std::uint64_t t) override { return chip_.read(this->region.offset(port), t); }
+    void out(std::uint8_t port, std::uint8_t value, std::uint64_t t) override { write(port, value, t); }
+    std::uint8_t read(std::uint16_t addr, std::uint64_t t) override { return chip_.read(this->region.offset(addr), t); }
+    void write(std::uint16_t addr, std::uint8_t value, std::uint64_t t) override {
+        chip_.write(this->region.offset(addr), value, t);
         if (after_write_) after_write_(t);
         cpu_.stop_at(t);
     }
@@ -81,9 +92,11 @@ public:
 private:
     Chip& chip_;
     I8085& cpu_;
-    const board::IoRegion& region_;
     std::function<void(std::uint64_t)> after_write_;
 };
+
+constexpr bool chip_ram(board::Memory id) { return id == board::Memory::Ram8155 || id == board::Memory::Ram8155Expansion; }
+}  // namespace
 
 Machine::Machine() : Machine(Options{}) {}
 
@@ -92,47 +105,55 @@ Machine::Machine(Options options)
       cpu_(bus_, options.cpu),
       tool_(board::kCpuHz),
       hooks_(std::make_unique<Hooks>()) {
+    const board::Board& b = *options_.board;
+    if (b.clock.cpu_hz() != board::kCpuHz)
+        throw std::invalid_argument(fmt::format("board {}: the 8085 must run at {} Hz", b.name, board::kCpuHz));
+    options_.machine_tool = options_.machine_tool && !b.tool.empty();
     // Erased EPROMs read FFH (every cell charged); RAM powers up as zeros here (the real parts
     // are unpredictable, and a deterministic machine needs some fixed value).
-    monitor_.fill(0xFF);
-    user_.fill(0xFF);
-    expansion_.fill(0xFF);
-    map_.assign(board::kMemoryMap.begin(), board::kMemoryMap.end());
+    stores_.resize(b.memory.size());
+    for (std::size_t i = 0; i < b.memory.size(); ++i) {
+        const board::MemoryRegion& r = b.memory[i];
+        if (!chip_ram(r.id)) stores_[i].assign(r.size, r.kind == board::MemoryKind::Rom ? 0xFF : 0x00);
+    }
     wire();
-    set_expansion_eprom(options.expansion_eprom);
+    if (options.expansion_eprom) set_option("expansion", true);
+    options_.expansion_eprom = option("expansion");
     reset();
 }
 
 Machine::~Machine() = default;
 
 void Machine::wire() {
-    // Memory, from the one map.
-    for (const auto& r : board::kMemoryMap) {
-        std::span<std::uint8_t> s = storage(r.id);
-        if (r.kind == board::MemoryKind::Rom)
-            bus_.map_rom(r.base, r.size, s.data());
-        else
-            bus_.map_ram(r.base, r.size, s.data());
-    }
+    const board::Board& b = *options_.board;
+    // A second 8155, where the board has a place for one: a part like the others, decoded while fitted.
+    for (const board::DeviceRegion& d : b.devices)
+        if (d.device == board::Device::Rio8155 && d.unit == 1 && !rio2_) rio2_ = std::make_unique<I8155>("8155b", "RIO2");
     // The parts, in the order they are advanced, reset and saved.
     parts_ = {&rio_, &kdc_, &keypad_};
+    if (rio2_) parts_.push_back(rio2_.get());
     if (options_.machine_tool) parts_.push_back(&tool_);
     tool_.set_model(options_.motor);
-    for (const auto& r : board::kIoMap) {
+    for (const board::DeviceRegion& r : b.devices) {
+        const auto make = [&]<class Chip>(Chip& chip, std::function<void(std::uint64_t)> after = {}) {
+            decoders_.push_back(std::make_unique<ChipDecoder<Chip, Decoder>>(chip, cpu_, r, std::move(after)));
+        };
         switch (r.device) {
-            case board::Device::Kdc8279: chip_ports_.push_back(std::make_unique<ChipPorts<periph::I8279>>(kdc_, cpu_, r)); break;
+            case board::Device::Kdc8279: make(kdc_); break;
             case board::Device::Rio8155:
-                chip_ports_.push_back(
-                    std::make_unique<ChipPorts<periph::I8155>>(rio_, cpu_, r, [this](std::uint64_t t) {
+                if (r.unit == 0)
+                    make(rio_, [this](std::uint64_t t) {
                         drive_tool(t);
                         probe_look(t);
-                    }));
+                    });
+                else
+                    make(*rio2_);
                 break;
         }
-        bus_.map_io(r.first, r.last, *chip_ports_.back());
     }
-    // Interrupt wiring, from board::kInterruptWiring (the keys are applied in apply()).
-    for (const board::Wire& w : board::kInterruptWiring) {
+    fit({}, true);  // everything that is not an option
+    // Interrupt wiring, from the description (the keys are applied in apply()).
+    for (const board::Wire& w : b.wiring) {
         const board::CpuPin pin = w.pin;
         switch (w.source) {
             case board::Source::Irq8279: kdc_.on_irq([this, pin](bool level, std::uint64_t t) { drive(pin, level, t); }); break;
@@ -143,32 +164,131 @@ void Machine::wire() {
             case board::Source::ResetKey: break;
         }
     }
-    // SHIFT and CNTL/STB are grounded on the ALP 85 (docs/peripherals.md): key codes carry 0 there.
-    kdc_.set_shift(false, 0);
-    kdc_.set_cntl_stb(false, 0);
+    // SHIFT and CNTL/STB: grounded on the ALP 85 (docs/peripherals.md), so key codes carry 0 there.
+    kdc_.set_shift(b.shift_cntl_high, 0);
+    kdc_.set_cntl_stb(b.shift_cntl_high, 0);
+    keypad_.clear_places();
+    for (const board::BoardKey& k : b.keys)
+        if (k.wire == board::KeyWire::Matrix) keypad_.place(k.key, k.scan, k.ret);
     kdc_.set_return_lines_source([this](std::uint8_t sl) { return keypad_.return_lines(sl); });
-    rio_.set_input_callback([this](I8155::Port port, std::uint64_t now) -> std::uint8_t {
-        if (port == I8155::Port::B) return sense_tool(now);
-        return port == I8155::Port::C ? board::kUndrivenPortC : board::kUndrivenPortAB;
+    const auto undriven = [ab = b.undriven_port_ab, c = b.undriven_port_c](I8155::Port port) {
+        return port == I8155::Port::C ? c : ab;
+    };
+    rio_.set_input_callback([this, undriven](I8155::Port port, std::uint64_t now) -> std::uint8_t {
+        if (port == I8155::Port::B && options_.machine_tool) return sense_tool(now);
+        return undriven(port);
     });
+    if (rio2_) rio2_->set_input_callback([undriven](I8155::Port port, std::uint64_t) { return undriven(port); });
+}
+
+// Maps (or takes off the bus) every region and chip of one option; option {} is the board as built.
+void Machine::fit(std::string_view option, bool fitted) {
+    const board::Board& b = *options_.board;
+    for (std::size_t i = 0; i < b.memory.size(); ++i) {
+        const board::MemoryRegion& r = b.memory[i];
+        if (r.option != option) continue;
+        std::erase_if(map_, [&](const board::MemoryRegion& m) { return m.id == r.id; });
+        if (!fitted) {
+            bus_.unmap(r.base, r.span());
+            continue;
+        }
+        map_.push_back(r);
+        std::uint8_t* data = chip_ram(r.id) ? rio_unit(r.id == board::Memory::Ram8155 ? 0 : 1).ram().data() : stores_[i].data();
+        for (std::uint32_t at = r.base; at < r.base + r.span(); at += r.size) {  // the decoder's mirrors
+            if (r.kind == board::MemoryKind::Rom)
+                bus_.map_rom(at, r.size, data);
+            else
+                bus_.map_ram(at, r.size, data);
+        }
+    }
+    for (const auto& d : decoders_) {
+        const board::DeviceRegion& r = d->region;
+        if (r.option != option) continue;
+        if (r.space == board::Space::Io) {
+            const auto first = static_cast<std::uint8_t>(r.first), last = static_cast<std::uint8_t>(r.last);
+            if (fitted)
+                bus_.map_io(first, last, *d);
+            else
+                bus_.unmap_io(first, last);
+        } else if (fitted) {
+            bus_.map_device(r.first, r.last - r.first + 1u, *d);
+        } else {
+            bus_.unmap(r.first, r.last - r.first + 1u);
+        }
+    }
+}
+
+bool Machine::set_option(std::string_view name, bool fitted) {
+    if (!board::has_option(*options_.board, name)) return false;
+    std::erase(fitted_, name);
+    if (fitted) fitted_.push_back(name);
+    fit(name, fitted);
+    if (name == "expansion") options_.expansion_eprom = fitted;
+    return true;
+}
+
+bool Machine::option(std::string_view name) const { return std::find(fitted_.begin(), fitted_.end(), name) != fitted_.end(); }
+
+std::string Machine::describe_board() const {
+    const board::Board& b = *options_.board;
+    std::string out = fmt::format("board {}: {}, 8085 at {} Hz (crystal {} Hz)\n", b.name, b.title, b.clock.cpu_hz(),
+                                  b.clock.crystal_hz);
+    out += "memory:\n";
+    for (const board::MemoryRegion& r : map_) {
+        out += fmt::format("  {:04X}H-{:04X}H  {} {:<10} {}", r.base, r.base + r.size - 1,
+                           r.kind == board::MemoryKind::Rom ? "ROM" : "RAM", r.name, r.part);
+        if (r.span() != r.size) out += fmt::format(" (mirrored through {:04X}H)", r.base + r.span() - 1);
+        out += '\n';
+    }
+    out += "devices:\n";
+    for (const board::DeviceRegion& d : device_map())
+        out += fmt::format("  {} {:0{}X}H-{:0{}X}H  {:<6} {}\n", d.space == board::Space::Io ? "I/O   " : "memory", d.first,
+                           d.space == board::Space::Io ? 2 : 4, d.last, d.space == board::Space::Io ? 2 : 4, d.name,
+                           d.registers);
+    out += "wiring:\n";
+    static constexpr std::array<std::string_view, 4> kSources{"8279 IRQ", "8155 TIMER OUT", "VECT INTR key", "RESET key"};
+    static constexpr std::array<std::string_view, 4> kPins{"RST 5.5", "TRAP", "RST 7.5", "RESET IN"};
+    for (const board::Wire& w : b.wiring)
+        out += fmt::format("  {} -> {}: {}\n", kSources[static_cast<std::size_t>(w.source)], kPins[static_cast<std::size_t>(w.pin)],
+                           w.why);
+    out += "keys:\n";
+    for (const board::BoardKey& k : b.keys) {
+        std::string cap(k.cap);
+        std::replace(cap.begin(), cap.end(), '\n', ' ');
+        if (k.wire == board::KeyWire::Matrix)
+            out += fmt::format("  {:<12} {:<5} SL{} RL{}\n", cap, k.name, k.scan, k.ret);
+        else
+            out += fmt::format("  {:<12} {:<5} {}\n", cap, k.name, k.wire == board::KeyWire::ResetIn ? "RESET IN" : "RST 7.5");
+    }
+    out += fmt::format("display: {} digits, segments a-g,dp on display RAM bits {}, lit at {}\n", b.display.digits,
+                       fmt::join(b.display.segment_bit, ","), b.display.active_low ? 0 : 1);
+    for (const board::BoardOption& o : b.options)
+        out += fmt::format("option {} ({}): {}\n", o.name, option(o.name) ? "on" : "off", o.what);
+    return out;
+}
+
+std::vector<board::DeviceRegion> Machine::device_map() const {
+    std::vector<board::DeviceRegion> out;
+    for (const board::DeviceRegion& r : options_.board->devices)
+        if (r.option.empty() || option(r.option)) out.push_back(r);
+    return out;
 }
 
 namespace {
 constexpr I8155::Port port_of(std::uint8_t port) {
-    return board::io_region(board::Device::Rio8155).offset(port) == I8155::kPortA ? I8155::Port::A : I8155::Port::B;
+    return board::alp85::kDevices[1].offset(port) == I8155::kPortA ? I8155::Port::A : I8155::Port::B;
 }
-static_assert(port_of(board::kToolOutPort) == I8155::Port::A && port_of(board::kToolInPort) == I8155::Port::B,
+static_assert(board::alp85::kDevices[1].device == board::Device::Rio8155 &&
+                  port_of(board::alp85::kToolOutPort) == I8155::Port::A && port_of(board::alp85::kToolInPort) == I8155::Port::B,
               "the machine tool sits on the 8155's ports A (out) and B (in)");
-}  // namespace
 
-namespace {
 // The wiring table is in the order of the tool's axes: row a is axis a.
-constexpr bool wiring_in_axis_order() {
-    for (std::size_t a = 0; a < board::kToolWiring.size(); ++a)
-        if (static_cast<std::size_t>(board::kToolWiring[a].axis) != a) return false;
-    return true;
+constexpr bool wiring_in_axis_order(std::span<const board::AxisWiring> wiring) {
+    for (std::size_t a = 0; a < wiring.size(); ++a)
+        if (static_cast<std::size_t>(wiring[a].axis) != a) return false;
+    return wiring.size() == 3;
 }
-static_assert(wiring_in_axis_order(), "board::kToolWiring lists X, Y, Z in order");
+static_assert(wiring_in_axis_order(board::alp85::kToolWiring), "the tool's wiring lists X, Y, Z in order");
 
 constexpr std::uint8_t bit_mask(const board::ToolBit& b) { return static_cast<std::uint8_t>(1u << b.bit); }
 }  // namespace
@@ -182,7 +302,7 @@ void Machine::drive_tool(std::uint64_t t) {
     // sequencer last saw is its own state, so snapshots need nothing here.
     const auto& axes = tool_.state().axes;
     for (std::size_t a = 0; a < 3; ++a) {
-        const board::AxisWiring& w = board::kToolWiring[a];
+        const board::AxisWiring& w = options_.board->tool[a];
         const bool pulse = pins & bit_mask(w.pulse), direction = pins & bit_mask(w.direction);
         if (pulse != axes[a].sequencer.pulse || direction != axes[a].sequencer.direction)
             tool_.set_drive(static_cast<board::ToolAxis>(a), pulse, direction, t);
@@ -190,9 +310,9 @@ void Machine::drive_tool(std::uint64_t t) {
 }
 
 std::uint8_t Machine::sense_tool(std::uint64_t t) {
-    std::uint8_t pins = board::kUndrivenPortAB;  // bits the tool does not drive are pulled high
+    std::uint8_t pins = options_.board->undriven_port_ab;  // bits the tool does not drive are pulled high
     if (!options_.machine_tool) return pins;
-    for (const board::AxisWiring& w : board::kToolWiring) {
+    for (const board::AxisWiring& w : options_.board->tool) {
         const periph::MachineTool::Sense s = tool_.sense(w.axis, t);
         for (const auto& [b, level] : {std::pair{w.count, s.count}, {w.count_direction, s.direction}})
             pins = static_cast<std::uint8_t>(level ? pins | bit_mask(b) : pins & ~bit_mask(b));
@@ -315,30 +435,18 @@ periph::Part* Machine::find_part(std::string_view name) const {
 }
 
 std::span<std::uint8_t> Machine::storage(board::Memory id) {
-    switch (id) {
-        case board::Memory::MonitorEprom: return monitor_;
-        case board::Memory::UserEprom: return user_;
-        case board::Memory::Ram: return ram_;
-        case board::Memory::Ram8155: return rio_.ram();
-        case board::Memory::ExpansionEprom: return expansion_;
+    const board::Board& b = *options_.board;
+    for (std::size_t i = 0; i < b.memory.size(); ++i) {
+        if (b.memory[i].id != id) continue;
+        if (id == board::Memory::Ram8155) return rio_.ram();
+        if (id == board::Memory::Ram8155Expansion) return rio2_ ? rio2_->ram() : std::span<std::uint8_t>{};
+        return stores_[i];
     }
     return {};
 }
 
-void Machine::set_expansion_eprom(bool fitted) {
-    const board::MemoryRegion& r = board::kExpansionEprom;
-    options_.expansion_eprom = fitted;
-    std::erase_if(map_, [](const board::MemoryRegion& m) { return m.id == board::Memory::ExpansionEprom; });
-    if (fitted) {
-        map_.push_back(r);
-        bus_.map_rom(r.base, r.size, expansion_.data());
-    } else {
-        bus_.unmap(r.base, r.size);
-    }
-}
-
 namespace {
-void check_on_board(const std::vector<board::MemoryRegion>& map, std::uint16_t address, std::size_t size) {
+void check_on_board(const board::Board& board, const std::vector<board::MemoryRegion>& map, std::uint16_t address, std::size_t size) {
     for (std::size_t i = 0; i < size; ++i) {
         const std::uint32_t a = address + static_cast<std::uint32_t>(i);
         const bool mapped = a <= 0xFFFF && std::any_of(map.begin(), map.end(),
@@ -346,7 +454,7 @@ void check_on_board(const std::vector<board::MemoryRegion>& map, std::uint16_t a
                                                            return a >= r.base && a < r.base + r.size;
                                                        });
         if (!mapped)
-            throw std::out_of_range(fmt::format("address {:04X}H is not on the ALP 85 (no memory there)", a));
+            throw std::out_of_range(fmt::format("address {:04X}H is not on the {} (no memory there)", a, board.title));
     }
 }
 }  // namespace
@@ -357,7 +465,7 @@ void Machine::load(std::uint16_t address, std::span<const std::uint8_t> bytes) {
 
 void Machine::load(const std::vector<ImageSegment>& image) {
     // Check the whole image first, so a failed load changes nothing.
-    for (const ImageSegment& s : image) check_on_board(map_, s.address, s.bytes.size());
+    for (const ImageSegment& s : image) check_on_board(*options_.board, map_, s.address, s.bytes.size());
     for (const ImageSegment& s : image)
         for (std::size_t i = 0; i < s.bytes.size(); ++i) poke(static_cast<std::uint16_t>(s.address + i), s.bytes[i]);
 }
@@ -394,8 +502,13 @@ void Machine::apply(const InputEvent& e) {
             kdc_.inputs_changed(t);
             break;
         }
-        case InputKind::VectIntr: drive(board::pin_of(board::Source::VectIntrKey), e.level, std::max(e.at, now())); break;
-        case InputKind::Reset: drive(board::pin_of(board::Source::ResetKey), e.level, std::max(e.at, now())); break;
+        case InputKind::VectIntr:
+        case InputKind::Reset: {
+            const board::Source key = e.kind == InputKind::Reset ? board::Source::ResetKey : board::Source::VectIntrKey;
+            for (const board::Wire& w : options_.board->wiring)
+                if (w.source == key) drive(w.pin, e.level, std::max(e.at, now()));
+            break;
+        }
         case InputKind::Serial:
             if (serial_) serial_->type(static_cast<std::uint8_t>(e.code), std::max(e.at, now()));
             break;
@@ -480,14 +593,26 @@ void Machine::vect_intr_at(bool down, std::uint64_t at) { inputs_.schedule(at, I
 void Machine::reset_key_at(bool down, std::uint64_t at) { inputs_.schedule(at, InputKind::Reset, 0, down); }
 
 
-std::array<std::uint8_t, 8> Machine::display() const { return periph::seven_segment::read_digits(kdc_); }
+std::array<std::uint8_t, 8> Machine::display() const {
+    // The 8279's display RAM byte of each digit, through the board's segment wiring.
+    const board::DisplayWiring& w = options_.board->display;
+    const std::array<std::uint8_t, periph::seven_segment::kDigits> raw = periph::seven_segment::read_digits(kdc_);
+    std::array<std::uint8_t, 8> out{};
+    for (unsigned i = 0; i < w.digits; ++i) {
+        if (w.position[i] >= kdc_.display_digits()) continue;  // never scanned: dark
+        const auto bits = static_cast<std::uint8_t>(w.active_low ? ~raw[w.position[i]] : raw[w.position[i]]);
+        for (unsigned seg = 0; seg < 8; ++seg)
+            if (bits >> w.segment_bit[seg] & 1u) out[i] = static_cast<std::uint8_t>(out[i] | 1u << seg);
+    }
+    return out;
+}
 std::string Machine::display_text() const {
     const auto d = display();
-    return periph::seven_segment::to_text(d);
+    return periph::seven_segment::to_text(std::span(d).first(display_digits()));
 }
 std::array<std::string, 7> Machine::display_art() const {
     const auto d = display();
-    return periph::seven_segment::to_art(d);
+    return periph::seven_segment::to_art(std::span(d).first(display_digits()));
 }
 
 void Machine::update_hooks() {

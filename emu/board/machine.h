@@ -1,5 +1,5 @@
-// The ALP 85 as one object: CPU, bus, 8155, 8279, keypad and display wired as emu/board/board_map.h
-// declares, with a scheduler that runs the CPU in long batches up to the next peripheral event or
+// A board as one object: CPU, bus, 8155, 8279, keypad and display wired as its description
+// (emu/board/board_description.h; the ALP 85 unless Options::board names another) declares, with a scheduler that runs the CPU in long batches up to the next peripheral event or
 // outside input. The debugger and the script Session drive it, and the front ends drive those
 // (docs/architecture.md); none of them re-implements the machine.
 //
@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "emu/board/board_description.h"
 #include "emu/board/board_map.h"
 #include "emu/core/bus.h"
 #include "emu/core/i8085.h"
@@ -80,6 +81,7 @@ public:
         periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
         bool machine_tool = true;  // false: the board alone, port B undriven (benchmarks, tests)
         bool expansion_eprom = false;  // board::kExpansionEprom mapped (thesis 5.3's expansion)
+        const board::Board* board = &board::kAlp85;  // what the machine is: its bus, wiring, keys, display
     };
 
     // Why a run returned. (Breakpoints, watchpoints and the Stop a user sees are the debugger's,
@@ -106,11 +108,22 @@ public:
     // RAM or EPROM storage (false where nothing is mapped).
     std::uint8_t peek(std::uint16_t address) const { return bus_.peek(address); }
     bool poke(std::uint16_t address, std::uint8_t value);
+    // The storage of a region of this board's description (empty if it has none such).
     std::span<std::uint8_t> storage(board::Memory id);
-    // The memory regions on this board: board::kMemoryMap, plus the expansion EPROM when fitted.
+    // The memory regions fitted on this board: its description's, the optional ones when fitted.
     const std::vector<board::MemoryRegion>& memory_map() const { return map_; }
-    // Fits or removes the expansion EPROM (its contents are kept while it is out).
-    void set_expansion_eprom(bool fitted);
+    // The chips' decoding fitted on this board, in either space.
+    std::vector<board::DeviceRegion> device_map() const;
+    const board::Board& board() const { return *options_.board; }
+    // The board as its description says, as fitted now: memory map, devices, wiring, keys, display,
+    // options (the debugger's and the script's `info board`).
+    std::string describe_board() const;
+    // Fits or removes a board option (its regions and chips; a ROM's contents are kept while it is
+    // out). False: the board has no such option.
+    bool set_option(std::string_view name, bool fitted);
+    bool option(std::string_view name) const;
+    // The ALP 85's expansion EPROM (option "expansion").
+    void set_expansion_eprom(bool fitted) { set_option("expansion", fitted); }
     bool expansion_eprom() const { return options_.expansion_eprom; }
 
     // ---- control -----------------------------------------------------------------------------
@@ -152,7 +165,10 @@ public:
     const periph::Keypad& keypad() const { return keypad_; }
 
     // ---- display -----------------------------------------------------------------------------
-    std::array<std::uint8_t, 8> display() const;  // segment bytes, leftmost digit first
+    // Segment bytes (bit0 = a ... bit6 = g, bit7 = dp, 1 = lit), leftmost digit first; the board's
+    // display_digits() of them, the rest dark.
+    std::array<std::uint8_t, 8> display() const;
+    unsigned display_digits() const { return options_.board->display.digits; }
     std::string display_text() const;             // nearest character per digit, '.' for dp
     std::array<std::string, 7> display_art() const;
 
@@ -184,6 +200,8 @@ public:
     const Bus& bus() const { return bus_; }
     periph::I8155& rio() { return rio_; }  // the 8155 (RAM-I/O-timer)
     const periph::I8155& rio() const { return rio_; }
+    periph::I8155* rio2() { return rio2_.get(); }  // a second 8155, on a board that has a place for one
+
     periph::I8279& kdc() { return kdc_; }  // the 8279 (keyboard/display controller)
     const periph::I8279& kdc() const { return kdc_; }
     periph::MachineTool& tool() { return tool_; }  // the machine tool on the 8155's ports A and B
@@ -221,7 +239,11 @@ public:
 private:
     class Hooks;
 
+    class Decoder;
+
     void wire();
+    void fit(const std::string_view option, bool fitted);
+    periph::I8155& rio_unit(std::uint8_t unit) { return unit ? *rio2_ : rio_; }
     void drive(board::CpuPin pin, bool level, std::uint64_t t);
     void deliver_inputs(std::uint64_t now);
     void apply(const InputEvent& e);
@@ -247,14 +269,13 @@ private:
     void restore_sections(const std::vector<std::uint8_t>& bytes);
 
     Options options_;
-    std::array<std::uint8_t, 0x0800> monitor_{};
-    std::array<std::uint8_t, 0x0800> user_{};
-    std::array<std::uint8_t, 0x1000> ram_{};
-    std::array<std::uint8_t, board::kExpansionEprom.size> expansion_{};
+    std::vector<std::vector<std::uint8_t>> stores_;  // per region of the description (none for a chip's RAM)
+    std::vector<std::string_view> fitted_;          // the options fitted
     std::vector<board::MemoryRegion> map_;
     Bus bus_;
     I8085 cpu_;
     periph::I8155 rio_;
+    std::unique_ptr<periph::I8155> rio2_;
     periph::I8279 kdc_;
     periph::Keypad keypad_;
     periph::MachineTool tool_;
@@ -268,7 +289,7 @@ private:
     periph::SerialTerminal* serial_ = nullptr;
     std::vector<periph::Part*> parts_;
 
-    std::vector<std::unique_ptr<IoDevice>> chip_ports_;  // the chips' I/O decoding (board::kIoMap)
+    std::vector<std::unique_ptr<Decoder>> decoders_;  // the chips' decoding, per device of the description
     std::unique_ptr<Hooks> hooks_;
 };
 

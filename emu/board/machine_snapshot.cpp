@@ -85,10 +85,12 @@ std::vector<std::uint8_t> Machine::snapshot_bytes() const {
         cpu_.save(s.data);
         sections.push_back(std::move(s));
     }
-    sections.push_back(memory_section("MON ", monitor_));
-    sections.push_back(memory_section("USER", user_));
-    sections.push_back(memory_section("RAM ", ram_));
-    if (options_.expansion_eprom) sections.push_back(memory_section("EXP ", expansion_));
+    // The board's own memories, in the order of its description, the optional ones while fitted.
+    for (std::size_t i = 0; i < options_.board->memory.size(); ++i) {
+        const board::MemoryRegion& r = options_.board->memory[i];
+        if (!r.tag.empty() && (r.option.empty() || option(r.option)))
+            sections.push_back(memory_section(std::string(r.tag).c_str(), stores_[i]));
+    }
     for (const periph::Part* p : parts_) {
         Section s{std::string(p->tag()), {}};
         p->save(s.data);
@@ -104,16 +106,20 @@ void Machine::restore_sections(const std::vector<std::uint8_t>& bytes) {
         throw SnapshotError(std::string("snapshot was taken on an ") + (m.variant == Variant::I8080 ? "8080" : "8085") +
                             " machine, this one is an " + (options_.cpu == Variant::I8080 ? "8080" : "8085"));
     for (const Section& s : sections) {
-        const bool known = s.tag == "MACH" || s.tag == "CPU " || s.tag == "MON " || s.tag == "USER" || s.tag == "RAM " ||
-                           (s.tag == "EXP " && options_.expansion_eprom) ||
+        const bool known = s.tag == "MACH" || s.tag == "CPU " ||
+                           std::any_of(options_.board->memory.begin(), options_.board->memory.end(),
+                                       [&](const board::MemoryRegion& r) {
+                                           return !r.tag.empty() && r.tag == s.tag && (r.option.empty() || option(r.option));
+                                       }) ||
                            std::any_of(parts_.begin(), parts_.end(), [&](const periph::Part* p) { return p->tag() == s.tag; });
         if (!known) throw SnapshotError("snapshot has a part this machine lacks ('" + s.tag + "')");
     }
     cpu_.load(snapshot::find(sections, "CPU ").data);
-    load_memory(snapshot::find(sections, "MON "), monitor_, "monitor EPROM");
-    load_memory(snapshot::find(sections, "USER"), user_, "user EPROM");
-    load_memory(snapshot::find(sections, "RAM "), ram_, "RAM");
-    if (options_.expansion_eprom) load_memory(snapshot::find(sections, "EXP "), expansion_, "expansion EPROM");
+    for (std::size_t i = 0; i < options_.board->memory.size(); ++i) {
+        const board::MemoryRegion& r = options_.board->memory[i];
+        if (!r.tag.empty() && (r.option.empty() || option(r.option)))
+            load_memory(snapshot::find(sections, std::string(r.tag)), stores_[i], std::string(r.name).c_str());
+    }
     for (periph::Part* p : parts_) p->load(snapshot::find(sections, p->tag()).data);
     // The machine keeps its parts caught up with the CPU (sync_parts after every run), so a part
     // at another time is a damaged file; a timer far behind would also take ages to catch up.

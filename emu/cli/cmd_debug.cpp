@@ -114,6 +114,7 @@ void add_debug_command(CLI::App& app, int& status) {
         bool no_history = false;
         std::string out_dir;
         std::string motor = "physical";
+        std::string board = "alp85";
         std::string max_time = "1h";
     };
     auto args = std::make_shared<Args>();
@@ -126,6 +127,7 @@ void add_debug_command(CLI::App& app, int& status) {
     cmd->add_flag("--batch", args->batch, "End after --script (or after standard input); status 1 if a command failed");
     cmd->add_flag("--no-history", args->no_history, "No snapshots for reverse execution");
     add_motor_option(cmd, args->motor);
+    add_board_option(cmd, args->board);
     add_max_time_option(cmd, args->max_time);
     cmd->add_option("--out-dir", args->out_dir, "Folder for the files save, restore, record and plot write");
     cmd->footer(
@@ -165,6 +167,7 @@ void add_debug_command(CLI::App& app, int& status) {
         }
         script::SessionOptions o;
         o.max_time = *max_time;
+        o.board = board_of(args->board);
         o.base_dir = args->script.empty() ? std::filesystem::current_path()
                                           : std::filesystem::absolute(args->script).parent_path();
         if (firmware::have_monitor()) o.monitor_rom = firmware::monitor;
@@ -176,7 +179,7 @@ void add_debug_command(CLI::App& app, int& status) {
         }
         // The monitor first (the thesis firmware calls its routines), then the programs, then RESET.
         script::Session::Boot boot;
-        boot.monitor = firmware::have_monitor();
+        boot.monitor = firmware::have_monitor() && args->board == "alp85";  // the built-in monitor is the ALP 85's
         boot.motor = motor_model_of(args->motor);
         for (const std::string& f : args->firmware) {
             if (firmware::find(f)) {

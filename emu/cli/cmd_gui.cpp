@@ -1,6 +1,6 @@
 // alp85 gui [FIRMWARE...]: the ALP 85 and its machine tool in a window (emu/gui). Exit status: 0,
 // 1 the script (--script) or --expect-display failed or the screenshot cannot be written, 2 a
-// usage error or no display, 128 + the signal when SIGTERM or SIGINT closed it.
+// usage error (a --rom the ROM loader refuses) or no display, 128 + the signal when SIGTERM or SIGINT closed it.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +17,7 @@
 #include "emu/gui/app.h"
 #include "emu/gui/controls.h"
 #include "emu/gui/test_hooks.h"
+#include "emu/program/rom_image.h"
 
 namespace alp85::cli {
 namespace {
@@ -42,6 +43,7 @@ void add_gui_command(CLI::App& app, int& status) {
         gui::TestHookOptions hooks;
         std::vector<std::string> firmware;  // --firmware, added to the positional ones
         std::string motor = "physical";
+        std::string board = "alp85";
         std::string speed = "1";
         std::string serial;
         long frames = 0;
@@ -94,6 +96,10 @@ void add_gui_command(CLI::App& app, int& status) {
         ->check(CLI::IsMember({"0.1", "1", "10", "100", "max"}))
         ->capture_default_str();
     add_motor_option(cmd, args->motor);
+    add_board_option(cmd, args->board);
+    cmd->add_option("--rom", args->o.rom,
+                    "With --board sdk85: the monitor ROM at 0000H, your file: a .bin of 2048 bytes, a .hex or a source "
+                    "(docs/sdk85.md). The ALP 85's monitor is built in");
     cmd->add_option("--serial", args->serial,
                     "A serial terminal on SID/SOD at BAUD[,FRAME] (as alp85 run --serial: 9600, 1200,7E1) and its Terminal "
                     "pane: what SOD sends is shown, what is typed there goes to SID");
@@ -105,6 +111,7 @@ void add_gui_command(CLI::App& app, int& status) {
         "  alp85 gui --script scripts/demo/thesis.alp --speed max --screenshot gui.png\n"
         "  alp85 gui firmware/demo/echo85.asm --serial 9600   type R 7 0800 EXEC, then type in the Terminal pane\n"
         "  alp85 gui --signals PA0 PA1 X.A X.B --signals-ms 20   port A and a sequencer on a logic analyzer\n"
+        "  alp85 gui --board sdk85 --rom build/firmware/sdk85/sdk85test.hex   Intel's SDK-85 with a ROM of yours\n"
         "Without a display it exits with status 2; use `alp85 run` or `alp85 script` there.\n"
         "Exit status: 0, 1 the script or --expect-display failed or the screenshot cannot be written,\n"
         "2 a usage error (a bad number or --serial rate, a --screenshot that is an input) or no display; SIGTERM or\n"
@@ -140,6 +147,7 @@ void add_gui_command(CLI::App& app, int& status) {
         std::vector<NamedPath> inputs = {{args->o.script, "the script"}};
         for (const std::string& f : args->o.firmware)  // a file, not a built-in name
             if (std::error_code ec; std::filesystem::exists(f, ec)) inputs.push_back({f, "the firmware source"});
+        if (!args->o.rom.empty()) inputs.push_back({args->o.rom, "the ROM (--rom)"});
         if (refuse_output_clash("gui", inputs, {{args->o.screenshot, "--screenshot"}})) {
             return kUsageError;
         }
@@ -153,6 +161,25 @@ void add_gui_command(CLI::App& app, int& status) {
             }
         }
         args->o.motor = motor_model_of(args->motor);
+        args->o.board = args->board;
+        if (!args->o.rom.empty()) {  // refused before a window opens, by the loader every --rom goes through
+            const board::Board& b = *board_of(args->board);
+            const board::MemoryRegion* rom = nullptr;
+            for (const board::MemoryRegion& r : b.memory)
+                if (r.id == board::Memory::MonitorEprom) rom = &r;
+            if (&b == board::kBoards.front() || !rom) {
+                std::cerr << argument_error("alp85 gui", args->o.rom,
+                                            "--rom is for --board sdk85 (the ALP 85's monitor is built in; a program of "
+                                            "yours goes in as a positional argument)");
+                return kUsageError;
+            }
+            try {
+                read_rom_image(args->o.rom, RomSpec{rom->base, rom->size});
+            } catch (const LoadError& e) {
+                std::cerr << "alp85 gui: --rom: " << e.what() << '\n';
+                return kUsageError;
+            }
+        }
         if (!args->o.out_dir.empty()) {
             std::error_code ec;
             std::filesystem::create_directories(args->o.out_dir, ec);

@@ -87,6 +87,7 @@ void add_run_command(CLI::App& app, int& status) {
     struct Args {
         std::vector<std::string> programs, firmware;
         std::string keys, boot = "500ms", run_for = "1s", motor = "physical", vcd, serial, serial_gap;
+        std::string board = "alp85", rom;
         std::vector<std::string> pins;
         bool no_monitor = false, text = false;
     };
@@ -105,6 +106,10 @@ void add_run_command(CLI::App& app, int& status) {
                     "Firmware built into alp85 to load (thesis, thesis-fixed, master), with its symbols, or a program "
                     "file as the positional arguments take it; may be repeated");
     add_motor_option(cmd, args->motor);
+    add_board_option(cmd, args->board);
+    cmd->add_option("--rom", args->rom,
+                    "With --board sdk85: the monitor ROM image at 0000H, a .bin of 2048 bytes (your own copy of "
+                    "Intel's monitor, or a program of yours; docs/board.md). The ALP 85's monitor is built in");
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
     auto* vcd = add_output_option(cmd, outputs, "--vcd", args->vcd,
                                   "Record the board's pins from RESET to the end as a VCD file (GTKWave, PulseView; "
@@ -129,6 +134,7 @@ void add_run_command(CLI::App& app, int& status) {
         "  alp85 run --firmware thesis-fixed --keys \"R 7 0800 EXEC 0012\"   # the thesis's Z prompt, Z = 12\n"
         "  alp85 run --firmware thesis-fixed --keys \"R 7 0800 EXEC\" --vcd pins.vcd --pins 8155 8279\n"
         "  echo hello | alp85 run firmware/demo/echo85.asm --keys \"R 7 0800 EXEC\" --serial 9600   # prints hello\n"
+        "  alp85 run --board sdk85 --rom sdk85.bin --keys \"MEM 2 0 0 0 NEXT\"   # Intel's SDK-85 with your ROM copy\n"
         "Exit status: 0 success, 1 a program could not be placed or run, 2 a usage error or a bad\n"
         "argument (a program that is missing or does not assemble, a bad time, key, baud rate or frame).\n"
         "A character --serial receives with a framing or parity error is reported on standard error, not\n"
@@ -159,6 +165,20 @@ void add_run_command(CLI::App& app, int& status) {
         // With a serial line standard output is the line's; the report goes beside it.
         std::ostream& report = line ? std::cerr : std::cout;
         script::SessionOptions so;
+        so.board = board_of(args->board);
+        // The built-in monitor is the ALP 85's; another board's ROM is the user's (--rom).
+        if (args->board != "alp85") args->no_monitor = true;
+        if (!args->rom.empty()) {
+            std::string why = input_file_problem(args->rom);
+            if (why.empty() && args->board == "alp85")
+                why = "--rom is for --board sdk85 (the ALP 85's monitor is built in; a program of yours goes in as a positional argument)";
+            if (why.empty() && std::filesystem::path(args->rom).extension() != ".bin")
+                why = fmt::format("--rom {}: not a .bin ROM image (raw bytes, 2048 of them)", args->rom);
+            if (why.empty())
+                if (const auto size = std::filesystem::file_size(args->rom); size != 0x800)
+                    why = fmt::format("--rom {}: {} bytes; a monitor ROM image for 0000H-07FFH has 2048", args->rom, size);
+            if (!why.empty()) errors.push_back(argument_error(args->rom, 0, why));
+        }
         so.base_dir = "";  // paths as the user typed them
         so.out = &report;
         if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
@@ -273,6 +293,7 @@ void add_run_command(CLI::App& app, int& status) {
         };
         const auto steps = std::vector<std::function<Outcome()>>{
             [&] { return args->no_monitor ? Outcome{} : session.load_monitor(); },
+            [&] { return args->rom.empty() ? Outcome{} : session.load_image(args->rom, std::uint16_t{0x0000}); },
             [&] {
                 for (const std::string& f : args->firmware)
                     if (Outcome o = session.load_firmware(f); o.status != script::Session::Status::Ok) return o;
@@ -317,8 +338,8 @@ void add_run_command(CLI::App& app, int& status) {
             }
         report << fmt::format("{} simulated, PC={:04X}H\n", script::Session::format_time(session.now()),
                               session.reg(*cpu::description().find("PC")));
-        // Where the machine tool's tables are, after the display.
-        session.print_axes();
+        // Where the machine tool's tables are, after the display (a board with one).
+        if (!session.board().tool.empty()) session.print_axes();
         return 0;
     });
 }

@@ -42,6 +42,7 @@ void add_script_command(CLI::App& app, int& status) {
         bool verbose = false;
         std::string out_dir;
         std::string motor = "physical";
+        std::string board = "alp85";
         std::string max_time = "1h";
         unsigned jobs = 1;
     };
@@ -53,6 +54,7 @@ void add_script_command(CLI::App& app, int& status) {
     add_output_option(cmd, outputs, "--trace", args->trace, "Write every executed instruction as CSV");
     cmd->add_flag("-v,--verbose", args->verbose, "Echo each command with the simulated time");
     add_motor_option(cmd, args->motor);
+    add_board_option(cmd, args->board);
     add_max_time_option(cmd, args->max_time);
     cmd->add_option("-j,--jobs", args->jobs,
                     "Run up to N scripts at once (default 1); the output stays grouped per script, in file order")
@@ -79,6 +81,7 @@ void add_script_command(CLI::App& app, int& status) {
         o.err = &std::cerr;
         o.verbose = args->verbose;
         o.motor = motor_model_of(args->motor);
+        o.board = board_of(args->board);
         const auto max_time = max_time_of("alp85 script", args->max_time);
         if (!max_time) {
             return 2;

@@ -18,6 +18,10 @@
 
 #include "emu/core/i8085.h"
 
+namespace alp85::board {
+struct Board;
+}
+
 namespace alp85::cli {
 
 // The exit status of every usage error (an unknown option, a missing or malformed argument).
@@ -85,6 +89,11 @@ Variant variant_of(const std::string& cpu);
 // gives the model it names.
 CLI::Option* add_motor_option(CLI::App* cmd, std::string& motor);
 periph::MachineTool::MotorModel motor_model_of(const std::string& motor);
+
+// --board NAME (run, script, debug, gui, dap): the board to build, alp85 (the default) or sdk85;
+// an unknown name is a usage error listing the boards. board_of() gives the description it names.
+CLI::Option* add_board_option(CLI::App* cmd, std::string& board);
+const board::Board* board_of(const std::string& board);
 
 // --max-time TIME (script, debug): the machine time a session may run, "1h" by default (a number
 // with a unit: t, us, ms, s or h), into `text`; max_time_of() gives the T-states, or prints why

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "emu/cli/commands.h"
+#include "emu/board/board_map.h"
 #include "emu/util/input_file.h"
 #include "emu/script/parser.h"
 
@@ -107,6 +108,21 @@ CLI::Option* add_motor_option(CLI::App* cmd, std::string& motor) {
 
 periph::MachineTool::MotorModel motor_model_of(const std::string& motor) {
     return motor == "ideal" ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical;
+}
+
+CLI::Option* add_board_option(CLI::App* cmd, std::string& board) {
+    std::vector<std::string> names;
+    for (const board::Board* b : board::kBoards) names.emplace_back(b->name);
+    return cmd
+        ->add_option("--board", board,
+                     "The board to emulate: alp85 (the thesis machine) or sdk85 (Intel's SDK-85, docs/board.md)")
+        ->check(CLI::IsMember(names))
+        ->capture_default_str();
+}
+
+const board::Board* board_of(const std::string& board) {
+    const board::Board* b = board::find_board(board);
+    return b ? b : board::kBoards.front();
 }
 
 CLI::Option* add_max_time_option(CLI::App* cmd, std::string& text) {

@@ -85,6 +85,10 @@ void Bus::map_io(std::uint8_t first, std::uint8_t last, IoDevice& device) {
     for (unsigned p = first; p <= last; ++p) io_[p] = &device;
 }
 
+void Bus::unmap_io(std::uint8_t first, std::uint8_t last) {
+    for (unsigned p = first; p <= last; ++p) io_[p] = nullptr;
+}
+
 void Bus::write(std::uint16_t addr, std::uint8_t value, std::uint64_t tstate) {
     const unsigned page = addr >> kPageBits;
     switch (kind_[page]) {

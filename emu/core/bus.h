@@ -69,6 +69,7 @@ public:
     void map_device(std::uint32_t base, std::uint32_t size, MemoryDevice& device);
     void unmap(std::uint32_t base, std::uint32_t size);
     void map_io(std::uint8_t first, std::uint8_t last, IoDevice& device);
+    void unmap_io(std::uint8_t first, std::uint8_t last);  // those ports read FFH again
 
     PageKind page_kind(std::uint16_t addr) const { return kind_[addr >> kPageBits]; }
 

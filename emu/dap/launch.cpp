@@ -42,7 +42,10 @@ LaunchConfig parse_launch(const Json& args) {
         else if (value.is_string()) c.defines.emplace_back(name, value.get<std::string>());
         else throw RequestError(fmt::format("defines: '{}' must be a number or a string", name));
     }
-    c.monitor = opt_bool(args, "monitor").value_or(true);
+    c.board = opt_string(args, "board").value_or(std::string(script::Session::default_board().name));
+    if (!script::Session::find_board(c.board))
+        throw RequestError(fmt::format("argument 'board': no board '{}' ({})", c.board, script::Session::board_names()));
+    c.monitor = opt_bool(args, "monitor").value_or(c.board == script::Session::default_board().name);
     const std::string motor = opt_string(args, "motor").value_or("physical");
     if (motor != "ideal" && motor != "physical") throw RequestError("argument 'motor' must be \"ideal\" or \"physical\"");
     c.motor = motor == "ideal" ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical;

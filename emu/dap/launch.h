@@ -24,6 +24,7 @@ struct LaunchConfig {
     bool monitor = true;            // the monitor EPROM at 0000H; without it the program starts at
                                     // its END address (or its first byte)
     periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
+    std::string board = "alp85";    // the board to build (alp85, sdk85); another than the ALP 85 has no built-in monitor
     std::string keys;               // typed after the boot ("R 7 0800 EXEC 0012")
     std::uint64_t boot = 0;         // T-states from RESET to the first key (default 500 ms)
     std::string script;             // a command-language file run before the start

@@ -59,6 +59,7 @@ void Adapter::start_session() {
     run_ = {};
     script::SessionOptions so;
     so.base_dir = config_.cwd;
+    so.board = script::Session::find_board(config_.board);
     if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
     auto shell = std::make_unique<script::DebugShell>(so);
     shell->debugger().listen([this](const debug::Event& e) { on_debug_event(e); });

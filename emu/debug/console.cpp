@@ -108,7 +108,7 @@ std::vector<Console::CommandDef> Console::own_commands() {
         {"up", "", &Console::cmd_up, "up [N]: select the frame N (default 1) calls out, the caller's"},
         {"down", "do", &Console::cmd_down, "down [N]: select the frame N (default 1) calls in"},
         {"jump", "j", &Console::cmd_jump, "jump LOCATION: continue at LOCATION (the PC set there, then continue)"},
-        {"info", "i", &Console::cmd_info, "info registers|breakpoints|watchpoints|displays|display|PART (8155, 8279, ...)|axis [X|Y|Z]|line|frame|symbol ADDR"},
+        {"info", "i", &Console::cmd_info, "info registers|breakpoints|watchpoints|displays|display|board|PART (8155, 8279, ...)|axis [X|Y|Z]|line|frame|symbol ADDR"},
         {"timing", "", &Console::cmd_timing, "timing: the machine cycles of the next instruction as the 8085 data sheet draws them (IO/M, S1 S0, RD/WR, A15-A8, AD7-AD0; docs/signals.md)"},
         {"history", "", &Console::cmd_history, "history [N]: the last N instructions (default 10) with the registers each changed"},
         {"echo", "", &Console::cmd_echo, "echo TEXT: show TEXT (\\n a new line, \\t a tab, \\\\ a backslash); no new line of its own, as gdb's"},

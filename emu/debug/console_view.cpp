@@ -620,6 +620,7 @@ std::string Console::cmd_info(std::string_view a, int col) {
     if (what == "SYMBOL" || what == "SYM") return info_symbol(rest, wcol);
     if (what == "DISPLAYS") return info_displays();
     if (what == "DISPLAY") return info_display();
+    if (what == "BOARD") return d_.machine().describe_board();
     {
         std::vector<std::string> words;  // a part by its name: info 8155, info machine tool
         for (std::size_t i = 0; i < a.size();) {
@@ -635,8 +636,8 @@ std::string Console::cmd_info(std::string_view a, int col) {
                                               d_.history_snapshots(), d_.history_start());
     std::string parts;
     for (const periph::Part* p : d_.machine().parts()) parts += fmt::format("{}, ", p->name());
-    return error(col, what.empty() ? fmt::format("info what? registers, breakpoints, watchpoints, displays, display, {}axis, line, symbol, history", parts)
-                                   : fmt::format("no 'info {}' (registers, breakpoints, watchpoints, displays, display, {}axis, line, symbol, history)", a, parts));
+    return error(col, what.empty() ? fmt::format("info what? registers, breakpoints, watchpoints, displays, display, board, {}axis, line, symbol, history", parts)
+                                   : fmt::format("no 'info {}' (registers, breakpoints, watchpoints, displays, display, board, {}axis, line, symbol, history)", a, parts));
 }
 
 std::string Console::cmd_timing(std::string_view a, int col) {

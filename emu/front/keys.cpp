@@ -12,28 +12,19 @@ bool same(const PadKey& a, const PadKey& b) { return a.pad == b.pad && (a.pad !=
 
 void apply(const PadKey& k, bool down, std::uint64_t at, script::Session& s) { s.key(k.pad, k.key, down, at); }
 
-using periph::Key;
-constexpr std::array<PadKey, 26> kPad{{
-    {Button::Reset, Key::K0, 0, 0}, {Button::Vect, Key::K0, 0, 1}, {Button::Matrix, Key::R, 0, 2},
-    {Button::Matrix, Key::KC, 0, 3}, {Button::Matrix, Key::KD, 0, 4}, {Button::Matrix, Key::KE, 0, 5},
-    {Button::Matrix, Key::KF, 0, 6},
-    {Button::Matrix, Key::Reg, 1, 0}, {Button::Matrix, Key::Mem, 1, 1}, {Button::Matrix, Key::Go, 1, 2},
-    {Button::Matrix, Key::K8, 1, 3}, {Button::Matrix, Key::K9, 1, 4}, {Button::Matrix, Key::KA, 1, 5},
-    {Button::Matrix, Key::KB, 1, 6},
-    {Button::Matrix, Key::Step, 2, 0}, {Button::Matrix, Key::Prev, 2, 1}, {Button::Matrix, Key::Next, 2, 2},
-    {Button::Matrix, Key::K4, 2, 3}, {Button::Matrix, Key::K5, 2, 4}, {Button::Matrix, Key::K6, 2, 5},
-    {Button::Matrix, Key::K7, 2, 6},
-    {Button::Matrix, Key::Exec, 3, 2}, {Button::Matrix, Key::K0, 3, 3}, {Button::Matrix, Key::K1, 3, 4},
-    {Button::Matrix, Key::K2, 3, 5}, {Button::Matrix, Key::K3, 3, 6},
-}};
+// A key of the board's description as a button of the front panel.
+PadKey pad_of(const board::BoardKey& k) {
+    const Button b = k.wire == board::KeyWire::ResetIn    ? Button::Reset
+                     : k.wire == board::KeyWire::VectIntr ? Button::Vect
+                                                          : Button::Matrix;
+    return {b, k.wire == board::KeyWire::Matrix ? k.key : periph::Key::K0, k.panel_row, k.panel_col};
+}
 
-// The function keys on the PC (the hex keys are their own names); key_map_rows describes them.
-// The last two are the browser's names (KeyboardEvent.key) of Esc and Space.
-constexpr std::array<PcKey, 12> kPcKeys{{
-    {"Enter", "EXEC", "Enter"}, {"Space", "NEXT", "Space"}, {"Backspace", "PREV", "Bksp"},
-    {"R", "R", "R"}, {"G", "GO", "G"}, {"M", "MEM", "M"}, {"X", "REG", "X"}, {"S", "STEP", "S"},
-    {"Esc", "RESET", "Esc"}, {"V", "VECT", "V"}, {"Escape", "RESET", "Esc"}, {" ", "NEXT", "Space"},
-}};
+const board::BoardKey* described(const PadKey& k, const board::Board& b) {
+    for (const board::BoardKey& d : b.keys)
+        if (same(pad_of(d), k)) return &d;
+    return nullptr;
+}
 
 bool same_name(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
@@ -41,26 +32,80 @@ bool same_name(std::string_view a, std::string_view b) {
            });
 }
 
-}  // namespace
+std::vector<PadKey> pads_of(const board::Board& b) {
+    std::vector<PadKey> out;
+    for (const board::BoardKey& k : b.keys) out.push_back(pad_of(k));
+    return out;
+}
 
-std::span<const PadKey> pad_keys() { return kPad; }
-
-std::optional<PadKey> find_pad_key(std::string_view name) {
-    if (same_name(name, "RESET")) return kPad[0];
-    if (same_name(name, "VECT") || same_name(name, "VECT INTR") || same_name(name, "VECTINTR")) return kPad[1];
-    const auto key = periph::Keypad::find(name);
-    if (!key) return std::nullopt;
-    for (const PadKey& k : kPad)
-        if (k.pad == Button::Matrix && k.key == *key) return k;
+std::optional<PadKey> find_in(std::string_view name, const board::Board& b) {
+    if (same_name(name, "VECT INTR") || same_name(name, "VECTINTR")) name = "VECT";
+    for (const board::BoardKey& k : b.keys)
+        if (same_name(k.name, name)) return pad_of(k);
     return std::nullopt;
 }
 
-std::optional<PadKey> pad_key_for_pc(std::string_view pc_name) {
+std::optional<PadKey> for_pc_in(std::string_view pc_name, const board::Board& b) {
     if (pc_name.size() == 1 && std::isxdigit(static_cast<unsigned char>(pc_name[0])))
-        return find_pad_key(std::string(1, static_cast<char>(std::toupper(static_cast<unsigned char>(pc_name[0])))));
-    for (const PcKey& p : kPcKeys)
-        if (same_name(p.pc, pc_name)) return find_pad_key(p.pad);
+        return find_in(std::string(1, static_cast<char>(std::toupper(static_cast<unsigned char>(pc_name[0])))), b);
+    for (const board::BoardKey& k : b.keys)
+        for (std::string_view pc : k.pc)
+            if (!pc.empty() && same_name(pc, pc_name)) return pad_of(k);
     return std::nullopt;
+}
+
+std::string_view pc_label_in(const PadKey& k, const board::Board& b) {
+    const board::BoardKey* d = described(k, b);
+    return d ? d->pc_label : std::string_view{};
+}
+
+std::string_view cap_in(const PadKey& k, const board::Board& b) {
+    const board::BoardKey* d = described(k, b);
+    return d ? d->cap : std::string_view{};
+}
+
+const board::Board& default_board() { return script::Session::default_board(); }
+
+}  // namespace
+
+std::span<const PadKey> pad_keys() {
+    static const std::vector<PadKey> pads = pads_of(default_board());
+    return pads;
+}
+std::vector<PadKey> pad_keys(const script::Session& s) { return pads_of(s.board()); }
+
+std::optional<PadKey> find_pad_key(std::string_view name) { return find_in(name, default_board()); }
+std::optional<PadKey> find_pad_key(std::string_view name, const script::Session& s) { return find_in(name, s.board()); }
+
+std::optional<PadKey> pad_key_for_pc(std::string_view pc_name) { return for_pc_in(pc_name, default_board()); }
+std::optional<PadKey> pad_key_for_pc(std::string_view pc_name, const script::Session& s) {
+    return for_pc_in(pc_name, s.board());
+}
+
+namespace {
+// The mouse's rows of the key map, after the keys'.
+void mouse_rows(std::vector<KeyMapRow>& rows, bool debug, bool table) {
+    if (!debug && table) {
+        rows.push_back({"wheel on the table", "zoom about the pointer"});
+        rows.push_back({"right or middle drag", "pan the table view"});
+        rows.push_back({"Home, double click", "frame the toolpath"});
+        rows.push_back({"End", "back to the automatic fit"});
+    } else if (debug) {
+        rows.push_back({"click a source line", "set or clear a breakpoint"});
+    }
+    rows.push_back({"F1, ?", "show or hide this key map"});
+}
+
+}  // namespace
+
+std::vector<KeyMapRow> key_map_rows(bool debug, const script::Session& s) {
+    if (&s.board() == &default_board()) return key_map_rows(debug);
+    std::vector<KeyMapRow> rows = {{"0-9, A-F", "the hex keys"}};
+    for (const KeypadKey& k : keypad_view(s))
+        if (k.fn) rows.push_back({k.pc, k.cap});  // a caption of two lines ("VECT\nINTR") as it is on the cap
+    rows.push_back({"click a key", "press it (held at least 30 ms of machine time)"});
+    mouse_rows(rows, debug, !s.board().tool.empty());
+    return rows;
 }
 
 std::vector<KeyMapRow> key_map_rows(bool debug) {
@@ -78,34 +123,24 @@ std::vector<KeyMapRow> key_map_rows(bool debug) {
         {"V", "VECT INTR (RST 7.5)"},
         {"click a key", "press it (held at least 30 ms of machine time)"},
     };
-    if (!debug) {
-        rows.push_back({"wheel on the table", "zoom about the pointer"});
-        rows.push_back({"right or middle drag", "pan the table view"});
-        rows.push_back({"Home, double click", "frame the toolpath"});
-        rows.push_back({"End", "back to the automatic fit"});
-    } else {
-        rows.push_back({"click a source line", "set or clear a breakpoint"});
-    }
-    rows.push_back({"F1, ?", "show or hide this key map"});
+    mouse_rows(rows, debug, true);
     return rows;
 }
 
-std::string_view pc_key_label(const PadKey& k) {
-    for (const PcKey& p : kPcKeys)
-        if (const auto pad = find_pad_key(p.pad); pad && pad->pad == k.pad && (k.pad != Button::Matrix || pad->key == k.key))
-            return p.label;
-    return periph::Keypad::info(k.key).name;  // the hex digit itself
-}
+std::string_view pc_key_label(const PadKey& k) { return pc_label_in(k, default_board()); }
+std::string_view pc_key_label(const PadKey& k, const script::Session& s) { return pc_label_in(k, s.board()); }
 
-std::string_view cap_label(const PadKey& k) {
-    if (k.pad == Button::Reset) return "RESET";
-    if (k.pad == Button::Vect) return "VECT\nINTR";
-    switch (k.key) {
-        case periph::Key::Mem: return "SUBST\nMEM";
-        case periph::Key::Reg: return "EXAM\nREG";
-        case periph::Key::Step: return "SINGLE\nSTEP";
-        default: return periph::Keypad::info(k.key).label;
+std::string_view cap_label(const PadKey& k) { return cap_in(k, default_board()); }
+std::string_view cap_label(const PadKey& k, const script::Session& s) { return cap_in(k, s.board()); }
+
+std::vector<KeypadKey> keypad_view(const script::Session& s) {
+    std::vector<KeypadKey> out;
+    for (const board::BoardKey& k : s.board().keys) {
+        const PadKey p = pad_of(k);
+        const bool hex = p.pad == Button::Matrix && p.key <= periph::Key::KF;
+        out.push_back({p, k.name, k.cap, k.pc_label, !hex});
     }
+    return out;
 }
 
 std::optional<std::string_view> feed_prompt_hint(std::string_view display, bool physical_motors) {

@@ -17,7 +17,9 @@
 
 namespace alp85::front {
 
-// The 24 matrix keys and RESET, VECT INTR, as docs/peripherals.md arranges them (front view):
+// A board's keys as its description (through the Session) places them on the front panel. The
+// functions without a Session give the default board's, the ALP 85's: its 24 matrix keys and
+// RESET, VECT INTR, as docs/peripherals.md arranges them (front view):
 //   RESET VECT  R    C D E F
 //   REG   MEM   GO   8 9 A B
 //   STEP  PREV  NEXT 4 5 6 7
@@ -29,6 +31,9 @@ struct PadKey {
 };
 std::span<const PadKey> pad_keys();  // 26 buttons
 std::optional<PadKey> find_pad_key(std::string_view name);  // "R", "EXEC", "RESET", "VECT", ...
+// The same for the session's board (its description's keys, in its order).
+std::vector<PadKey> pad_keys(const script::Session& s);
+std::optional<PadKey> find_pad_key(std::string_view name, const script::Session& s);
 
 inline constexpr std::uint64_t kMinHold = kKeyHold;
 inline constexpr std::uint64_t kMinGap = kKeyGap;
@@ -42,15 +47,29 @@ struct PcKey {
 };
 // The board key a PC key presses (case-insensitive name as above).
 std::optional<PadKey> pad_key_for_pc(std::string_view pc_name);
+std::optional<PadKey> pad_key_for_pc(std::string_view pc_name, const script::Session& s);
 // What to press on the PC for a button, as shown under its keycap ("Enter", "7", "Esc").
 std::string_view pc_key_label(const PadKey& k);
-// The caption on the keycap ("EXEC", "VECT INTR").
+std::string_view pc_key_label(const PadKey& k, const script::Session& s);
+// The caption on the keycap ("EXEC", "VECT\nINTR").
 std::string_view cap_label(const PadKey& k);
+std::string_view cap_label(const PadKey& k, const script::Session& s);
+// The session's keypad as the window and the page draw it, all from its board's description: each
+// key's stable name (what find_pad_key takes), its caption, the PC key shown under it, its place
+// (in PadKey), and whether it is a function key (a hex key 0-F is not).
+struct KeypadKey {
+    PadKey key;
+    std::string_view name, cap, pc;
+    bool fn = false;
+};
+std::vector<KeypadKey> keypad_view(const script::Session& s);
 // What the keyboard and the mouse do, as rows of (keys, action), for the key map.
 struct KeyMapRow {
     std::string_view keys, action;
 };
 std::vector<KeyMapRow> key_map_rows(bool debug);
+// The same for the session's board: its function keys' PC keys and captions from its description.
+std::vector<KeyMapRow> key_map_rows(bool debug, const script::Session& s);
 
 // A line shown under the display while the thesis firmware's feed prompt ("H=----", F in mm/min,
 // D = 1500 / F) is typed with the physical motors: F 0006-1500 is accepted, but at F <= 0300

@@ -4,6 +4,22 @@ namespace alp85::front {
 
 DisplayView display_view(const script::Session& s) { return {s.display(), s.display_text()}; }
 
+unsigned display_digits(const script::Session& s) { return s.board().display.digits; }
+
+bool has_tool(const script::Session& s) { return !s.board().tool.empty(); }
+
+std::vector<BoardChoice> board_choices() {
+    std::vector<BoardChoice> out;
+    for (const board::Board* b : board::kBoards) out.push_back({b->name, b->title});
+    return out;
+}
+
+std::optional<RomPlace> monitor_rom(const script::Session& s) {
+    for (const board::MemoryRegion& r : s.board().memory)
+        if (r.id == board::Memory::MonitorEprom) return RomPlace{r.base, r.size};
+    return std::nullopt;
+}
+
 CpuView cpu_view(const script::Session& s) {
     static const cpu::Register& pc = *cpu::description().find("PC");
     return {s.reg(pc), s.halted()};

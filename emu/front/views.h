@@ -5,19 +5,40 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "emu/script/session.h"
 
 namespace alp85::front {
 
-// The eight digits: their segment bytes (leftmost first, the bit order of the seven-segment
-// decoder: a = bit 0 ... g = bit 6, dp = bit 7) and the nearest character of each ('.' for dp).
+// The digits: their segment bytes (leftmost first, the bit order of the seven-segment decoder:
+// a = bit 0 ... g = bit 6, dp = bit 7; up to eight, those past the board's count dark) and the
+// nearest character of each ('.' for dp).
 struct DisplayView {
     std::array<std::uint8_t, 8> segments{};
     std::string text;
 };
 DisplayView display_view(const script::Session& s);
+// How many digits the session's board has (its description's display: 8 on the ALP 85, 6 on
+// the SDK-85), the ones a front end draws.
+unsigned display_digits(const script::Session& s);
+// Whether the session's board carries the machine tool (its description's tool wiring): the
+// front ends show its views only then.
+bool has_tool(const script::Session& s);
+// The boards there are (--board, the page's selector): name and title, the default first.
+struct BoardChoice {
+    std::string_view name, title;
+};
+std::vector<BoardChoice> board_choices();
+// Where the session's board keeps its monitor ROM (its description's MonitorEprom region): the
+// place a user's ROM file goes (--rom, the page's Load ROM). nullopt: the board has none.
+struct RomPlace {
+    std::uint16_t base = 0, size = 0;
+};
+std::optional<RomPlace> monitor_rom(const script::Session& s);
 
 // The CPU's program counter and whether it waits after a HLT.
 struct CpuView {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -79,6 +80,7 @@ script::SessionOptions session_options(const GuiOptions& o) {
     }
     if (firmware::have_monitor()) s.monitor_rom = firmware::monitor;
     s.out = &std::cout;
+    if (const board::Board* b = script::Session::find_board(o.board)) s.board = b;
     return s;
 }
 
@@ -93,7 +95,11 @@ public:
         if (o.serial) done(session_.connect_serial(*o.serial, o.serial->frame_tstates(board::kCpuHz)));
         panes_.shown_part = o.show_part;
         session_.debugger().listen([this](const debug::Event& e) { ui_.add_log(e.text); });
-        for (const auto& e : firmware::builtin()) ui_.firmware_names.emplace_back(e.name);
+        // The built-in firmware is the ALP 85's (the default board's); the machine tool's menu only
+        // on a board that has the tool.
+        if (&session_.board() == &script::Session::default_board())
+            for (const auto& e : firmware::builtin()) ui_.firmware_names.emplace_back(e.name);
+        ui_.tool = has_tool(session_);
         for (std::size_t i = 0; i < ui_.firmware_names.size(); ++i)
             if (ui_.firmware_names[i] == "thesis-fixed") ui_.firmware = static_cast<int>(i);
         ui_.speed = o.speed;
@@ -208,6 +214,7 @@ private:
     bool panning_ = false;
     float pan_x_ = 0, pan_y_ = 0;
     bool table_input(const SDL_Event& e, const ImGuiIO& io);
+    script::Session::Boot::Image rom_image() const;
     bool key_map_ = false;
 };
 
@@ -237,6 +244,17 @@ void App::after_commands() {
     }
 }
 
+// --rom: the board's monitor ROM from the user's file, which the command line checked with the ROM
+// loader (emu/program/rom_image.h) before the window opened: a raw dump (.bin, .rom) at the ROM's
+// base, a .hex or a source at its own addresses.
+script::Session::Boot::Image App::rom_image() const {
+    std::string ext = std::filesystem::path(o_.rom).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const auto place = monitor_rom(session_);
+    const bool raw = ext == ".bin" || ext == ".rom";
+    return {absolute(o_.rom), raw && place ? std::optional<std::uint16_t>(place->base) : std::nullopt};
+}
+
 int App::start() {
     if (!o_.signals.empty()) {
         if (const auto r = open_signals(signals_, session_, o_.signals, o_.signals_ms); r.status != script::Session::Status::Ok) {
@@ -248,6 +266,7 @@ int App::start() {
         std::vector<script::ParseError> errors;
         script::RunnerOptions ro;
         ro.monitor_rom = session_options(o_).monitor_rom;
+        ro.board = session_options(o_).board;
         ro.out_dir = o_.out_dir;
         ro.err = &std::cerr;
         ro.outputs = {{o_.screenshot, "--screenshot"}};  // no save, record or plot of the script may write it
@@ -263,6 +282,16 @@ int App::start() {
             std::cerr << "alp85 gui: error: " << clash << "; nothing written\n";
             return 2;
         }
+        // The ROM in place before the script runs (a script on a board whose ROM is the user's).
+        if (!o_.rom.empty()) {
+            script::Session::Boot rom;
+            rom.monitor = false;
+            rom.images.push_back(rom_image());
+            if (!done(session_.boot(rom))) {
+                std::cerr << "alp85 gui: could not load --rom " << o_.rom << '\n';
+                return 2;
+            }
+        }
         session_.add_input(o_.script, "the script");
         for (const NamedPath& o : ro.outputs) session_.add_output(o.path, o.role);
         std::vector<script::ParseError> more;
@@ -276,7 +305,11 @@ int App::start() {
         return 0;
     }
     script::Session::Boot boot;
-    for (const auto& f : o_.firmware.empty() ? std::vector<std::string>{"thesis-fixed"} : o_.firmware) {
+    // The built-in monitor and the thesis firmware are the ALP 85's; another board boots what it is given.
+    const bool alp85 = o_.board == script::Session::default_board().name;
+    boot.monitor = alp85;
+    if (!o_.rom.empty()) boot.images.push_back(rom_image());
+    for (const auto& f : o_.firmware.empty() && alp85 ? std::vector<std::string>{"thesis-fixed"} : o_.firmware) {
         if (firmware::find(f)) boot.firmware.push_back(f);
         else boot.images.push_back({absolute(f), std::nullopt});
     }
@@ -376,7 +409,7 @@ void App::handle(const SDL_Event& event) {
         const float y = e.type == SDL_MOUSEWHEEL ? io.MousePos.y : static_cast<float>(e.button.y);
         if (kSignalsRect.contains(x, y)) return;
     }
-    if (!o_.debug && table_input(e, io)) return;
+    if (!o_.debug && has_tool(session_) && table_input(e, io)) return;
     switch (e.type) {
         case SDL_QUIT: quit_ = true; break;
         case SDL_WINDOWEVENT:
@@ -392,7 +425,7 @@ void App::handle(const SDL_Event& event) {
                 }
             }
             if (e.button.button == SDL_BUTTON_LEFT) {
-                mouse_key_ = key_at(static_cast<float>(e.button.x), static_cast<float>(e.button.y));
+                mouse_key_ = key_at(static_cast<float>(e.button.x), static_cast<float>(e.button.y), session_);
                 if (mouse_key_) presser_.down(*mouse_key_, session_);
             }
             break;
@@ -409,7 +442,7 @@ void App::handle(const SDL_Event& event) {
                 key_map_ = !key_map_;
                 break;
             }
-            if (const auto k = pad_key_for(e.key.keysym.sym)) {
+            if (const auto k = pad_key_for(e.key.keysym.sym, session_)) {
                 if (e.type == SDL_KEYDOWN) presser_.down(*k, session_);
                 else presser_.up(*k, session_);
             }
@@ -668,12 +701,13 @@ ImDrawList* begin_layer(const char* name, const Rect& r) {
 void App::draw() {
     backdrop_.reset();
     backdrop_.fill(kControlsRect, colour::kPanel);
-    backdrop_.fill(kAxesRect, colour::kPanel);
+    if (has_tool(session_)) backdrop_.fill(kAxesRect, colour::kPanel);
     // Each view in its own window, so that the canvas sees which one changed.
-    draw_keypad(begin_layer("##keypad", kBoardRect), presser_);
+    draw_keypad(begin_layer("##keypad", kBoardRect), presser_, session_);
     ImGui::End();
     const DisplayView display = display_view(session_);
-    draw_display(begin_layer("##display", kDisplayRect), backdrop_, display.segments);
+    const unsigned digits = display_digits(session_);
+    draw_display(begin_layer("##display", display_rect(digits)), backdrop_, display.segments, digits);
     ImGui::End();
     const ToolView tool = tool_view(session_);
     {
@@ -687,6 +721,10 @@ void App::draw() {
     if (o_.debug) {
         draw_debug_panes(panes_, shell_, ui_.running || in_command_);
         if (panes_.request != DebugPanes::Request::None && !in_command_) debug_request(std::exchange(panes_.request, DebugPanes::Request::None));
+        draw_controls();
+        return;
+    }
+    if (!has_tool(session_)) {  // a board without the machine tool: no table, gauge or axes
         draw_controls();
         return;
     }
@@ -724,7 +762,7 @@ bool App::render_frame() {
     update_fit();
     ImGui::NewFrame();
     draw();
-    if (key_map_) draw_key_map(o_.debug);
+    if (key_map_) draw_key_map(o_.debug, session_);
     ImGui::Render();
     const bool painted = canvas_.render(ImGui::GetDrawData(), backdrop_, colour::kBackground);
     ++frames_;
@@ -886,7 +924,9 @@ int run(const GuiOptions& o, FrameHook* hook) {
                                  "(it can be resized)\n",
                                  o.scale, std::lround(kWindowWidth * o.scale), std::lround(kWindowHeight * o.scale), usable.w, usable.h,
                                  size.w, size.h);
-    SDL_Window* window = SDL_CreateWindow("ALP85 - the ALP 85 and its machine tool", SDL_WINDOWPOS_CENTERED,
+    const board::Board* shown = script::Session::find_board(o.board);
+    const std::string title = fmt::format("ALP85 - {}", (shown ? *shown : script::Session::default_board()).title);
+    SDL_Window* window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED,
                                           SDL_WINDOWPOS_CENTERED, size.w, size.h,
                                           SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
     if (window) SDL_SetWindowMinimumSize(window, kWindowWidth / 4, kWindowHeight / 4);

@@ -61,7 +61,7 @@ std::vector<Action> controls_panel(ControlsState& s) {
         const ImVec2 text = ImGui::CalcTextSize("Machine tool");
         drawn_buttons()["controls.machine-tool"] = {at.x, at.y, at.x + text.x + 2 * ImGui::GetStyle().ItemSpacing.x,
                                                     at.y + ImGui::GetFrameHeight()};
-        if (ImGui::BeginMenu("Machine tool")) {
+        if (s.tool && ImGui::BeginMenu("Machine tool")) {
             // The operator's set-up between two jobs (docs/machine.md): the tables back at the start.
             if (ImGui::MenuItem("Set up a new workpiece")) out.push_back({K::NewWorkpiece, {}});
             const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
@@ -86,16 +86,16 @@ std::vector<Action> controls_panel(ControlsState& s) {
     }
     ImGui::TextUnformatted(s.status.c_str());
     ImGui::Separator();
-    ImGui::SetNextItemWidth(160);
-    if (!s.firmware_names.empty() &&
-        ImGui::BeginCombo("##fw", s.firmware_names[static_cast<std::size_t>(s.firmware)].c_str())) {
-        for (int i = 0; i < static_cast<int>(s.firmware_names.size()); ++i)
-            if (ImGui::Selectable(s.firmware_names[static_cast<std::size_t>(i)].c_str(), i == s.firmware)) s.firmware = i;
-        ImGui::EndCombo();
+    if (!s.firmware_names.empty()) {
+        ImGui::SetNextItemWidth(160);
+        if (ImGui::BeginCombo("##fw", s.firmware_names[static_cast<std::size_t>(s.firmware)].c_str())) {
+            for (int i = 0; i < static_cast<int>(s.firmware_names.size()); ++i)
+                if (ImGui::Selectable(s.firmware_names[static_cast<std::size_t>(i)].c_str(), i == s.firmware)) s.firmware = i;
+            ImGui::EndCombo();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Load firmware + reset")) out.push_back({K::Firmware, s.firmware_names[static_cast<std::size_t>(s.firmware)]});
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Load firmware + reset") && !s.firmware_names.empty())
-        out.push_back({K::Firmware, s.firmware_names[static_cast<std::size_t>(s.firmware)]});
     ImGui::SetNextItemWidth(260);
     ImGui::InputText("##file", &s.file);
     ImGui::SameLine();

@@ -31,7 +31,8 @@ struct ControlsState {
     bool recording = false;
     bool signals = false;  // the Signals pane is open (the menu bar's Signals toggles it)
     int firmware = 0;  // index into the built-in list
-    std::vector<std::string> firmware_names;
+    std::vector<std::string> firmware_names;  // empty: none for this board (no firmware choice shown)
+    bool tool = true;  // the board has the machine tool (its menu is shown)
     std::string file = "program.asm", snapshot = "alp85.snap", screenshot = "alp85.png";
     std::string record = "toolpath.csv", plot = "toolpath.png";
     std::deque<std::string> log;

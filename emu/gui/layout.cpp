@@ -52,10 +52,26 @@ Rect key_rect(const PadKey& k) {
             kKeyH};
 }
 
-std::optional<PadKey> key_at(float x, float y) {
-    for (const PadKey& k : pad_keys())
+namespace {
+std::optional<PadKey> key_among(float x, float y, std::span<const PadKey> keys) {
+    for (const PadKey& k : keys)
         if (key_rect(k).contains(x, y)) return k;
     return std::nullopt;
+}
+}  // namespace
+
+std::optional<PadKey> key_at(float x, float y) { return key_among(x, y, pad_keys()); }
+std::optional<PadKey> key_at(float x, float y, const script::Session& s) { return key_among(x, y, pad_keys(s)); }
+
+Rect keypad_rect(std::span<const PadKey> keys) {
+    Rect all{};
+    for (const PadKey& k : keys) all = unite(all, key_rect(k));
+    return all;
+}
+
+Rect display_rect(unsigned digits) {
+    const unsigned n = std::min(digits, 8u);
+    return {kDisplayRect.x, kDisplayRect.y, kDisplayRect.w - kDigitPitch * static_cast<float>(8 - n), kDisplayRect.h};
 }
 
 TableView TableView::fit(const Bounds& b, const Rect& r) {

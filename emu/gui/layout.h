@@ -1,4 +1,4 @@
-// The window's geometry, in pixels from the window's top left corner: where the eight digits and
+// The window's geometry, in pixels from the window's top left corner: where the board's digits and
 // their segments are, where each keypad button is, where the table view, the Z gauge and the
 // travel strip are, and how the table view maps millimetres to pixels. Plain arithmetic, no
 // drawing: the views draw from it and the tests compute the pixels they check from it.
@@ -85,13 +85,16 @@ struct Size {
 };
 Size initial_window_size(double scale, int usable_w, int usable_h);
 
-// ---- the board: eight digits ---------------------------------------------------------------------
+// ---- the board: its digits (as many as its description's display has, up to eight) ----------
 inline constexpr float kDigitX0 = 28, kDigitY0 = 44;  // top left of digit 1
 inline constexpr float kDigitPitch = 58, kDigitW = 40, kDigitH = 76, kSegT = 8;
 inline constexpr float kDpRadius = 4.5f;
 inline constexpr Rect kBoardRect{8, 8, 504, 470};
 inline constexpr Rect kDisplayRect{16, 30, 488, 104};
 inline constexpr Rect kHintRect{16, 138, 488, 18};  // under the display: a prompt's hint (keys.h)
+// The display's window for `digits` digits: kDisplayRect for eight, a digit's pitch narrower for
+// each one fewer (the digits keep their places from the left).
+Rect display_rect(unsigned digits);
 
 // A segment as its centre line (the drawn bar is kSegT thick around it, with pointed ends).
 struct Segment {
@@ -106,8 +109,11 @@ Vec2 dp_centre(unsigned digit);
 // The keypad's buttons (front::pad_keys, in rows and columns) in the window.
 inline constexpr float kKeyX0 = 24, kKeyY0 = 160, kKeyW = 62, kKeyH = 50, kKeyPitchX = 68, kKeyPitchY = 58;
 Rect key_rect(const PadKey& k);
-// The button under a point, if any.
+// The button under a point, if any: of the default board's keypad, or of the session's board.
 std::optional<PadKey> key_at(float x, float y);
+std::optional<PadKey> key_at(float x, float y, const script::Session& s);
+// The rectangle holding every one of these buttons (the keypad's silkscreen outline).
+Rect keypad_rect(std::span<const PadKey> keys);
 
 // ---- the machine tool --------------------------------------------------------------------------------
 inline constexpr Rect kTableRect{528, 8, 660, 440};   // the X-Y table from above

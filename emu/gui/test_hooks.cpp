@@ -67,7 +67,7 @@ void TestHooks::frame(HookWindow& w) {
 void TestHooks::drive_clicks(HookWindow& w) {
     const std::uint64_t now = w.shell().session().now();
     if (click_pos_ >= o_.clicks.size() || now < click_t_) return;
-    const auto k = find_pad_key(o_.clicks[click_pos_]);
+    const auto k = find_pad_key(o_.clicks[click_pos_], w.shell().session());
     if (!k) {
         std::cerr << "alp85 gui: --click " << o_.clicks[click_pos_] << ": no such key\n";
         ++click_pos_;

@@ -51,8 +51,8 @@ enum class Op : std::uint8_t {
     Motor, Feedback, NewWorkpiece, PrintAxes, PrintTime, Mark, ExpectAxis, ExpectCount, ExpectLost, RunUntilAxis, Record, RecordStop, Plot,
     SetMem, SetReg,
     Save, Restore,
-    Option,
-    PrintDisplay, Print,
+    Option, Board,
+    PrintDisplay, Print, PrintBoard,
 };
 
 struct Command {

@@ -74,13 +74,14 @@ public:
             {{"set", "set mem ADDR VALUE... | set reg REG VALUE: memory or a register", F{"MEM", "REG"}, false}, &LineParser::set},
             {{"save", "save FILE: a snapshot of the whole machine", {}, true}, &LineParser::save},
             {{"restore", "restore FILE: the machine as a snapshot holds it", {}, true}, &LineParser::restore},
-            {{"print", "print display [text] | print axes | print time | print \"TEXT\"...: the display, the tool's axes, the time, a message",
+            {{"print", "print display [text] | print axes | print time | print board | print \"TEXT\"...: the display, the tool's axes, the time, the board's maps and wiring, a message",
               F{"\"", "DISPLAY", "AXES", "TIME"}, false}, &LineParser::print},
             {{"motor", "motor ideal|physical: the stepper motors' model from now on"}, &LineParser::motor},
             {{"feedback", "feedback scale|commanded: what the transducers read from now on"}, &LineParser::feedback},
             {{"new", "new workpiece: every table wound back to its power-on position"}, &LineParser::new_workpiece},
             {{"mark", "mark: the time print time also counts from"}, &LineParser::mark},
-            {{"option", "option expansion on|off: the 4 KB expansion EPROM at 3000H"}, &LineParser::option},
+            {{"option", "option NAME on|off: a board option (the ALP 85's expansion: the 4 KB expansion EPROM at 3000H; the SDK-85's ram2: its second 8155)"}, &LineParser::option},
+            {{"board", "board NAME: the board the script runs on (alp85, sdk85); the script's first command"}, &LineParser::board},
             {{"record", "record FILE.csv [every TIME] | record signals FILE.vcd [PIN...] [every TIME] | record stop: the tool or the pins", {}, true}, &LineParser::record},
             {{"plot", "plot toolpath|time FILE.svg|FILE.png [from X,Y to X,Y]: what record FILE.csv recorded", {}, true}, &LineParser::plot},
         };
@@ -377,18 +378,29 @@ private:
         c.op = Op::Motor;
         return one_of(c, "IDEAL", "PHYSICAL", "motor model");
     }
-    // option NAME on|off: a board option of board::kBoardOptions (c.name, c.real 1 = on).
+    // option NAME on|off: an option of one of the boards (c.name, c.real 1 = on); the Session
+    // refuses one its board lacks.
     bool option(Command& c) {
         c.op = Op::Option;
-        if (!more()) return missing("a board option (expansion)");
+        if (!more()) return missing("a board option (expansion, ram2)");
         const Token& t = peek();
-        const auto known = std::find_if(board::kBoardOptions.begin(), board::kBoardOptions.end(),
-                                        [&](const board::BoardOption& o) { return to_upper(o.name) == to_upper(t.text); });
-        if (t.quoted || known == board::kBoardOptions.end())
-            return fail(t, fmt::format("unknown board option '{}' (expansion)", t.text)), false;
-        c.name = std::string(known->name);
+        for (const board::Board* b : board::kBoards)
+            for (const board::BoardOption& o : b->options)
+                if (!t.quoted && to_upper(o.name) == to_upper(t.text)) c.name = std::string(o.name);
+        if (c.name.empty()) return fail(t, fmt::format("unknown board option '{}' (expansion, ram2)", t.text)), false;
         ++pos_;
         return one_of(c, "OFF", "ON", "state");
+    }
+    // board NAME: the board the script is run on (the runner builds it; docs/scripting.md).
+    bool board(Command& c) {
+        c.op = Op::Board;
+        if (!more()) return missing(fmt::format("a board ({})", board::board_names()));
+        const Token& t = peek();
+        for (const board::Board* b : board::kBoards)
+            if (!t.quoted && to_upper(b->name) == to_upper(t.text)) c.name = std::string(b->name);
+        if (c.name.empty()) return fail(t, fmt::format("unknown board '{}' ({})", t.text, board::board_names())), false;
+        ++pos_;
+        return true;
     }
     bool mark(Command& c) {
         c.op = Op::Mark;
@@ -654,6 +666,11 @@ private:
         if (at_word("TIME")) {
             ++pos_;
             c.op = Op::PrintTime;
+            return true;
+        }
+        if (at_word("BOARD")) {  // the board's description: memory map, devices, wiring, keys, display
+            ++pos_;
+            c.op = Op::PrintBoard;
             return true;
         }
         if (at_word("DISPLAY")) {

@@ -27,8 +27,11 @@ namespace alp85::script {
 namespace {
 
 
-SessionOptions session_options(const std::filesystem::path& file, const RunnerOptions& o) {
+SessionOptions session_options(const std::filesystem::path& file, const RunnerOptions& o, const std::vector<Command>& commands) {
     SessionOptions s;
+    // The board: a script's first command `board NAME`, else --board.
+    s.board = !commands.empty() && commands.front().op == Op::Board ? board::find_board(commands.front().name) : o.board;
+    if (!s.board) s.board = o.board;
     s.base_dir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
     s.monitor_rom = o.monitor_rom;
     s.out = o.out;
@@ -59,7 +62,7 @@ std::filesystem::path output_dir(const std::filesystem::path& file, const std::v
     const bool writes = std::any_of(commands.begin(), commands.end(), [](const Command& c) {
         return c.op == Op::Save || c.op == Op::Record || c.op == Op::Plot;
     });
-    const std::filesystem::path dir = session_options(file, o).base_dir;
+    const std::filesystem::path dir = session_options(file, o, {}).base_dir;
     if (!writes || can_write_in(dir)) return {};
     std::error_code ec;
     const std::filesystem::path here = std::filesystem::current_path(ec);
@@ -77,7 +80,7 @@ std::vector<std::string> shared_files(const std::filesystem::path& file, const s
                                       const RunnerOptions& o) {
     std::vector<std::string> paths;
     std::filesystem::path dir = output_dir(file, commands, o);
-    if (dir.empty()) dir = session_options(file, o).base_dir;
+    if (dir.empty()) dir = session_options(file, o, {}).base_dir;
     for (const Command& c : commands) {
         if (c.op != Op::Save && c.op != Op::Restore && c.op != Op::Record && c.op != Op::Plot) continue;
         std::filesystem::path p(c.text);
@@ -139,7 +142,11 @@ bool prepare(const std::filesystem::path& file, std::vector<Command>& commands, 
     const std::size_t before = errors.size();
     std::vector<std::string> included;
     commands = parse_script(text, file.string(), errors, &included);
-    Session checker(session_options(file, options));
+    for (std::size_t i = 1; i < commands.size(); ++i)
+        if (commands[i].op == Op::Board)
+            errors.push_back({commands[i].where, "board must be the script's first command (the machine is built before any other)",
+                              commands[i].line});
+    Session checker(session_options(file, options, commands));
     std::string note;
     checker.set_out_dir(output_dir(file, commands, options, &note));
     if (options.err) *options.err << note;
@@ -159,7 +166,7 @@ ScriptResult execute(const std::filesystem::path& file, const std::vector<Comman
                      const RunnerOptions& options) {
     ScriptResult r;
     r.file = file.string();
-    Session session(session_options(file, options));
+    Session session(session_options(file, options, commands));
     session.set_out_dir(output_dir(file, commands, options));
     session.add_input(file, "the script");
     std::set<std::string> scripts;

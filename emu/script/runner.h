@@ -34,6 +34,7 @@ struct RunnerOptions {
     // The command line's outputs (--trace, --junit): no save, record or plot may write one.
     std::vector<NamedPath> outputs;
     std::uint64_t max_time = SessionOptions::kDefaultMaxTime;  // --max-time: each script's machine time at most
+    const board::Board* board = &board::kAlp85;  // --board, unless the script's first command is `board NAME`
 };
 
 // Parses and checks a file. Returns false and fills `errors` when the script cannot run.

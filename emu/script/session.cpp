@@ -32,7 +32,12 @@ const char* op_word(Op op) { return op == Op::Save ? "save" : op == Op::Record ?
 
 Session::Session(SessionOptions options)
     : options_(std::move(options)),
-      machine_(std::make_unique<Machine>(Machine::Options{options_.cpu})),
+      machine_(std::make_unique<Machine>([&] {
+          Machine::Options o;
+          o.cpu = options_.cpu;
+          o.board = options_.board;
+          return o;
+      }())),
       debugger_(*machine_) {
     if (options_.max_time != ~std::uint64_t{0})
         debugger_.set_time_limit(options_.max_time,
@@ -586,11 +591,14 @@ Session::Outcome Session::set_reg(const cpu::Register& reg, std::uint16_t value)
     return {};
 }
 
-Session::Outcome Session::set_option(bool expansion_eprom) {
+Session::Outcome Session::set_option(std::string_view name, bool fitted) {
     const Changed changed{debugger_};
-    machine_->set_expansion_eprom(expansion_eprom);  // the one board option (board::kBoardOptions)
+    if (!machine_->set_option(name, fitted))
+        return fail(fmt::format("the {} has no option '{}'", machine_->board().title, name));
     return {};
 }
+
+std::string Session::describe_board() const { return machine_->describe_board(); }
 
 Session::Outcome Session::print(const std::string& text) {
     output(text);
@@ -1045,7 +1053,16 @@ Session::Outcome Session::run_command(const Command& c) {
         case Op::SetReg: return with_value([&](std::int64_t v) { return set_reg(*c.reg, static_cast<std::uint16_t>(v)); });
         case Op::Save: return save(c.text);
         case Op::Restore: return restore(c.text);
-        case Op::Option: return set_option(c.real == 1);
+        case Op::Option: return set_option(c.name, c.real == 1);
+        case Op::PrintBoard: {
+            std::string text = describe_board();
+            if (!text.empty() && text.back() == '\n') text.pop_back();
+            return print(text);
+        }
+        case Op::Board:
+            if (c.name == machine_->board().name) return {};
+            return fail(fmt::format("board {} comes too late: the machine is already a {} (board must be the script's first command)",
+                                    c.name, machine_->board().title));
         case Op::Motor:
             return set_motor(c.real == 0 ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical);
         case Op::Feedback:

@@ -43,6 +43,7 @@ struct SessionOptions {
     // to kDefaultMaxTime, 1 h of machine time (a couple of minutes of host time).
     std::uint64_t max_time = ~std::uint64_t{0};
     static constexpr std::uint64_t kDefaultMaxTime = 3600ull * board::kCpuHz;
+    const board::Board* board = &board::kAlp85;  // the board the Machine is built as (--board)
 };
 
 class Session {
@@ -188,7 +189,15 @@ public:
     // Changing the machine:
     Outcome set_mem(std::uint16_t address, const std::vector<std::uint8_t>& bytes);
     Outcome set_reg(const cpu::Register& reg, std::uint16_t value);  // the value is masked to its width
-    Outcome set_option(bool expansion_eprom);  // option expansion on|off (board::kBoardOptions)
+    Outcome set_option(bool expansion_eprom) { return set_option("expansion", expansion_eprom); }  // option expansion on|off
+    Outcome set_option(std::string_view name, bool fitted);  // an option of the board (Board::options)
+    // The board as its description says (memory map, devices, wiring, keys, display): `info board`.
+    const board::Board& board() const { return machine_->board(); }
+    static const board::Board& default_board() { return *board::kBoards.front(); }  // the ALP 85
+    // The board with that name (alp85, sdk85: --board), or nullptr; "alp85, sdk85" for messages.
+    static const board::Board* find_board(std::string_view name) { return board::find_board(name); }
+    static std::string board_names() { return board::board_names(); }
+    std::string describe_board() const;
     Outcome set_feedback(periph::MachineTool::Feedback feedback);
     Outcome mark();
     // Showing (as Output events):

@@ -33,5 +33,22 @@ TEST(Launch, NeitherNameIsStillRefusedWhenLoaded) {
     EXPECT_EQ(c.firmware, "nothere");  // load_program names the built-in firmware
 }
 
+// `board` (docs/editors.md): the ALP 85 by default, with its built-in monitor; the SDK-85 has no
+// built-in monitor (its ROM is the user's); an unknown board is refused, naming the boards.
+TEST(Launch, BoardArgument) {
+    const LaunchConfig a = parse_launch(Json{{"program", "thesis-fixed"}, {"cwd", "/"}});
+    EXPECT_EQ(a.board, "alp85");
+    EXPECT_TRUE(a.monitor);
+    const LaunchConfig s = parse_launch(Json{{"program", "thesis-fixed"}, {"cwd", "/"}, {"board", "sdk85"}});
+    EXPECT_EQ(s.board, "sdk85");
+    EXPECT_FALSE(s.monitor);
+    try {
+        parse_launch(Json{{"program", "thesis-fixed"}, {"cwd", "/"}, {"board", "kim1"}});
+        ADD_FAILURE() << "an unknown board was taken";
+    } catch (const RequestError& e) {
+        EXPECT_NE(std::string(e.what()).find("no board 'kim1' (alp85, sdk85)"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace alp85::dap

@@ -326,3 +326,27 @@ TEST_F(Thesis, WatchpointsOnReadsChipsAndTheKeyboard) {
 
 }  // namespace
 }  // namespace alp85::test
+
+namespace alp85::test {
+namespace {
+
+// `info board` is the board's description as fitted: the ALP 85's ports as the thesis listing
+// fixes them (OUT 0E1H to the 8279, 8155 at F8H-FDH), and on the SDK-85 its memory-mapped 8279.
+TEST(InfoBoard, ShowsTheBoardsMapsAndWiring) {
+    script::DebugShell alp{script::SessionOptions{}};
+    const std::string a = alp.execute("info board");
+    EXPECT_NE(a.find("I/O    E0H-E1H  8279"), std::string::npos) << a;
+    EXPECT_NE(a.find("I/O    F8H-FDH  8155"), std::string::npos) << a;
+    EXPECT_NE(a.find("8155 TIMER OUT -> TRAP"), std::string::npos) << a;
+    EXPECT_EQ(a.find("3000H-3FFFH  ROM"), std::string::npos) << a;  // the expansion EPROM is an option, out
+    EXPECT_NE(a.find("option expansion (off)"), std::string::npos) << a;
+    script::SessionOptions o;
+    o.board = &board::kSdk85;
+    script::DebugShell sdk{o};
+    const std::string s = sdk.execute("info board");
+    EXPECT_NE(s.find("memory 1800H-1FFFH  8279"), std::string::npos) << s;
+    EXPECT_NE(s.find("2000H-20FFH  RAM"), std::string::npos) << s;
+}
+
+}  // namespace
+}  // namespace alp85::test

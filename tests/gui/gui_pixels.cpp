@@ -2,6 +2,11 @@
 //   gui_pixels SHOT.png --digits B1,B2,...,B8     each digit's segments (hex byte: bit0 = a ...
 //                                                  bit6 = g, bit7 = dp; "--" skips a digit): every
 //                                                  segment's centre is the lit or the unlit colour
+//   gui_pixels SHOT.png --no-digits D1,D2,...    digits (1 = the leftmost) not drawn: no segment's
+//                                                  centre nor the dp in the lit or the unlit colour
+//   gui_pixels SHOT.png --key ROW,COL,hex|fn|none  the keypad's place ROW, COL (layout.h's key_rect):
+//                                                  a hex key's face, a function key's, or the card
+//                                                  (no key there), seen at its left edge's middle
 //   gui_pixels SHOT.png --current-row N --breakpoint-row M --text-in X,Y,W,H
 //                                                  the debugger's source pane (--debug): row N has
 //                                                  the current line's colour, row M a breakpoint dot
@@ -116,6 +121,27 @@ int main(int argc, char** argv) {
                 expect(img, dp_centre(d), (bits & 0x80) ? colour::kSegmentLit : colour::kSegmentUnlit,
                        "digit " + std::to_string(d + 1) + " dp" + ((bits & 0x80) ? " lit" : " unlit"));
             }
+        } else if (opt == "--no-digits") {
+            for (const std::string& item : items) {
+                const unsigned d = static_cast<unsigned>(std::stoul(item)) - 1;
+                std::vector<Vec2> points{dp_centre(d)};
+                for (unsigned s = 0; s < 7; ++s) points.push_back(segment_centre(d, s));
+                int drawn = 0;
+                for (const Vec2 q : points) {
+                    const Vec2 p = to_window(g_fit, q.x, q.y);
+                    const Rgb c = img.at(static_cast<int>(p.x), static_cast<int>(p.y));
+                    drawn += near(c, colour::kSegmentLit) || near(c, colour::kSegmentUnlit);
+                }
+                std::printf("%s digit %s %s\n", drawn ? "FAIL" : "ok  ", item.c_str(),
+                            drawn ? ("is drawn (" + std::to_string(drawn) + " of its 8 segments)").c_str() : "not drawn");
+                failures += drawn != 0;
+            }
+        } else if (opt == "--key") {
+            PadKey k;
+            k.row = std::stoi(items.at(0)), k.col = std::stoi(items.at(1));
+            const Rect r = key_rect(k);
+            const Rgb want = items.at(2) == "hex" ? colour::kKey : items.at(2) == "fn" ? colour::kKeyFunction : colour::kBoard;
+            expect(img, {r.x + 4, r.y + r.h / 2}, want, "keypad row " + items[0] + " column " + items[1] + ": " + items[2]);
         } else if (opt == "--current-row" || opt == "--breakpoint-row") {
             const int row = std::stoi(items[0]);
             const Rect r = source_row(row);

@@ -53,8 +53,8 @@ TEST_F(CommandTable, HoldsTheConsolesCommandsAndEveryScriptCommand) {
     };
     for (const CommandInfo& c : commands()) EXPECT_TRUE(has(c.name, false)) << c.name;
     for (const char* own : {"break", "continue", "print", "info", "reverse-step", "timing", "quit"}) EXPECT_TRUE(has(own, true)) << own;
-    // 25 script commands (load ... plot), as docs/scripting.md's two tables list them.
-    EXPECT_EQ(commands().size(), 25u);
+    // 26 script commands (load ... plot, and board), as docs/scripting.md's two tables list them.
+    EXPECT_EQ(commands().size(), 26u);
 }
 
 TEST_F(CommandTable, HelpListsEveryCommandWithItsOwnText) {

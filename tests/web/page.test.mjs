@@ -2,7 +2,8 @@
 // build/web served on 127.0.0.1 (python3 -m http.server, as scripts/web.sh serves it).
 //   node tests/web/page.test.mjs            the acceptance test (CTest web:page)
 //   node tests/web/page.test.mjs --bench    the figures of docs/web.md (load time, speed, CPU)
-// Environment: ALP85 (the native alp85), ALP85_WEB_DIR (the built site), ALP85_DOC_IMAGES (a
+// Environment: ALP85 (the native alp85), ALP85_WEB_DIR (the built site), ALP85_SDK85_ROM (the SDK-85
+// test program's .hex, for Load ROM), ALP85_DOC_IMAGES (a
 // folder: the page's screenshot goes there as web.png).
 import { spawn, execFileSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -191,6 +192,49 @@ async function acceptance(page) {
   await editor(page);
   await master(page);
   await demo(page);
+  await sdk85(page);
+}
+
+// ?board=sdk85 (the selector's other board): the SDK-85's keypad and display as its description
+// places them (emu/board/sdk85.h, from the SDK-85 user's manual's panel: four rows of six keys,
+// the function keys on the left; six digits, four of address and two of data), no machine tool,
+// and Load ROM...: a short dump refused with the ROM loader's message, the project's SDK-85 test
+// program (firmware/sdk85/sdk85test.asm, as Intel HEX) taken.
+async function sdk85(page) {
+  const choices = await page.$$eval('#board-choice option', (os) => os.map((o) => o.value));
+  assert.deepEqual(choices, ['alp85', 'sdk85'], 'the board selector');
+  await page.goto(`http://127.0.0.1:${port}/?board=sdk85`);
+  await page.waitForFunction(() => window.alp85?.ready, { timeout: 30000 });
+  assert.equal(await page.$eval('#board-choice', (s) => s.value), 'sdk85');
+  const keys = await page.$$eval('#keypad button', (bs) => bs.map((b) => ({
+    key: b.dataset.key, cap: b.firstChild.textContent, row: Number(b.style.gridRow.split(' ')[0]) - 1,
+    col: Number(b.style.gridColumn.split(' ')[0]) - 1 })));
+  assert.equal(keys.length, 24, 'the SDK-85 has 24 keys');
+  // The manual's panel: RESET VECT-INTR C D E F / SINGLE-STEP GO 8 9 A B / SUBST-MEM EXAM-REG 4 5 6 7 / NEXT EXEC 0 1 2 3.
+  const panel = [['RESET', 'VECT INTR', 'C', 'D', 'E', 'F'], ['SINGLE STEP', 'GO', '8', '9', 'A', 'B'],
+    ['SUBST MEM', 'EXAM REG', '4', '5', '6', '7'], ['NEXT ,', 'EXEC .', '0', '1', '2', '3']];
+  for (const k of keys) assert.equal(k.cap.replace('\n', ' '), panel[k.row]?.[k.col], `key ${k.key} at row ${k.row}, column ${k.col}`);
+  assert.equal(await page.$$eval('#display svg', (d) => d.length), 6, 'the SDK-85 has 6 digits');
+  assert.equal(await page.$eval('#tool', (e) => getComputedStyle(e).display), 'none', 'the SDK-85 has no machine tool');
+  for (const id of ['#firmware-choice', '#editor', '#demo', '#gcode'])
+    assert.equal(await page.$eval(id, (e) => getComputedStyle(e).display), 'none', `${id} on the SDK-85`);
+  // Load ROM...: a dump of 100 bytes is refused (a raw image is exactly 2048), shown on the page.
+  const dir = mkdtempSync(join(tmpdir(), 'alp85-web-rom-'));
+  try {
+    const short = join(dir, 'short.bin');
+    writeFileSync(short, Buffer.alloc(100, 0xFF));
+    await (await page.$('#rom')).uploadFile(short);
+    await page.waitForFunction(() => document.querySelector('#rom-msg').textContent !== '' &&
+      !/test program/.test(document.querySelector('#rom-msg').textContent), { timeout: 10000 });
+    const msg = await page.$eval('#rom-msg', (e) => e.textContent);
+    assert.match(msg, /^ROM short\.bin: .*short\.bin.*100 bytes/, 'the loader\'s refusal on the page');
+    // The test program as the native build assembled it, as Intel HEX: taken.
+    await (await page.$('#rom')).uploadFile(process.env.ALP85_SDK85_ROM);
+    await page.waitForFunction(() => /^ROM sdk85test\.hex: loaded/.test(document.querySelector('#rom-msg').textContent), { timeout: 10000 });
+    console.log(`sdk85: 24 keys where the description puts them, 6 digits, no tool; Load ROM refused a short dump (${msg}) and took sdk85test.hex`);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
 }
 
 // The X-Y view after the thesis line: numbers at its grid lines that place the tool where the

@@ -1,0 +1,159 @@
+// A board as data: what sits where on the bus, how the chips decode their addresses, who drives
+// which CPU input, the keypad, the display, the clock and the options. The Machine is built from
+// one description (Machine::Options::board); the debugger's `info board` and docs describe the board
+// from it. Each board is a constexpr table in code (emu/board/alp85.h, emu/board/sdk85.h), not a
+// file: it is checked when ALP85 is compiled, there is nothing to find or parse at run time, and
+// the web build has no file system (docs/board.md).
+#pragma once
+
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "peripherals/keypad.h"
+#include "peripherals/machine_tool.h"
+
+namespace alp85::board {
+
+// What a memory region is for the Machine's storage (Machine::storage): its own EPROM or RAM, or
+// the RAM inside a chip (an 8155's 256 bytes).
+enum class Memory : std::uint8_t { MonitorEprom, UserEprom, Ram, Ram8155, ExpansionEprom, ExpansionRom, Ram8155Expansion };
+enum class MemoryKind : std::uint8_t { Rom, Ram };
+
+struct MemoryRegion {
+    Memory id;
+    std::uint16_t base;
+    std::uint16_t size;
+    MemoryKind kind;
+    std::string_view name;   // short name for scripts and the debugger
+    std::string_view part;   // the part that sits there
+    std::string_view tag = {};       // its snapshot section; empty: the RAM of a chip, saved with the chip
+    std::uint16_t decoded = 0;       // the block the decoder selects (mirrors of the region); 0: size
+    std::string_view option = {};    // fitted only with this board option; empty: always
+    std::string_view evidence = {};  // why it is there
+    constexpr std::uint32_t span() const { return decoded ? decoded : size; }
+};
+
+// The chips a board may carry; `unit` tells two of one kind apart (the SDK-85's second 8155).
+enum class Device : std::uint8_t { Kdc8279, Rio8155 };
+enum class Space : std::uint8_t { Io, Memory };
+
+// A chip in I/O or memory space on addresses first..last: the chip sees as its register number
+// the address lines in `select`, packed (0x0001: A0 alone; 0x0007: A0-A2; 0x0100: A8 alone).
+struct DeviceRegion {
+    Device device;
+    std::uint8_t unit;
+    Space space;
+    std::uint16_t first;
+    std::uint16_t last;
+    std::uint16_t select;
+    std::string_view name;
+    std::string_view registers;     // how the chip's address lines see the addresses
+    std::string_view option = {};   // fitted only with this board option; empty: always
+    constexpr std::uint8_t offset(std::uint16_t address) const {
+        unsigned out = 0, bit = 0;
+        for (unsigned line = 0; line < 16; ++line)
+            if (select >> line & 1u) out |= ((address >> line) & 1u) << bit++;
+        return static_cast<std::uint8_t>(out);
+    }
+};
+
+enum class Source : std::uint8_t { Irq8279, TimerOut8155, VectIntrKey, ResetKey };
+enum class CpuPin : std::uint8_t { Rst55, Trap, Rst75, ResetIn };
+
+// Who drives which CPU input. The Machine connects exactly these (Machine::wire).
+struct Wire {
+    Source source;
+    CpuPin pin;
+    std::string_view why;
+};
+
+// How a key reaches the CPU: through the 8279's matrix, or wired to a CPU pin.
+enum class KeyWire : std::uint8_t { Matrix, ResetIn, VectIntr };
+
+// One key of the keypad: where it is wired, what its cap says, where it sits on the front panel
+// and which PC keys press it (the first is shown under the cap; "" ends the list).
+struct BoardKey {
+    KeyWire wire;
+    periph::Key key;       // for KeyWire::Matrix
+    std::string_view name;  // stable name for scripts and front ends
+    std::string_view cap;   // the caption, '\n' between its lines
+    std::uint8_t scan = 0, ret = 0;           // matrix: scan line (SL0-2 value) and return line RL0-7
+    std::uint8_t panel_row = 0, panel_col = 0;  // front view, row 0 on top, column 0 on the left
+    std::array<std::string_view, 3> pc = {};    // PC key names (browser names too)
+    std::string_view pc_label = {};             // shown under the cap
+};
+
+// A key in the matrix, its PC keys' first name shown under the cap unless pc_label says otherwise.
+constexpr BoardKey matrix_key(periph::Key k, std::string_view name, std::string_view cap, std::uint8_t scan,
+                              std::uint8_t ret, std::uint8_t row, std::uint8_t col,
+                              std::array<std::string_view, 3> pc = {}, std::string_view pc_label = {}) {
+    return {KeyWire::Matrix, k, name, cap, scan, ret, row, col, pc, pc_label.empty() ? pc[0] : pc_label};
+}
+
+// The display: which 8279 display position each digit shows (leftmost first), which display-RAM
+// bit drives each segment (a, b, c, d, e, f, g, dp; RAM bits 7-4 = OUT A3-A0, 3-0 = OUT B3-B0)
+// and whether a segment lights at 0 (drivers that invert).
+struct DisplayWiring {
+    std::uint8_t digits;
+    std::array<std::uint8_t, 8> position;
+    std::array<std::uint8_t, 8> segment_bit;
+    bool active_low;
+    std::string_view evidence;
+};
+
+// Board options a script or front end may switch on, by name (script `option NAME on|off`).
+struct BoardOption {
+    std::string_view name;
+    std::string_view what;
+};
+
+// The machine tool on an 8155's ports (docs/machine.md): per axis the sequencer's PULSE and
+// DIRECTION on port A (output) and the transducer's COUNT and DIRECTION bits on port B (input).
+using ToolAxis = periph::MachineTool::Axis;
+
+// One wire: its bit on the port and the evidence for it.
+struct ToolBit {
+    std::uint8_t bit;
+    bool reconstructed;    // not in the surviving listing: a documented choice
+    std::string_view why;  // the evidence
+};
+
+// One axis's four wires: to its sequencer on port A, from its transducer on port B.
+struct AxisWiring {
+    ToolAxis axis;
+    ToolBit pulse, direction;        // port A, outputs
+    ToolBit count, count_direction;  // port B, inputs
+};
+
+struct Clock {
+    std::uint32_t crystal_hz;  // on X1/X2; the 8085 divides by two
+    std::string_view evidence;
+    constexpr std::uint32_t cpu_hz() const { return crystal_hz / 2; }
+};
+
+struct Board {
+    std::string_view name;   // for --board and the script's `board`
+    std::string_view title;
+    Clock clock;
+    std::span<const MemoryRegion> memory;   // every region, the optional ones too
+    std::span<const DeviceRegion> devices;  // every chip's decoding, the optional ones too
+    std::span<const Wire> wiring;
+    std::span<const BoardKey> keys;
+    DisplayWiring display;
+    std::span<const BoardOption> options;
+    bool shift_cntl_high;                  // the 8279's SHIFT and CNTL/STB pins: tied high, or grounded
+    std::span<const AxisWiring> tool;      // the machine tool on the first 8155; empty: none
+    std::uint8_t undriven_port_ab;         // what the 8155's undriven port A/B pins read
+    std::uint8_t undriven_port_c;          // and its six port C pins
+};
+
+constexpr bool has_option(const Board& b, std::string_view name) {
+    for (const BoardOption& o : b.options)
+        if (o.name == name) return true;
+    return false;
+}
+
+}  // namespace alp85::board
