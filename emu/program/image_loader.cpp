@@ -15,14 +15,6 @@
 namespace alp85 {
 namespace {
 
-std::string read_all(const std::filesystem::path& path, FileKind kind) {
-    try {
-        return read_input(path, kind);
-    } catch (const InputError& e) {
-        throw LoadError(e.what());
-    }
-}
-
 // Contiguous runs from a sparse byte map.
 std::vector<ImageSegment> runs(const std::map<std::uint16_t, std::uint8_t>& bytes) {
     std::vector<ImageSegment> out;
@@ -35,34 +27,47 @@ std::vector<ImageSegment> runs(const std::map<std::uint16_t, std::uint8_t>& byte
 
 }  // namespace
 
+std::string read_image_file(const std::filesystem::path& path, FileKind kind) {
+    try {
+        return read_input(path, kind);
+    } catch (const InputError& e) {
+        throw LoadError(e.what());
+    }
+}
+
+asm85::Result assemble_source(const std::filesystem::path& path, const asm85::Options& options,
+                              std::vector<std::string>& warnings) {
+    asm85::Result r = asm85::assemble_file(path, options);
+    std::string errors;
+    for (const asm85::Diagnostic& d : r.diagnostics) {
+        if (d.severity == asm85::Severity::Error)
+            errors += asm85::format_diagnostic(d);
+        else if (d.severity == asm85::Severity::Warning)
+            warnings.push_back(asm85::format_diagnostic(d));
+    }
+    if (!r.ok()) throw LoadError(fmt::format("{}: {} error(s) in assembly\n{}", path.string(), r.error_count(), errors));
+    return r;
+}
+
 LoadedImage read_image(const std::filesystem::path& path, const LoadOptions& options) {
     LoadedImage img;
     const std::string ext = lower_extension(path);
     if (ext == ".asm" || ext == ".a85" || ext == ".s" || ext == ".mac") {
-        asm85::Result r = asm85::assemble_file(path, options.assembler);
-        std::string errors;
-        for (const asm85::Diagnostic& d : r.diagnostics) {
-            if (d.severity == asm85::Severity::Error)
-                errors += asm85::format_diagnostic(d);
-            else if (d.severity == asm85::Severity::Warning)
-                img.warnings.push_back(asm85::format_diagnostic(d));
-        }
-        if (!r.ok())
-            throw LoadError(fmt::format("{}: {} error(s) in assembly\n{}", path.string(), r.error_count(), errors));
+        asm85::Result r = assemble_source(path, options.assembler, img.warnings);
         for (const asm85::Segment& s : r.image.segments()) img.segments.push_back({s.start, s.bytes});
         img.symbols = r.symbols;
         img.start = r.image.start_address;
         img.assembly = std::move(r);
     } else if (ext == ".hex" || ext == ".ihx" || ext == ".ihex") {
         std::map<std::uint16_t, std::uint8_t> bytes;
-        const auto err = read_intel_hex(read_all(path, FileKind::HexImage), [&](std::uint16_t a, std::uint8_t v) { bytes[a] = v; });
+        const auto err = read_intel_hex(read_image_file(path, FileKind::HexImage), [&](std::uint16_t a, std::uint8_t v) { bytes[a] = v; });
         if (err) throw LoadError(fmt::format("{}:{}:{}: error: {}", path.string(), err->line, err->col, err->message));
         img.segments = runs(bytes);
     } else if (ext == ".bin" || ext == ".rom" || ext == ".com") {
         // A CP/M .COM file runs at 0100H, its TPA, unless told otherwise.
         const auto address = ext == ".com" ? options.address.value_or(0x0100) : options.address;
         if (!address) throw LoadError(fmt::format("{}: a binary image needs a load address", path.string()));
-        const std::string data = read_all(path, FileKind::Binary);
+        const std::string data = read_image_file(path, FileKind::Binary);
         if (data.size() + *address > 0x10000)
             throw LoadError(fmt::format("{}: {} bytes at {:04X}H run past FFFFH", path.string(), data.size(), *address));
         img.segments.push_back({*address, {data.begin(), data.end()}});

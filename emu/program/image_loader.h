@@ -11,6 +11,7 @@
 
 #include "asm/asm85.h"
 #include "emu/board/machine.h"
+#include "emu/util/input_file.h"
 
 namespace alp85 {
 
@@ -34,6 +35,13 @@ struct LoadOptions {
     asm85::Options assembler;              // for .asm
 };
 
+// The bytes of an image file (a .hex's text, a .bin's bytes), or a LoadError naming why it cannot
+// be read (missing, a directory, too large for its kind).
+std::string read_image_file(const std::filesystem::path& path, FileKind kind);
+// asm85 on a source file: its result, its warnings formatted into `warnings`; its errors a
+// LoadError that lists them.
+asm85::Result assemble_source(const std::filesystem::path& path, const asm85::Options& options,
+                              std::vector<std::string>& warnings);
 // Reads and converts the file (by its extension; anything else is refused). Throws LoadError.
 LoadedImage read_image(const std::filesystem::path& path, const LoadOptions& options = {});
 // For a load onto the board: a part of the image that runs from one memory region of the ALP 85

@@ -12,14 +12,6 @@
 namespace alp85 {
 namespace {
 
-std::string read_rom_file(const std::filesystem::path& path, FileKind kind) {
-    try {
-        return read_input(path, kind);
-    } catch (const InputError& e) {
-        throw LoadError(e.what());
-    }
-}
-
 // Text a person would type or a tool would write (tabs, line ends, printable ASCII): a ROM image
 // of 8085 code always holds other bytes (00H NOP, C3H JMP, FFH unprogrammed).
 bool is_text(const std::string& data) {
@@ -70,7 +62,7 @@ RomImage read_rom_image(const std::filesystem::path& path, const RomSpec& rom, c
     const std::string ext = lower_extension(path);
 
     if (ext == ".bin" || ext == ".rom") {
-        const std::string data = read_rom_file(path, FileKind::Binary);
+        const std::string data = read_image_file(path, FileKind::Binary);
         if (data.empty()) throw LoadError(fmt::format("{}: empty file: a ROM image is a {}-byte dump", name, rom.size));
         if (is_text(data))
             throw LoadError(fmt::format("{}: text, not a ROM image (it begins '{}'); Intel HEX goes in a .hex file, "
@@ -90,7 +82,7 @@ RomImage read_rom_image(const std::filesystem::path& path, const RomSpec& rom, c
 
     std::map<std::uint16_t, std::uint8_t> bytes;
     if (ext == ".hex" || ext == ".ihx" || ext == ".ihex") {
-        const std::string text = read_rom_file(path, FileKind::HexImage);
+        const std::string text = read_image_file(path, FileKind::HexImage);
         const auto err = read_intel_hex(text, [&](std::uint16_t a, std::uint8_t v) { bytes[a] = v; });
         if (err) throw LoadError(fmt::format("{}:{}:{}: error: {}", name, err->line, err->col, err->message));
         for (const auto& [a, v] : bytes) {
@@ -100,15 +92,7 @@ RomImage read_rom_image(const std::filesystem::path& path, const RomSpec& rom, c
                                         hex_record_line(text, a), a, rom_range(rom)));
         }
     } else if (ext == ".asm" || ext == ".a85" || ext == ".s" || ext == ".mac") {
-        asm85::Result r = asm85::assemble_file(path, assembler);
-        std::string errors;
-        for (const asm85::Diagnostic& d : r.diagnostics) {
-            if (d.severity == asm85::Severity::Error)
-                errors += asm85::format_diagnostic(d);
-            else if (d.severity == asm85::Severity::Warning)
-                img.warnings.push_back(asm85::format_diagnostic(d));
-        }
-        if (!r.ok()) throw LoadError(fmt::format("{}: {} error(s) in assembly\n{}", name, r.error_count(), errors));
+        asm85::Result r = assemble_source(path, assembler, img.warnings);
         for (const asm85::Segment& s : r.image.segments()) {
             for (std::size_t i = 0; i < s.bytes.size(); ++i) {
                 const std::uint32_t a = s.start + i;

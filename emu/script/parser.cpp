@@ -56,6 +56,7 @@ public:
     static const std::vector<Verb>& verbs() {
         using F = std::vector<std::string_view>;
         static const std::vector<Verb> table = {
+            {{"board", "board NAME: the board the script runs on (alp85, sdk85); the script's first command"}, &LineParser::board},
             {{"load", "load FILE [at ADDR]: an .asm (assembled, its symbols and lines kept), .hex or .bin (at ADDR) image", {}, true}, &LineParser::load},
             {{"monitor", "monitor: the ALP 85 monitor ROM at 0000H and its symbols"}, &LineParser::monitor},
             {{"firmware", "firmware NAME: built-in firmware with its symbols and lines (thesis, thesis-fixed, master, monitor)"}, &LineParser::firmware},
@@ -75,13 +76,12 @@ public:
             {{"save", "save FILE: a snapshot of the whole machine", {}, true}, &LineParser::save},
             {{"restore", "restore FILE: the machine as a snapshot holds it", {}, true}, &LineParser::restore},
             {{"print", "print display [text] | print axes | print time | print board | print \"TEXT\"...: the display, the tool's axes, the time, the board's maps and wiring, a message",
-              F{"\"", "DISPLAY", "AXES", "TIME"}, false}, &LineParser::print},
+              F{"\"", "DISPLAY", "AXES", "TIME", "BOARD"}, false}, &LineParser::print},
             {{"motor", "motor ideal|physical: the stepper motors' model from now on"}, &LineParser::motor},
             {{"feedback", "feedback scale|commanded: what the transducers read from now on"}, &LineParser::feedback},
             {{"new", "new workpiece: every table wound back to its power-on position"}, &LineParser::new_workpiece},
             {{"mark", "mark: the time print time also counts from"}, &LineParser::mark},
             {{"option", "option NAME on|off: a board option (the ALP 85's expansion: the 4 KB expansion EPROM at 3000H; the SDK-85's ram2: its second 8155)"}, &LineParser::option},
-            {{"board", "board NAME: the board the script runs on (alp85, sdk85); the script's first command"}, &LineParser::board},
             {{"record", "record FILE.csv [every TIME] | record signals FILE.vcd [PIN...] [every TIME] | record stop: the tool or the pins", {}, true}, &LineParser::record},
             {{"plot", "plot toolpath|time FILE.svg|FILE.png [from X,Y to X,Y]: what record FILE.csv recorded", {}, true}, &LineParser::plot},
         };
@@ -658,21 +658,13 @@ private:
         return string_operand(c.text, "a snapshot file name");
     }
     bool print(Command& c) {
-        if (at_word("AXES")) {
-            ++pos_;
-            c.op = Op::PrintAxes;
-            return true;
-        }
-        if (at_word("TIME")) {
-            ++pos_;
-            c.op = Op::PrintTime;
-            return true;
-        }
-        if (at_word("BOARD")) {  // the board's description: memory map, devices, wiring, keys, display
-            ++pos_;
-            c.op = Op::PrintBoard;
-            return true;
-        }
+        // print board: the board's description (memory map, devices, wiring, keys, display)
+        for (const auto& [word, op] : {std::pair{"AXES", Op::PrintAxes}, {"TIME", Op::PrintTime}, {"BOARD", Op::PrintBoard}})
+            if (at_word(word)) {
+                ++pos_;
+                c.op = op;
+                return true;
+            }
         if (at_word("DISPLAY")) {
             ++pos_;
             c.op = Op::PrintDisplay;

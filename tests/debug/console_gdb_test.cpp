@@ -132,6 +132,14 @@ TEST_F(Gdb, TbreakOnALineWithoutCodeSaysWhereItBinds) {
                           blank, blank + 1, at, blank + 1));
 }
 
+// The script's print forms at the debugger's prompt: print board is the board's description, not
+// a symbol BOARD.
+TEST_F(Gdb, PrintBoardIsTheScriptsPrint) {
+    const std::string b = run("print board");
+    EXPECT_NE(b.find("board alp85:"), std::string::npos) << b;
+    EXPECT_NE(b.find("0000H-07FFH"), std::string::npos) << b;  // the monitor EPROM (thesis Chapter II)
+}
+
 TEST_F(Gdb, HelpShowsEveryCommandsWholeText) {
     const std::string h = run("help");
     // Unwrapped, the text holds each command's full help (the break line's description too).
