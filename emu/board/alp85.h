@@ -62,34 +62,18 @@ inline constexpr std::array<Wire, 4> kWiring{{
 //   STEP  PREV  NEXT 4 5 6 7
 //               EXEC 0 1 2 3
 using periph::Key;
-inline constexpr std::array<BoardKey, 26> kKeys{{
-    {KeyWire::ResetIn, Key::K0, "RESET", "RESET", 0, 0, 0, 0, {"Esc", "Escape"}, "Esc"},
-    {KeyWire::VectIntr, Key::K0, "VECT", "VECT\nINTR", 0, 0, 0, 1, {"V"}, "V"},
+inline constexpr std::array<BoardKey, 26> kKeys = with_hex_keys<10>({{
+    kResetKey,
+    kVectIntrKey,
     matrix_key(Key::R, "R", "R", 2, 7, 0, 2, {"R"}),
-    matrix_key(Key::KC, "C", "C", 1, 4, 0, 3, {"C"}),
-    matrix_key(Key::KD, "D", "D", 1, 5, 0, 4, {"D"}),
-    matrix_key(Key::KE, "E", "E", 1, 6, 0, 5, {"E"}),
-    matrix_key(Key::KF, "F", "F", 1, 7, 0, 6, {"F"}),
     matrix_key(Key::Reg, "REG", "EXAM\nREG", 2, 4, 1, 0, {"X"}),
     matrix_key(Key::Mem, "MEM", "SUBST\nMEM", 2, 3, 1, 1, {"M"}),
     matrix_key(Key::Go, "GO", "GO", 2, 2, 1, 2, {"G"}),
-    matrix_key(Key::K8, "8", "8", 1, 0, 1, 3, {"8"}),
-    matrix_key(Key::K9, "9", "9", 1, 1, 1, 4, {"9"}),
-    matrix_key(Key::KA, "A", "A", 1, 2, 1, 5, {"A"}),
-    matrix_key(Key::KB, "B", "B", 1, 3, 1, 6, {"B"}),
     matrix_key(Key::Step, "STEP", "SINGLE\nSTEP", 2, 5, 2, 0, {"S"}),
     matrix_key(Key::Prev, "PREV", "PREV", 2, 6, 2, 1, {"Backspace"}, "Bksp"),
     matrix_key(Key::Next, "NEXT", "NEXT", 2, 1, 2, 2, {"Space", " "}, "Space"),
-    matrix_key(Key::K4, "4", "4", 0, 4, 2, 3, {"4"}),
-    matrix_key(Key::K5, "5", "5", 0, 5, 2, 4, {"5"}),
-    matrix_key(Key::K6, "6", "6", 0, 6, 2, 5, {"6"}),
-    matrix_key(Key::K7, "7", "7", 0, 7, 2, 6, {"7"}),
     matrix_key(Key::Exec, "EXEC", "EXEC", 2, 0, 3, 2, {"Enter"}),
-    matrix_key(Key::K0, "0", "0", 0, 0, 3, 3, {"0"}),
-    matrix_key(Key::K1, "1", "1", 0, 1, 3, 4, {"1"}),
-    matrix_key(Key::K2, "2", "2", 0, 2, 3, 5, {"2"}),
-    matrix_key(Key::K3, "3", "3", 0, 3, 3, 6, {"3"}),
-}};
+}}, 3);  // the hex keys from column 3
 
 // Eight digits on the 8279's display positions 0-7, leftmost first. Segment wiring inferred from
 // the thesis's segment codes (76H = H, 6EH = y, 78H = t, 7FH = B/8): bit0 = a, bit1 = b, bit2 = c,

@@ -93,6 +93,36 @@ constexpr BoardKey matrix_key(periph::Key k, std::string_view name, std::string_
     return {KeyWire::Matrix, k, name, cap, scan, ret, row, col, pc, pc_label.empty() ? pc[0] : pc_label};
 }
 
+// RESET and VECT INTR, outside the matrix on both boards: wired to RESET IN and to RST 7.5, at the
+// top left of the panel, pressed by Esc and V.
+inline constexpr BoardKey kResetKey{KeyWire::ResetIn, periph::Key::K0, "RESET", "RESET", 0, 0, 0, 0, {"Esc", "Escape"}, "Esc"};
+inline constexpr BoardKey kVectIntrKey{KeyWire::VectIntr, periph::Key::K0, "VECT", "VECT\nINTR", 0, 0, 0, 1, {"V"}, "V"};
+
+// The sixteen hex keys as both boards have them, in the manner of Intel's SDK-85: key N on scan
+// line N / 8 and return line N % 8 (FIFO code N, before SHIFT and CNTL), on the panel a 4 x 4 block
+// from column `first_col`, 0-3 on the bottom row and C-F on the top; each pressed by the PC key of
+// its own digit.
+constexpr std::array<BoardKey, 16> hex_keys(std::uint8_t first_col) {
+    constexpr std::array<std::string_view, 16> kDigit{"0", "1", "2", "3", "4", "5", "6", "7",
+                                                      "8", "9", "A", "B", "C", "D", "E", "F"};
+    std::array<BoardKey, 16> keys{};
+    for (std::uint8_t n = 0; n < 16; ++n)
+        keys[n] = matrix_key(static_cast<periph::Key>(n), kDigit[n], kDigit[n], n / 8, n % 8,
+                             static_cast<std::uint8_t>(3 - n / 4), static_cast<std::uint8_t>(first_col + n % 4),
+                             {kDigit[n]});
+    return keys;
+}
+
+// A board's keypad: its own keys (RESET, VECT INTR, the function keys), then the hex keys.
+template <std::size_t N>
+constexpr std::array<BoardKey, N + 16> with_hex_keys(const std::array<BoardKey, N>& own, std::uint8_t first_col) {
+    std::array<BoardKey, N + 16> keys{};
+    const std::array<BoardKey, 16> hex = hex_keys(first_col);
+    for (std::size_t i = 0; i < N; ++i) keys[i] = own[i];
+    for (std::size_t i = 0; i < 16; ++i) keys[N + i] = hex[i];
+    return keys;
+}
+
 // The display: which 8279 display position each digit shows (leftmost first), which display-RAM
 // bit drives each segment (a, b, c, d, e, f, g, dp; RAM bits 7-4 = OUT A3-A0, 3-0 = OUT B3-B0)
 // and whether a segment lights at 0 (drivers that invert).

@@ -49,16 +49,6 @@ inline constexpr std::array<DeviceRegion, 3> kDevices{{
      "the second 8155: 28H command/status, 29H-2BH ports A-C, 2CH-2DH timer", "ram2"},
 }};
 
-// [UM]: the first 8155's TIMER OUT is the monitor's single step, on TRAP; the
-// VECT INTR key on RST 7.5; the RESET key on RESET IN. The 8279's IRQ goes to RST 5.5, as on the
-// ALP 85 (the monitor reads the keyboard by polling the 8279's status; MAME wires IRQ to RST 5.5).
-inline constexpr std::array<Wire, 4> kWiring{{
-    {Source::Irq8279, CpuPin::Rst55, "a key in the 8279's FIFO: RST 5.5 (masked by the monitor, which polls)"},
-    {Source::TimerOut8155, CpuPin::Trap, "the monitor's single step: the 8155's timer traps after one user instruction"},
-    {Source::VectIntrKey, CpuPin::Rst75, "the VECT INTR key (rising edge latched by the 8085)"},
-    {Source::ResetKey, CpuPin::ResetIn, "the RESET key resets the CPU, and RESET OUT the 8155, 8279 and 8355"},
-}};
-
 // The keypad [UM]: scan lines SL0-2 (encoded, decoded on the
 // board) select three rows; row 0 carries 0-7 on RL0-7, row 1 8-F, row 2 EXEC, NEXT, GO, SUBST
 // MEM, EXAM REG, SINGLE STEP on RL0-5. RESET and VECT INTR are wired to the CPU. The 8279's SHIFT
@@ -69,31 +59,25 @@ inline constexpr std::array<Wire, 4> kWiring{{
 //   SUBST MEM    EXAM REG   4 5 6 7
 //   NEXT ,       EXEC .     0 1 2 3
 using periph::Key;
-inline constexpr std::array<BoardKey, 24> kKeys{{
-    {KeyWire::ResetIn, Key::K0, "RESET", "RESET", 0, 0, 0, 0, {"Esc", "Escape"}, "Esc"},
-    {KeyWire::VectIntr, Key::K0, "VECT", "VECT\nINTR", 0, 0, 0, 1, {"V"}, "V"},
-    matrix_key(Key::KC, "C", "C", 1, 4, 0, 2, {"C"}),
-    matrix_key(Key::KD, "D", "D", 1, 5, 0, 3, {"D"}),
-    matrix_key(Key::KE, "E", "E", 1, 6, 0, 4, {"E"}),
-    matrix_key(Key::KF, "F", "F", 1, 7, 0, 5, {"F"}),
+inline constexpr std::array<BoardKey, 24> kKeys = with_hex_keys<8>({{
+    kResetKey,
+    kVectIntrKey,
     matrix_key(Key::Step, "STEP", "SINGLE\nSTEP", 2, 5, 1, 0, {"S", "/"}),
     matrix_key(Key::Go, "GO", "GO", 2, 2, 1, 1, {"G"}),
-    matrix_key(Key::K8, "8", "8", 1, 0, 1, 2, {"8"}),
-    matrix_key(Key::K9, "9", "9", 1, 1, 1, 3, {"9"}),
-    matrix_key(Key::KA, "A", "A", 1, 2, 1, 4, {"A"}),
-    matrix_key(Key::KB, "B", "B", 1, 3, 1, 5, {"B"}),
     matrix_key(Key::Mem, "MEM", "SUBST\nMEM", 2, 3, 2, 0, {"M"}),
     matrix_key(Key::Reg, "REG", "EXAM\nREG", 2, 4, 2, 1, {"X"}),
-    matrix_key(Key::K4, "4", "4", 0, 4, 2, 2, {"4"}),
-    matrix_key(Key::K5, "5", "5", 0, 5, 2, 3, {"5"}),
-    matrix_key(Key::K6, "6", "6", 0, 6, 2, 4, {"6"}),
-    matrix_key(Key::K7, "7", "7", 0, 7, 2, 5, {"7"}),
     matrix_key(Key::Next, "NEXT", "NEXT\n,", 2, 1, 3, 0, {"Space", " ", ","}, "Space"),
     matrix_key(Key::Exec, "EXEC", "EXEC\n.", 2, 0, 3, 1, {"Enter", "."}),
-    matrix_key(Key::K0, "0", "0", 0, 0, 3, 2, {"0"}),
-    matrix_key(Key::K1, "1", "1", 0, 1, 3, 3, {"1"}),
-    matrix_key(Key::K2, "2", "2", 0, 2, 3, 4, {"2"}),
-    matrix_key(Key::K3, "3", "3", 0, 3, 3, 5, {"3"}),
+}}, 2);  // the hex keys from column 2
+
+// [UM]: the first 8155's TIMER OUT is the monitor's single step, on TRAP; the
+// VECT INTR key on RST 7.5; the RESET key on RESET IN. The 8279's IRQ goes to RST 5.5, as on the
+// ALP 85 (the monitor reads the keyboard by polling the 8279's status; MAME wires IRQ to RST 5.5).
+inline constexpr std::array<Wire, 4> kWiring{{
+    {Source::Irq8279, CpuPin::Rst55, "a key in the 8279's FIFO: RST 5.5 (masked by the monitor, which polls)"},
+    {Source::TimerOut8155, CpuPin::Trap, "the monitor's single step: the 8155's timer traps after one user instruction"},
+    {Source::VectIntrKey, CpuPin::Rst75, "the VECT INTR key (rising edge latched by the 8085)"},
+    {Source::ResetKey, CpuPin::ResetIn, "the RESET key resets the CPU, and RESET OUT the 8155, 8279 and 8355"},
 }};
 
 // Six digits, 8279 display positions 0-5, leftmost first: four of address, two of data [UM].
