@@ -220,6 +220,8 @@ void add_run_command(CLI::App& app, int& status) {
         if (args->keys.empty() && line) run_time = time_argument(args->run_for, "--for", errors);
         if (!args->keys.empty()) {
             keys = expand_keys(args->keys, errors);
+            for (const script::KeyRef& k : keys)
+                if (std::string why = session.check_key(k); !why.empty()) errors.push_back(argument_error(args->keys, 0, why + " in --keys"));
             run_time = time_argument(args->run_for, "--for", errors);
         }
         // Then what the Session checks before anything runs, in the order the board is put

@@ -312,6 +312,13 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 value_in(c, c.values[0], -(std::int64_t{1} << (c.reg->width - 1)), c.reg->mask(), "value");
                 break;
             case Op::ExpectPort: value_in(c, c.values[0], 0, 0xFF, "value"); break;
+            case Op::Press:
+            case Op::Type:
+            case Op::KeyDown:
+            case Op::KeyUp:
+                for (const KeyRef& k : c.keys)
+                    if (std::string why = check_key(k); !why.empty()) err(c, col_of(c, k.name), std::move(why));
+                break;
             case Op::ExpectSymbol:
                 if (!known.count(c.name)) err(c, col_of(c, c.name), fmt::format("unknown symbol '{}'", c.name));
                 value_in(c, c.values[0], -32768, 0xFFFF, "value");
@@ -599,6 +606,17 @@ Session::Outcome Session::set_option(std::string_view name, bool fitted) {
 }
 
 std::string Session::describe_board() const { return machine_->describe_board(); }
+
+std::string Session::check_key(const KeyRef& key) const {
+    if (key.kind != Button::Matrix) return {};  // RESET and VECT INTR: every board has them
+    const board::Board& b = machine_->board();
+    std::string names;
+    for (const board::BoardKey& k : b.keys) {
+        if (k.wire == board::KeyWire::Matrix && k.key == key.key) return {};
+        names += (names.empty() ? "" : " ") + std::string(k.name);
+    }
+    return fmt::format("the {} has no key '{}' (its keys: {})", b.title, key.name, names);
+}
 
 Session::Outcome Session::print(const std::string& text) {
     output(text);

@@ -170,6 +170,7 @@ public:
     std::vector<std::pair<int, std::string>> check_value(const Value& v, std::int64_t lo, std::int64_t hi,
                                                          const char* what, const std::set<std::string>& known) const;
     std::string check_pin(const std::string& pin) const;  // a word of record signals (docs/signals.md)
+    std::string check_key(const KeyRef& key) const;       // a key this board has (the SDK-85 has no R, no PREV)
     // A value against the symbols and the machine of now (nullopt: `error` says why).
     std::optional<std::int64_t> value(const Value& v, std::string& error) const { return resolve(v, error); }
 
