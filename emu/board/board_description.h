@@ -53,6 +53,10 @@ struct DeviceRegion {
     std::string_view registers;     // how the chip's address lines see the addresses
     std::string_view option = {};   // fitted only with this board option; empty: always
     constexpr std::uint8_t offset(std::uint16_t address) const {
+        if (select == 0) return 0;
+        const unsigned low = static_cast<unsigned>(std::countr_zero(select));
+        if (const unsigned run = select >> low; (run & (run + 1)) == 0)  // adjacent lines (every board so far)
+            return static_cast<std::uint8_t>((address & select) >> low);
         unsigned out = 0, bit = 0;
         for (unsigned line = 0; line < 16; ++line)
             if (select >> line & 1u) out |= ((address >> line) & 1u) << bit++;
@@ -148,6 +152,9 @@ struct Board {
     std::span<const AxisWiring> tool;      // the machine tool on the first 8155; empty: none
     std::uint8_t undriven_port_ab;         // what the 8155's undriven port A/B pins read
     std::uint8_t undriven_port_c;          // and its six port C pins
+    // The serial terminal's line on SOD: true where the board's line driver inverts SOD (the line
+    // is high, at mark, while SOD is low). SID always follows the line.
+    bool sod_inverted = false;
 };
 
 constexpr bool has_option(const Board& b, std::string_view name) {

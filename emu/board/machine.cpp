@@ -367,7 +367,7 @@ void Machine::update_sod() {
     if (!probes_.empty() || serial_)
         cpu_.on_sod = [this](bool level) {
             const std::uint64_t t = cpu_.tstates();
-            if (serial_) serial_->sod(level, t);
+            if (serial_) serial_->sod(level != options_.board->sod_inverted, t);
             probe_look(t);
         };
     else
@@ -378,7 +378,7 @@ void Machine::connect_serial(periph::SerialTerminal& terminal) {
     if (serial_) throw std::logic_error("a serial terminal is already connected");
     attach(terminal);
     serial_ = &terminal;
-    terminal.set_sod_level(cpu_.sod());
+    terminal.set_sod_level(cpu_.sod() != options_.board->sod_inverted);
     terminal.on_txd([this](bool level, std::uint64_t t) {
         cpu_.set_sid(level);
         probe_look(t);

@@ -126,6 +126,10 @@ inline constexpr Board kSdk85{
     {},    // no machine tool: the 8155's ports are the user's
     0xFF,
     0x3F,
+    // The TTY interface [UM, TTY interface; converter circuit for an RS-232C port]: SOD drives the
+    // 20 mA loop through one transistor, which inverts it; the receive side turns the loop's
+    // current into SID high (mark) without inverting. MAME's driver inverts SOD likewise.
+    true,
 };
 
 }  // namespace alp85::board

@@ -9,6 +9,8 @@
 
 #include "emu/board/board_map.h"
 #include "emu/board/machine.h"
+#include "emu/board/snapshot_file.h"
+#include "peripherals/serial_terminal.h"
 
 namespace alp85::test {
 namespace {
@@ -197,6 +199,51 @@ TEST(Sdk85Machine, The8155PortsRamAndTimerToTrap) {
     EXPECT_TRUE(m.poke(0x2800, 0x42));
     EXPECT_EQ(m.peek(0x2F00), 0x42);  // mirrored through 2FFFH
     EXPECT_FALSE(m.set_option("expansion", true));  // the ALP 85's option, not the SDK-85's
+}
+
+// An SDK-85 snapshot restores onto another SDK-85 (its ROM, its second 8155, the 8279's digits),
+// and a machine of the other board refuses it and the other way round: the SDK-85 has an
+// expansion ROM section (EXPR) and a second 8155 (RIO2) the ALP 85 lacks, the ALP 85 a 4 KB RAM.
+TEST(Sdk85Machine, SnapshotsStayOnTheirBoard) {
+    Machine m(sdk85_options());
+    boot_sdk85(m, {0x3E, 0x90, 0x32, 0x00, 0x19, 0x3E, 0x60, 0x32, 0x00, 0x18, 0x76});  // 1 (60H) in digit 0
+    m.run_for(Machine::tstates_from_ms(1), [&] { return m.cpu().halted(); });
+    ASSERT_EQ(m.display_text(), "1     ");
+    const std::vector<std::uint8_t> bytes = m.snapshot_bytes();
+    Machine copy(sdk85_options());
+    copy.restore_bytes(bytes);
+    EXPECT_EQ(copy.display_text(), "1     ");
+    EXPECT_EQ(copy.peek(0x0000), 0xC3);
+    EXPECT_EQ(copy.now(), m.now());
+    Machine alp;
+    EXPECT_THROW(alp.restore_bytes(bytes), SnapshotError);
+    EXPECT_THROW(copy.restore_bytes(alp.snapshot_bytes()), SnapshotError);
+    EXPECT_EQ(copy.display_text(), "1     ");  // a refused file changes nothing
+}
+
+// The SDK-85's TTY driver inverts SOD (docs/board.md): SOD low after RESET holds the line at mark,
+// where a terminal receives nothing; SOD set high (SIM with C0H: SOD enable and SOD = 1) holds it
+// at space, which the terminal takes as a character with a framing error (a break) one frame
+// later. The ALP 85 wires SOD straight: there SOD high is the idle line.
+TEST(Sdk85Machine, SodIsInvertedOnTheTtyLine) {
+    periph::UartFormat f;
+    f.baud = 9600;
+    for (const bool sod_high : {false, true}) {
+        Machine m(sdk85_options());
+        periph::SerialTerminal term(board::kCpuHz, f, 0);
+        m.connect_serial(term);
+        boot_sdk85(m, {0x3E, static_cast<std::uint8_t>(sod_high ? 0xC0 : 0x40), 0x30, 0x76});  // MVI A,xx ; SIM ; HLT
+        m.run_for(Machine::tstates_from_ms(5));  // 5 ms: about 5 frames at 9600 baud
+        EXPECT_EQ(term.received() > 0, sod_high) << "SOD " << sod_high;
+        EXPECT_EQ(term.errors() > 0, sod_high) << "SOD " << sod_high;
+    }
+    Machine alp;
+    periph::SerialTerminal term(board::kCpuHz, f, 0);
+    alp.connect_serial(term);
+    alp.load(0x0000, std::vector<std::uint8_t>{0x3E, 0xC0, 0x30, 0x76});
+    alp.reset();
+    alp.run_for(Machine::tstates_from_ms(5));
+    EXPECT_EQ(term.received(), 0u);
 }
 
 // One description changed in one place -- the ALP 85 with its 8279 on ports 10H/11H and GO moved
