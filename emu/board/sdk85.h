@@ -98,13 +98,12 @@ inline constexpr std::array<BoardKey, 24> kKeys{{
 
 // Six digits, 8279 display positions 0-5, leftmost first: four of address, two of data [UM].
 // Segment wiring [UM schematic]: OUT A0-A3 (display RAM bits 4-7) drive segments a-d, OUT B0-B3
-// (RAM bits 0-3) segments e, f, g and dp. Polarity, as seen from the display RAM: a segment lights
-// where its bit is 1. The 8279's outputs are active low and the kit's digit drivers invert them
-// again (MAME inverts the outputs it is given); the digit codes Intel's monitor writes decode to
-// the digits it shows (0-9, A-F) only with lit = 1 under this wiring, so that is the choice here.
+// (RAM bits 0-3) segments e, f, g and dp, through inverting drivers: a segment lights where its
+// display-RAM bit is 0. MAME's driver, which shows Intel's monitor's digits, decodes the 8279's
+// outputs (the display RAM as it is) so: inverted, then this bit order.
 inline constexpr DisplayWiring kDisplay{
-    6, {0, 1, 2, 3, 4, 5, 0, 0}, {4, 5, 6, 7, 0, 1, 2, 3}, false,
-    "A0-A3 = a-d, B0-B3 = e, f, g, dp, lit at 1 in display RAM; digits 0-3 address, 4-5 data"};
+    6, {0, 1, 2, 3, 4, 5, 0, 0}, {4, 5, 6, 7, 0, 1, 2, 3}, true,
+    "A0-A3 = a-d, B0-B3 = e, f, g, dp, lit at 0 in display RAM; digits 0-3 address, 4-5 data"};
 
 }  // namespace alp85::board::sdk85
 

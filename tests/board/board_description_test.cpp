@@ -118,19 +118,20 @@ void boot_sdk85(Machine& m, const std::vector<std::uint8_t>& code) {
 // Digits through the memory-mapped 8279: command 90H (8279 data sheet: 100 AI=1 AAAA=0000, write
 // display RAM from 0 with auto-increment) to 1900H, then six bytes to 1800H, the last through the
 // mirror 1A00H (A8 = 0: data). Segment codes worked out by hand with the SDK-85's wiring (a-d on
-// RAM bits 4-7, e f g dp on bits 0-3, lit at 1): 0 = abcdef = F3H, 1 = bc = 60H, 2 = abdeg = B5H,
-// 3 = abcdg = F4H, 4 = bcfg = 66H, 5 = acdfg = D6H. The status read at 1B00H (a mirror of 1900H)
+// RAM bits 4-7, e f g dp on bits 0-3, lit at 0): 0 = abcdef lit = bits 4-7, 0, 1 clear = 0CH,
+// 1 = bc = ~60H = 9FH, 2 = abdeg = ~B5H = 4AH, 3 = abcdg = ~F4H = 0BH, 4 = bcfg = ~66H = 99H,
+// 5 = acdfg = ~D6H = 29H. The status read at 1B00H (a mirror of 1900H)
 // with an empty FIFO and no clear running is 00H (data sheet: FIFO status word).
 TEST(Sdk85Machine, DigitsThroughTheMemoryMapped8279) {
     Machine m(sdk85_options());
     boot_sdk85(m, {
                       0x3E, 0x90, 0x32, 0x00, 0x19,  // MVI A,90H ; STA 1900H
-                      0x3E, 0xF3, 0x32, 0x00, 0x18,  // MVI A,F3H ; STA 1800H
-                      0x3E, 0x60, 0x32, 0x00, 0x18,  // 60H
-                      0x3E, 0xB5, 0x32, 0x00, 0x18,  // B5H
-                      0x3E, 0xF4, 0x32, 0x00, 0x18,  // F4H
-                      0x3E, 0x66, 0x32, 0x00, 0x18,  // 66H
-                      0x3E, 0xD6, 0x32, 0x00, 0x1A,  // D6H to the mirror 1A00H
+                      0x3E, 0x0C, 0x32, 0x00, 0x18,  // MVI A,0CH ; STA 1800H
+                      0x3E, 0x9F, 0x32, 0x00, 0x18,  // 9FH
+                      0x3E, 0x4A, 0x32, 0x00, 0x18,  // 4AH
+                      0x3E, 0x0B, 0x32, 0x00, 0x18,  // 0BH
+                      0x3E, 0x99, 0x32, 0x00, 0x18,  // 99H
+                      0x3E, 0x29, 0x32, 0x00, 0x1A,  // 29H to the mirror 1A00H
                       0x3A, 0x00, 0x1B,              // LDA 1B00H (status, mirror of 1900H)
                       0x32, 0xF0, 0x20,              // STA 20F0H
                       0x76,                          // HLT
@@ -206,7 +207,18 @@ TEST(Sdk85Machine, The8155PortsRamAndTimerToTrap) {
 // expansion ROM section (EXPR) and a second 8155 (RIO2) the ALP 85 lacks, the ALP 85 a 4 KB RAM.
 TEST(Sdk85Machine, SnapshotsStayOnTheirBoard) {
     Machine m(sdk85_options());
-    boot_sdk85(m, {0x3E, 0x90, 0x32, 0x00, 0x19, 0x3E, 0x60, 0x32, 0x00, 0x18, 0x76});  // 1 (60H) in digit 0
+    // Clear the display RAM to FFH (8279 command 110 1 11 0 0 = DCH: clear display, CD = 11 all
+    // ones, dark at lit-at-0), wait while the status's DU bit (bit 7) says the clear runs, then 1
+    // (9FH) in digit 0.
+    boot_sdk85(m, {
+                      0x3E, 0xDC, 0x32, 0x00, 0x19,  // 2000: MVI A,0DCH ; STA 1900H
+                      0x3A, 0x00, 0x19,              // 2005: LDA 1900H
+                      0xE6, 0x80,                    //       ANI 80H
+                      0xC2, 0x05, 0x20,              //       JNZ 2005H
+                      0x3E, 0x90, 0x32, 0x00, 0x19,  //       MVI A,90H ; STA 1900H
+                      0x3E, 0x9F, 0x32, 0x00, 0x18,  //       MVI A,9FH ; STA 1800H
+                      0x76,
+                  });
     m.run_for(Machine::tstates_from_ms(1), [&] { return m.cpu().halted(); });
     ASSERT_EQ(m.display_text(), "1     ");
     const std::vector<std::uint8_t> bytes = m.snapshot_bytes();
