@@ -18,8 +18,8 @@
 namespace alp85::board {
 
 // What a memory region is for the Machine's storage (Machine::storage): its own EPROM or RAM, or
-// the RAM inside a chip (an 8155's 256 bytes).
-enum class Memory : std::uint8_t { MonitorEprom, UserEprom, Ram, Ram8155, ExpansionEprom, ExpansionRom, Ram8155Expansion };
+// the memory inside a chip (an 8155's 256 bytes of RAM, an 8355's 2 KB of ROM).
+enum class Memory : std::uint8_t { MonitorEprom, UserEprom, Ram, Ram8155, ExpansionEprom, ExpansionRom, Ram8155Expansion, Rom8355 };
 enum class MemoryKind : std::uint8_t { Rom, Ram };
 
 struct MemoryRegion {
@@ -37,7 +37,7 @@ struct MemoryRegion {
 };
 
 // The chips a board may carry; `unit` tells two of one kind apart (the SDK-85's second 8155).
-enum class Device : std::uint8_t { Kdc8279, Rio8155 };
+enum class Device : std::uint8_t { Kdc8279, Rio8155, Rom8355 };
 enum class Space : std::uint8_t { Io, Memory };
 
 // A chip in I/O or memory space on addresses first..last: the chip sees as its register number

@@ -23,7 +23,8 @@
 namespace alp85::board::sdk85 {
 
 inline constexpr std::array<MemoryRegion, 4> kMemory{{
-    {Memory::MonitorEprom, 0x0000, 0x0800, MemoryKind::Rom, "monitor", "2 KB monitor ROM (8355, chip select 0)", "MON ", 0,
+    // The 8355's own ROM; the board saves it with its memories (snapshot section MON).
+    {Memory::Rom8355, 0x0000, 0x0800, MemoryKind::Rom, "monitor", "2 KB monitor ROM (8355, chip select 0)", "MON ", 0,
      {}, "[UM] 0000H-07FFH; the 8085 starts at 0000H"},
     {Memory::ExpansionRom, 0x0800, 0x0800, MemoryKind::Rom, "expansion", "2 KB expansion ROM socket (8755A, chip select 1)",
      "EXPR", 0, {}, "[UM] 0800H-0FFFH; an empty socket reads FFH, as an erased part does"},
@@ -38,7 +39,7 @@ inline constexpr std::array<BoardOption, 1> kOptions{{
     {"ram2", "the second 8155 (RAM 2800H-28FFH, ports 28H-2DH) in the expansion socket, empty on the kit as sold"},
 }};
 
-inline constexpr std::array<DeviceRegion, 3> kDevices{{
+inline constexpr std::array<DeviceRegion, 4> kDevices{{
     {Device::Kdc8279, 0, Space::Memory, 0x1800, 0x1FFF, 0x0100, "8279",
      "memory-mapped, A0 = A8: 1800H data, 1900H command/status (even/odd pages of 1800H-1FFFH mirror them)"},
     // Ports 26H/27H also select the chip (AD2-AD0 = 110/111), registers the data sheet does not
@@ -47,6 +48,10 @@ inline constexpr std::array<DeviceRegion, 3> kDevices{{
      "AD0-AD2 = port - 20H: 20H command/status, 21H port A, 22H port B, 23H port C, 24H timer low, 25H timer high"},
     {Device::Rio8155, 1, Space::Io, 0x28, 0x2D, 0x0007, "8155b",
      "the second 8155: 28H command/status, 29H-2BH ports A-C, 2CH-2DH timer", "ram2"},
+    // The monitor ROM's 8355 decodes AD1-AD0 (8355 data sheet); the 8205's block 0 is ports
+    // 00H-07H, so 04H-07H would mirror these: left unmapped, as the manual lists 00H-03H.
+    {Device::Rom8355, 0, Space::Io, 0x00, 0x03, 0x0003, "8355",
+     "AD1-AD0: 00H port A, 01H port B, 02H port A's direction, 03H port B's direction"},
 }};
 
 // [UM]: the first 8155's TIMER OUT is the monitor's single step, on TRAP; the

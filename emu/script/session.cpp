@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "emu/board/snapshot_file.h"
+#include "emu/program/rom_image.h"
 #include "emu/plot/plot.h"
 #include "asm/files/atomic_file.h"
 #include "emu/util/input_file.h"
@@ -404,6 +405,39 @@ Session::Outcome Session::load_monitor() {
     machine_->load(rom.segments);
     debugger_.program().add_table(rom.symbols);
     placed(rom.segments);
+    return {};
+}
+
+namespace {
+// The board's ROM at 0000H (its monitor's), where --rom goes.
+RomSpec rom_at_reset(const board::Board& b) {
+    for (const board::MemoryRegion& r : b.memory)
+        if (r.base == 0 && r.kind == board::MemoryKind::Rom) return {r.base, r.size};
+    return {};
+}
+}  // namespace
+
+std::string Session::check_rom(const std::filesystem::path& path) const {
+    try {
+        read_rom_image(resolve(path.string()), rom_at_reset(machine_->board()));
+    } catch (const LoadError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+Session::Outcome Session::load_rom(const std::filesystem::path& path) {
+    const Changed changed{debugger_};
+    const RomSpec spec = rom_at_reset(machine_->board());
+    try {
+        const RomImage image = read_rom_image(resolve(path.string()), spec);
+        const std::vector<ImageSegment> segments{{spec.base, image.bytes}};
+        machine_->load(segments);
+        if (image.assembly) debugger_.program().add_assembly(*image.assembly);
+        placed(segments);
+    } catch (const LoadError& e) {
+        return fail(e.what());
+    }
     return {};
 }
 

@@ -93,6 +93,10 @@ public:
     };
     Outcome boot(const Boot& b, BootReport* report = nullptr);
     Outcome load_monitor();
+    // The board's ROM at 0000H from the user's file (alp85 run --rom: a 2 KB .bin dump, Intel HEX or
+    // asm85 source; emu/program/rom_image.h); check_rom says why a file will not do ("" if it will).
+    Outcome load_rom(const std::filesystem::path& path);
+    std::string check_rom(const std::filesystem::path& path) const;
     Outcome load_firmware(const std::string& name);
     Outcome load_image(const std::filesystem::path& path, std::optional<std::uint16_t> address = {});
     Outcome reset();

@@ -31,7 +31,7 @@ const board::MemoryRegion* region(const board::Board& b, board::Memory id) {
 TEST(Sdk85Description, MemoryAndIoMapAsTheManualGives) {
     EXPECT_EQ(kSdk85.clock.crystal_hz, 6'144'000u);
     EXPECT_EQ(kSdk85.clock.cpu_hz(), 3'072'000u);
-    const auto* rom = region(kSdk85, board::Memory::MonitorEprom);
+    const auto* rom = region(kSdk85, board::Memory::Rom8355);
     ASSERT_TRUE(rom);
     EXPECT_EQ(rom->base, 0x0000);
     EXPECT_EQ(rom->size, 0x0800);
@@ -50,7 +50,7 @@ TEST(Sdk85Description, MemoryAndIoMapAsTheManualGives) {
     EXPECT_EQ(ram2->base, 0x2800);
     EXPECT_EQ(ram2->option, "ram2");
 
-    ASSERT_EQ(kSdk85.devices.size(), 3u);
+    ASSERT_EQ(kSdk85.devices.size(), 4u);
     const board::DeviceRegion& kdc = kSdk85.devices[0];
     EXPECT_EQ(kdc.device, board::Device::Kdc8279);
     EXPECT_EQ(kdc.space, board::Space::Memory);
@@ -67,6 +67,13 @@ TEST(Sdk85Description, MemoryAndIoMapAsTheManualGives) {
     EXPECT_EQ(rio2.last, 0x2D);
     EXPECT_EQ(rio2.unit, 1);
     EXPECT_EQ(rio2.option, "ram2");
+    // The 8355's ports: 00H port A, 01H port B, 02H and 03H their direction registers (AD1-AD0).
+    const board::DeviceRegion& rom_io = kSdk85.devices[3];
+    EXPECT_EQ(rom_io.device, board::Device::Rom8355);
+    EXPECT_EQ(rom_io.space, board::Space::Io);
+    EXPECT_EQ(rom_io.first, 0x00);
+    EXPECT_EQ(rom_io.last, 0x03);
+    EXPECT_EQ(rom_io.offset(0x02), 2);
 
     // TIMER OUT -> TRAP, VECT INTR -> RST 7.5, RESET -> RESET IN.
     const auto pin = [](board::Source s) {
