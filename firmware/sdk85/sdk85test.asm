@@ -390,10 +390,13 @@ RXW:    DCX     H               ;  6
 IDLEI:  EI
         JMP     IDLE
 
-FRAMER: RIM                     ; a framing error or a break: wait for mark, then listen again
-        ORA     A
-        JP      FRAMER
-        JMP     IDLEI
+FRAMER: RIM                     ; a framing error, a break, or no terminal at all (SID held
+        ORA     A               ; low, as the kit's switch S25 holds it with the keypad as the
+        JM      IDLEI           ; console): wait for mark, then listen again, serving the keys
+        LDA     KDCCMD          ; meanwhile
+        ANI     KSTCNT
+        JZ      FRAMER
+        JMP     KEY
 
 ; ---- send C: start bit, 8 data bits least significant first, stop bit ---------------------------
 ; Each bit goes out on SOD at a SIM, 1280 T-states after the last:
