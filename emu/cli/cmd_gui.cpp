@@ -96,6 +96,7 @@ void add_gui_command(CLI::App& app, int& status) {
         ->capture_default_str();
     add_motor_option(cmd, args->motor);
     add_board_option(cmd, args->board);
+    add_rom_option(cmd, args->o.rom);
     cmd->add_option("--serial", args->serial,
                     "A serial terminal on SID/SOD at BAUD[,FRAME] (as alp85 run --serial: 9600, 1200,7E1) and its Terminal "
                     "pane: what SOD sends is shown, what is typed there goes to SID");
@@ -156,6 +157,10 @@ void add_gui_command(CLI::App& app, int& status) {
         }
         args->o.motor = motor_model_of(args->motor);
         args->o.board = args->board;
+        if (!args->o.rom.empty() && args->board == "alp85") {
+            std::cerr << "alp85 gui: --rom is for --board sdk85 (the ALP 85's monitor is built in)\n";
+            return kUsageError;
+        }
         if (!args->o.out_dir.empty()) {
             std::error_code ec;
             std::filesystem::create_directories(args->o.out_dir, ec);

@@ -107,9 +107,7 @@ void add_run_command(CLI::App& app, int& status) {
                     "file as the positional arguments take it; may be repeated");
     add_motor_option(cmd, args->motor);
     add_board_option(cmd, args->board);
-    cmd->add_option("--rom", args->rom,
-                    "With --board sdk85: the ROM at 0000H-07FFH, a 2048-byte .bin dump, Intel HEX or asm85 source "
-                    "(your own copy of Intel's monitor, or a program of yours; docs/sdk85.md). The ALP 85's monitor is built in");
+    add_rom_option(cmd, args->rom);
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
     auto* vcd = add_output_option(cmd, outputs, "--vcd", args->vcd,
                                   "Record the board's pins from RESET to the end as a VCD file (GTKWave, PulseView; "

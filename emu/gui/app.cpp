@@ -239,6 +239,12 @@ void App::after_commands() {
 }
 
 int App::start() {
+    if (!o_.rom.empty()) {  // the board's ROM, before a script or the boot below (which ends in RESET)
+        if (const auto r = session_.load_rom(absolute(o_.rom)); r.status != script::Session::Status::Ok) {
+            std::cerr << "alp85 gui: --rom: " << r.message << '\n';
+            return 2;
+        }
+    }
     if (!o_.signals.empty()) {
         if (const auto r = open_signals(signals_, session_, o_.signals, o_.signals_ms); r.status != script::Session::Status::Ok) {
             std::cerr << "alp85 gui: --signals: " << r.message << '\n';

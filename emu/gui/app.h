@@ -24,6 +24,7 @@ struct GuiOptions {
     int speed = 1;                      // index into kSpeeds (controls.h)
     periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
     std::string board = "alp85";        // --board: the board to build (alp85, sdk85)
+    std::string rom;                    // --rom: that board's ROM at 0000H (the user's file; sdk85)
     std::string out_dir;                // where the script's files go (as alp85 script --out-dir)
     bool debug = false;                 // the debugger's panes in place of the machine tool's views
     double scale = 0;                   // the window's first size: layout x scale; 0: fit the screen
