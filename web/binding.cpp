@@ -25,7 +25,6 @@
 #include "emu/front/toolpath.h"
 #include "emu/front/views.h"
 #include "emu/program/firmware.h"
-#include "emu/program/rom_image.h"
 #include "emu/script/session.h"
 
 namespace alp85::web {
@@ -105,7 +104,7 @@ public:
     int digits() const { return static_cast<int>(front::display_digits(session_)); }
 
     // Load ROM...: the user's file (a .bin, .hex or source, by its name's extension) checked by the
-    // ROM loader as --rom is (emu/program/rom_image.h), then put in the board's ROM through the
+    // ROM loader as --rom is, then put in the board's ROM through the
     // session, RESET, and the board runs. The loader's refusal is returned for the page to show;
     // the board is then as it was.
     std::string load_rom(const std::string& file_name, const std::string& bytes) {
@@ -359,21 +358,12 @@ public:
     }
 
 private:
+    // The board's ROM from a file, through the Session's ROM loader (as --rom; a refusal leaves the
+    // board as it was), then RESET and the board runs.
     std::string boot_rom(const std::filesystem::path& file) {
-        const auto place = front::monitor_rom(session_);
-        if (!place) return "this board has no ROM to load";
-        try {
-            read_rom_image(file, RomSpec{place->base, place->size});
-        } catch (const LoadError& e) {
-            return e.what();
-        }
-        std::string ext = file.extension().string();
-        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (const auto o = session_.load_rom(file); o.status != script::Session::Status::Ok) return o.message;
         pause();
-        script::Session::Boot b;
-        b.monitor = false;
-        b.images.push_back({file, ext == ".bin" || ext == ".rom" ? std::optional<std::uint16_t>(place->base) : std::nullopt});
-        const auto o = session_.boot(b);
+        const auto o = session_.reset();
         path_.clear();
         after_load();
         start();

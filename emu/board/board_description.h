@@ -18,8 +18,8 @@
 namespace alp85::board {
 
 // What a memory region is for the Machine's storage (Machine::storage): its own EPROM or RAM, or
-// the RAM inside a chip (an 8155's 256 bytes).
-enum class Memory : std::uint8_t { MonitorEprom, UserEprom, Ram, Ram8155, ExpansionEprom, ExpansionRom, Ram8155Expansion };
+// the memory inside a chip (an 8155's 256 bytes of RAM, an 8355's 2 KB of ROM).
+enum class Memory : std::uint8_t { MonitorEprom, UserEprom, Ram, Ram8155, ExpansionEprom, ExpansionRom, Ram8155Expansion, Rom8355 };
 enum class MemoryKind : std::uint8_t { Rom, Ram };
 
 struct MemoryRegion {
@@ -37,7 +37,7 @@ struct MemoryRegion {
 };
 
 // The chips a board may carry; `unit` tells two of one kind apart (the SDK-85's second 8155).
-enum class Device : std::uint8_t { Kdc8279, Rio8155 };
+enum class Device : std::uint8_t { Kdc8279, Rio8155, Rom8355 };
 enum class Space : std::uint8_t { Io, Memory };
 
 // A chip in I/O or memory space on addresses first..last: the chip sees as its register number
@@ -53,6 +53,10 @@ struct DeviceRegion {
     std::string_view registers;     // how the chip's address lines see the addresses
     std::string_view option = {};   // fitted only with this board option; empty: always
     constexpr std::uint8_t offset(std::uint16_t address) const {
+        if (select == 0) return 0;
+        const unsigned low = static_cast<unsigned>(std::countr_zero(select));
+        if (const unsigned run = select >> low; (run & (run + 1)) == 0)  // adjacent lines (every board so far)
+            return static_cast<std::uint8_t>((address & select) >> low);
         unsigned out = 0, bit = 0;
         for (unsigned line = 0; line < 16; ++line)
             if (select >> line & 1u) out |= ((address >> line) & 1u) << bit++;
@@ -178,6 +182,9 @@ struct Board {
     std::span<const AxisWiring> tool;      // the machine tool on the first 8155; empty: none
     std::uint8_t undriven_port_ab;         // what the 8155's undriven port A/B pins read
     std::uint8_t undriven_port_c;          // and its six port C pins
+    // The serial terminal's line on SOD: true where the board's line driver inverts SOD (the line
+    // is high, at mark, while SOD is low). SID always follows the line.
+    bool sod_inverted = false;
 };
 
 constexpr bool has_option(const Board& b, std::string_view name) {

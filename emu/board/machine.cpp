@@ -95,7 +95,9 @@ private:
     std::function<void(std::uint64_t)> after_write_;
 };
 
-constexpr bool chip_ram(board::Memory id) { return id == board::Memory::Ram8155 || id == board::Memory::Ram8155Expansion; }
+constexpr bool chip_ram(board::Memory id) {  // memory inside a chip (chip_ram: the name older than the 8355)
+    return id == board::Memory::Ram8155 || id == board::Memory::Ram8155Expansion || id == board::Memory::Rom8355;
+}
 }  // namespace
 
 Machine::Machine() : Machine(Options{}) {}
@@ -127,11 +129,14 @@ Machine::~Machine() = default;
 void Machine::wire() {
     const board::Board& b = *options_.board;
     // A second 8155, where the board has a place for one: a part like the others, decoded while fitted.
-    for (const board::DeviceRegion& d : b.devices)
+    for (const board::DeviceRegion& d : b.devices) {
         if (d.device == board::Device::Rio8155 && d.unit == 1 && !rio2_) rio2_ = std::make_unique<I8155>("8155b", "RIO2");
+        if (d.device == board::Device::Rom8355 && !rom8355_) rom8355_ = std::make_unique<periph::I8355>();
+    }
     // The parts, in the order they are advanced, reset and saved.
     parts_ = {&rio_, &kdc_, &keypad_};
     if (rio2_) parts_.push_back(rio2_.get());
+    if (rom8355_) parts_.push_back(rom8355_.get());
     if (options_.machine_tool) parts_.push_back(&tool_);
     tool_.set_model(options_.motor);
     for (const board::DeviceRegion& r : b.devices) {
@@ -149,6 +154,7 @@ void Machine::wire() {
                 else
                     make(*rio2_);
                 break;
+            case board::Device::Rom8355: make(*rom8355_); break;
         }
     }
     fit({}, true);  // everything that is not an option
@@ -179,6 +185,8 @@ void Machine::wire() {
         return undriven(port);
     });
     if (rio2_) rio2_->set_input_callback([undriven](I8155::Port port, std::uint64_t) { return undriven(port); });
+    // Nothing on the board drives the 8355's port lines: pulled up, they read 1.
+    if (rom8355_) rom8355_->set_input_callback([ab = b.undriven_port_ab](periph::I8355::Port, std::uint64_t) { return ab; });
 }
 
 // Maps (or takes off the bus) every region and chip of one option; option {} is the board as built.
@@ -193,7 +201,7 @@ void Machine::fit(std::string_view option, bool fitted) {
             continue;
         }
         map_.push_back(r);
-        std::uint8_t* data = chip_ram(r.id) ? rio_unit(r.id == board::Memory::Ram8155 ? 0 : 1).ram().data() : stores_[i].data();
+        std::uint8_t* data = storage(r.id).data();
         for (std::uint32_t at = r.base; at < r.base + r.span(); at += r.size) {  // the decoder's mirrors
             if (r.kind == board::MemoryKind::Rom)
                 bus_.map_rom(at, r.size, data);
@@ -367,7 +375,7 @@ void Machine::update_sod() {
     if (!probes_.empty() || serial_)
         cpu_.on_sod = [this](bool level) {
             const std::uint64_t t = cpu_.tstates();
-            if (serial_) serial_->sod(level, t);
+            if (serial_) serial_->sod(level != options_.board->sod_inverted, t);
             probe_look(t);
         };
     else
@@ -378,7 +386,7 @@ void Machine::connect_serial(periph::SerialTerminal& terminal) {
     if (serial_) throw std::logic_error("a serial terminal is already connected");
     attach(terminal);
     serial_ = &terminal;
-    terminal.set_sod_level(cpu_.sod());
+    terminal.set_sod_level(cpu_.sod() != options_.board->sod_inverted);
     terminal.on_txd([this](bool level, std::uint64_t t) {
         cpu_.set_sid(level);
         probe_look(t);
@@ -440,6 +448,7 @@ std::span<std::uint8_t> Machine::storage(board::Memory id) {
         if (b.memory[i].id != id) continue;
         if (id == board::Memory::Ram8155) return rio_.ram();
         if (id == board::Memory::Ram8155Expansion) return rio2_ ? rio2_->ram() : std::span<std::uint8_t>{};
+        if (id == board::Memory::Rom8355) return rom8355_ ? rom8355_->rom() : std::span<std::uint8_t>{};
         return stores_[i];
     }
     return {};

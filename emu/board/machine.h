@@ -27,6 +27,7 @@
 #include "emu/board/input_queue.h"
 #include "peripherals/i8155.h"
 #include "peripherals/i8279.h"
+#include "peripherals/i8355.h"
 #include "peripherals/keypad.h"
 #include "peripherals/machine_tool.h"
 #include "peripherals/part.h"
@@ -201,6 +202,7 @@ public:
     periph::I8155& rio() { return rio_; }  // the 8155 (RAM-I/O-timer)
     const periph::I8155& rio() const { return rio_; }
     periph::I8155* rio2() { return rio2_.get(); }  // a second 8155, on a board that has a place for one
+    periph::I8355* rom8355() { return rom8355_.get(); }  // the ROM-I/O chip, on a board with one (the SDK-85)
 
     periph::I8279& kdc() { return kdc_; }  // the 8279 (keyboard/display controller)
     const periph::I8279& kdc() const { return kdc_; }
@@ -243,7 +245,6 @@ private:
 
     void wire();
     void fit(const std::string_view option, bool fitted);
-    periph::I8155& rio_unit(std::uint8_t unit) { return unit ? *rio2_ : rio_; }
     void drive(board::CpuPin pin, bool level, std::uint64_t t);
     void deliver_inputs(std::uint64_t now);
     void apply(const InputEvent& e);
@@ -276,6 +277,7 @@ private:
     I8085 cpu_;
     periph::I8155 rio_;
     std::unique_ptr<periph::I8155> rio2_;
+    std::unique_ptr<periph::I8355> rom8355_;
     periph::I8279 kdc_;
     periph::Keypad keypad_;
     periph::MachineTool tool_;

@@ -89,7 +89,9 @@ std::vector<std::uint8_t> Machine::snapshot_bytes() const {
     for (std::size_t i = 0; i < options_.board->memory.size(); ++i) {
         const board::MemoryRegion& r = options_.board->memory[i];
         if (!r.tag.empty() && (r.option.empty() || option(r.option)))
-            sections.push_back(memory_section(std::string(r.tag).c_str(), stores_[i]));
+            sections.push_back(memory_section(std::string(r.tag).c_str(),
+                                              r.id == board::Memory::Rom8355 ? std::span<const std::uint8_t>(rom8355_->rom())
+                                                                             : std::span<const std::uint8_t>(stores_[i])));
     }
     for (const periph::Part* p : parts_) {
         Section s{std::string(p->tag()), {}};
@@ -118,7 +120,7 @@ void Machine::restore_sections(const std::vector<std::uint8_t>& bytes) {
     for (std::size_t i = 0; i < options_.board->memory.size(); ++i) {
         const board::MemoryRegion& r = options_.board->memory[i];
         if (!r.tag.empty() && (r.option.empty() || option(r.option)))
-            load_memory(snapshot::find(sections, std::string(r.tag)), stores_[i], std::string(r.name).c_str());
+            load_memory(snapshot::find(sections, std::string(r.tag)), storage(r.id), std::string(r.name).c_str());
     }
     for (periph::Part* p : parts_) p->load(snapshot::find(sections, p->tag()).data);
     // The machine keeps its parts caught up with the CPU (sync_parts after every run), so a part

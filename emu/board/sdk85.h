@@ -23,7 +23,8 @@
 namespace alp85::board::sdk85 {
 
 inline constexpr std::array<MemoryRegion, 4> kMemory{{
-    {Memory::MonitorEprom, 0x0000, 0x0800, MemoryKind::Rom, "monitor", "2 KB monitor ROM (8355, chip select 0)", "MON ", 0,
+    // The 8355's own ROM; the board saves it with its memories (snapshot section MON).
+    {Memory::Rom8355, 0x0000, 0x0800, MemoryKind::Rom, "monitor", "2 KB monitor ROM (8355, chip select 0)", "MON ", 0,
      {}, "[UM] 0000H-07FFH; the 8085 starts at 0000H"},
     {Memory::ExpansionRom, 0x0800, 0x0800, MemoryKind::Rom, "expansion", "2 KB expansion ROM socket (8755A, chip select 1)",
      "EXPR", 0, {}, "[UM] 0800H-0FFFH; an empty socket reads FFH, as an erased part does"},
@@ -38,7 +39,7 @@ inline constexpr std::array<BoardOption, 1> kOptions{{
     {"ram2", "the second 8155 (RAM 2800H-28FFH, ports 28H-2DH) in the expansion socket, empty on the kit as sold"},
 }};
 
-inline constexpr std::array<DeviceRegion, 3> kDevices{{
+inline constexpr std::array<DeviceRegion, 4> kDevices{{
     {Device::Kdc8279, 0, Space::Memory, 0x1800, 0x1FFF, 0x0100, "8279",
      "memory-mapped, A0 = A8: 1800H data, 1900H command/status (even/odd pages of 1800H-1FFFH mirror them)"},
     // Ports 26H/27H also select the chip (AD2-AD0 = 110/111), registers the data sheet does not
@@ -47,6 +48,10 @@ inline constexpr std::array<DeviceRegion, 3> kDevices{{
      "AD0-AD2 = port - 20H: 20H command/status, 21H port A, 22H port B, 23H port C, 24H timer low, 25H timer high"},
     {Device::Rio8155, 1, Space::Io, 0x28, 0x2D, 0x0007, "8155b",
      "the second 8155: 28H command/status, 29H-2BH ports A-C, 2CH-2DH timer", "ram2"},
+    // The monitor ROM's 8355 decodes AD1-AD0 (8355 data sheet); the 8205's block 0 is ports
+    // 00H-07H, so 04H-07H would mirror these: left unmapped, as the manual lists 00H-03H.
+    {Device::Rom8355, 0, Space::Io, 0x00, 0x03, 0x0003, "8355",
+     "AD1-AD0: 00H port A, 01H port B, 02H port A's direction, 03H port B's direction"},
 }};
 
 // The keypad [UM]: scan lines SL0-2 (encoded, decoded on the
@@ -82,13 +87,12 @@ inline constexpr std::array<Wire, 4> kWiring{{
 
 // Six digits, 8279 display positions 0-5, leftmost first: four of address, two of data [UM].
 // Segment wiring [UM schematic]: OUT A0-A3 (display RAM bits 4-7) drive segments a-d, OUT B0-B3
-// (RAM bits 0-3) segments e, f, g and dp. Polarity, as seen from the display RAM: a segment lights
-// where its bit is 1. The 8279's outputs are active low and the kit's digit drivers invert them
-// again (MAME inverts the outputs it is given); the digit codes Intel's monitor writes decode to
-// the digits it shows (0-9, A-F) only with lit = 1 under this wiring, so that is the choice here.
+// (RAM bits 0-3) segments e, f, g and dp, through inverting drivers: a segment lights where its
+// display-RAM bit is 0. MAME's driver, which shows Intel's monitor's digits, decodes the 8279's
+// outputs (the display RAM as it is) so: inverted, then this bit order.
 inline constexpr DisplayWiring kDisplay{
-    6, {0, 1, 2, 3, 4, 5, 0, 0}, {4, 5, 6, 7, 0, 1, 2, 3}, false,
-    "A0-A3 = a-d, B0-B3 = e, f, g, dp, lit at 1 in display RAM; digits 0-3 address, 4-5 data"};
+    6, {0, 1, 2, 3, 4, 5, 0, 0}, {4, 5, 6, 7, 0, 1, 2, 3}, true,
+    "A0-A3 = a-d, B0-B3 = e, f, g, dp, lit at 0 in display RAM; digits 0-3 address, 4-5 data"};
 
 }  // namespace alp85::board::sdk85
 
@@ -110,6 +114,10 @@ inline constexpr Board kSdk85{
     {},    // no machine tool: the 8155's ports are the user's
     0xFF,
     0x3F,
+    // The TTY interface [UM, TTY interface; converter circuit for an RS-232C port]: SOD drives the
+    // 20 mA loop through one transistor, which inverts it; the receive side turns the loop's
+    // current into SID high (mark) without inverting. MAME's driver inverts SOD likewise.
+    true,
 };
 
 }  // namespace alp85::board

@@ -114,7 +114,7 @@ void add_debug_command(CLI::App& app, int& status) {
         bool no_history = false;
         std::string out_dir;
         std::string motor = "physical";
-        std::string board = "alp85";
+        std::string board = "alp85", rom;
         std::string max_time = "1h";
     };
     auto args = std::make_shared<Args>();
@@ -128,6 +128,7 @@ void add_debug_command(CLI::App& app, int& status) {
     cmd->add_flag("--no-history", args->no_history, "No snapshots for reverse execution");
     add_motor_option(cmd, args->motor);
     add_board_option(cmd, args->board);
+    add_rom_option(cmd, args->rom);
     add_max_time_option(cmd, args->max_time);
     cmd->add_option("--out-dir", args->out_dir, "Folder for the files save, restore, record and plot write");
     cmd->footer(
@@ -198,6 +199,16 @@ void add_debug_command(CLI::App& app, int& status) {
             boot.images.push_back({std::filesystem::absolute(f), std::nullopt});
         }
         if (!args->script.empty()) shell.session().add_input(std::filesystem::absolute(args->script), "the script");
+        if (!args->rom.empty()) {  // the board's ROM, before the programs and the RESET
+            std::string why = args->board == "alp85" ? "--rom is for --board sdk85 (the ALP 85's monitor is built in)"
+                                                     : shell.session().check_rom(std::filesystem::absolute(args->rom));
+            if (why.empty()) why = shell.session().load_rom(std::filesystem::absolute(args->rom)).message;
+            if (!why.empty()) {
+                std::cerr << argument_error("alp85 debug", args->rom, "--rom: " + why);
+                status = kUsageError;
+                return;
+            }
+        }
         if (const auto booted = shell.session().boot(boot); booted.status != script::Session::Status::Ok) {
             std::cerr << "alp85 debug: " << booted.message << '\n';
             status = kUsageError;

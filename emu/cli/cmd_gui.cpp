@@ -97,9 +97,7 @@ void add_gui_command(CLI::App& app, int& status) {
         ->capture_default_str();
     add_motor_option(cmd, args->motor);
     add_board_option(cmd, args->board);
-    cmd->add_option("--rom", args->o.rom,
-                    "With --board sdk85: the monitor ROM at 0000H, your file: a .bin of 2048 bytes, a .hex or a source "
-                    "(docs/sdk85.md). The ALP 85's monitor is built in");
+    add_rom_option(cmd, args->o.rom);
     cmd->add_option("--serial", args->serial,
                     "A serial terminal on SID/SOD at BAUD[,FRAME] (as alp85 run --serial: 9600, 1200,7E1) and its Terminal "
                     "pane: what SOD sends is shown, what is typed there goes to SID");

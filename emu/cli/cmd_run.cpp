@@ -107,9 +107,7 @@ void add_run_command(CLI::App& app, int& status) {
                     "file as the positional arguments take it; may be repeated");
     add_motor_option(cmd, args->motor);
     add_board_option(cmd, args->board);
-    cmd->add_option("--rom", args->rom,
-                    "With --board sdk85: the monitor ROM image at 0000H, a .bin of 2048 bytes (your own copy of "
-                    "Intel's monitor, or a program of yours; docs/board.md). The ALP 85's monitor is built in");
+    add_rom_option(cmd, args->rom);
     cmd->add_flag("--text", args->text, "Show the display as text only (no seven-segment art)");
     auto* vcd = add_output_option(cmd, outputs, "--vcd", args->vcd,
                                   "Record the board's pins from RESET to the end as a VCD file (GTKWave, PulseView; "
@@ -168,17 +166,9 @@ void add_run_command(CLI::App& app, int& status) {
         so.board = board_of(args->board);
         // The built-in monitor is the ALP 85's; another board's ROM is the user's (--rom).
         if (args->board != "alp85") args->no_monitor = true;
-        if (!args->rom.empty()) {
-            std::string why = input_file_problem(args->rom);
-            if (why.empty() && args->board == "alp85")
-                why = "--rom is for --board sdk85 (the ALP 85's monitor is built in; a program of yours goes in as a positional argument)";
-            if (why.empty() && std::filesystem::path(args->rom).extension() != ".bin")
-                why = fmt::format("--rom {}: not a .bin ROM image (raw bytes, 2048 of them)", args->rom);
-            if (why.empty())
-                if (const auto size = std::filesystem::file_size(args->rom); size != 0x800)
-                    why = fmt::format("--rom {}: {} bytes; a monitor ROM image for 0000H-07FFH has 2048", args->rom, size);
-            if (!why.empty()) errors.push_back(argument_error(args->rom, 0, why));
-        }
+        if (!args->rom.empty() && args->board == "alp85")
+            errors.push_back(argument_error(args->rom, 0, "--rom is for --board sdk85 (the ALP 85's monitor is built in; a program "
+                                                          "of yours goes in as a positional argument)"));
         so.base_dir = "";  // paths as the user typed them
         so.out = &report;
         if (firmware::have_monitor()) so.monitor_rom = firmware::monitor;
@@ -220,6 +210,8 @@ void add_run_command(CLI::App& app, int& status) {
         if (args->keys.empty() && line) run_time = time_argument(args->run_for, "--for", errors);
         if (!args->keys.empty()) {
             keys = expand_keys(args->keys, errors);
+            for (const script::KeyRef& k : keys)
+                if (std::string why = session.check_key(k); !why.empty()) errors.push_back(argument_error(args->keys, 0, why + " in --keys"));
             run_time = time_argument(args->run_for, "--for", errors);
         }
         // Then what the Session checks before anything runs, in the order the board is put
@@ -227,6 +219,9 @@ void add_run_command(CLI::App& app, int& status) {
         // defined by what loads before them), the pins, and the recording's file.
         if (errors.empty()) {
             std::set<std::string> known;
+            if (!args->rom.empty())  // the ROM loader's reasons (docs/sdk85.md): missing, short, not a ROM image
+                if (std::string why = session.check_rom(args->rom); !why.empty())
+                    errors.push_back(argument_error(args->rom, 0, "--rom: " + why));
             if (!args->no_monitor)
                 if (std::string why = session.check_monitor(known); !why.empty())
                     errors.push_back(error_at("", "", std::move(why)));
@@ -293,7 +288,7 @@ void add_run_command(CLI::App& app, int& status) {
         };
         const auto steps = std::vector<std::function<Outcome()>>{
             [&] { return args->no_monitor ? Outcome{} : session.load_monitor(); },
-            [&] { return args->rom.empty() ? Outcome{} : session.load_image(args->rom, std::uint16_t{0x0000}); },
+            [&] { return args->rom.empty() ? Outcome{} : session.load_rom(args->rom); },
             [&] {
                 for (const std::string& f : args->firmware)
                     if (Outcome o = session.load_firmware(f); o.status != script::Session::Status::Ok) return o;

@@ -93,6 +93,8 @@ periph::MachineTool::MotorModel motor_model_of(const std::string& motor);
 // --board NAME (run, script, debug, gui, dap): the board to build, alp85 (the default) or sdk85;
 // an unknown name is a usage error listing the boards. board_of() gives the description it names.
 CLI::Option* add_board_option(CLI::App* cmd, std::string& board);
+// --rom FILE (run, debug, gui): the ROM at 0000H of a board whose ROM is the user's (--board sdk85).
+CLI::Option* add_rom_option(CLI::App* cmd, std::string& rom);
 const board::Board* board_of(const std::string& board);
 
 // --max-time TIME (script, debug): the machine time a session may run, "1h" by default (a number

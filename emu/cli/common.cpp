@@ -120,6 +120,13 @@ CLI::Option* add_board_option(CLI::App* cmd, std::string& board) {
         ->capture_default_str();
 }
 
+CLI::Option* add_rom_option(CLI::App* cmd, std::string& rom) {
+    return cmd->add_option("--rom", rom,
+                           "With --board sdk85: the ROM at 0000H-07FFH, a 2048-byte .bin dump, Intel HEX or asm85 source "
+                           "(your own copy of Intel's monitor, or a program of yours; docs/sdk85.md). The ALP 85's monitor "
+                           "is built in");
+}
+
 const board::Board* board_of(const std::string& board) {
     const board::Board* b = board::find_board(board);
     return b ? b : board::kBoards.front();

@@ -214,7 +214,6 @@ private:
     bool panning_ = false;
     float pan_x_ = 0, pan_y_ = 0;
     bool table_input(const SDL_Event& e, const ImGuiIO& io);
-    script::Session::Boot::Image rom_image() const;
     bool key_map_ = false;
 };
 
@@ -244,18 +243,13 @@ void App::after_commands() {
     }
 }
 
-// --rom: the board's monitor ROM from the user's file, which the command line checked with the ROM
-// loader (emu/program/rom_image.h) before the window opened: a raw dump (.bin, .rom) at the ROM's
-// base, a .hex or a source at its own addresses.
-script::Session::Boot::Image App::rom_image() const {
-    std::string ext = std::filesystem::path(o_.rom).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    const auto place = monitor_rom(session_);
-    const bool raw = ext == ".bin" || ext == ".rom";
-    return {absolute(o_.rom), raw && place ? std::optional<std::uint16_t>(place->base) : std::nullopt};
-}
-
 int App::start() {
+    if (!o_.rom.empty()) {  // the board's ROM, before a script or the boot below (which ends in RESET)
+        if (const auto r = session_.load_rom(absolute(o_.rom)); r.status != script::Session::Status::Ok) {
+            std::cerr << "alp85 gui: --rom: " << r.message << '\n';
+            return 2;
+        }
+    }
     if (!o_.signals.empty()) {
         if (const auto r = open_signals(signals_, session_, o_.signals, o_.signals_ms); r.status != script::Session::Status::Ok) {
             std::cerr << "alp85 gui: --signals: " << r.message << '\n';
@@ -282,16 +276,6 @@ int App::start() {
             std::cerr << "alp85 gui: error: " << clash << "; nothing written\n";
             return 2;
         }
-        // The ROM in place before the script runs (a script on a board whose ROM is the user's).
-        if (!o_.rom.empty()) {
-            script::Session::Boot rom;
-            rom.monitor = false;
-            rom.images.push_back(rom_image());
-            if (!done(session_.boot(rom))) {
-                std::cerr << "alp85 gui: could not load --rom " << o_.rom << '\n';
-                return 2;
-            }
-        }
         session_.add_input(o_.script, "the script");
         for (const NamedPath& o : ro.outputs) session_.add_output(o.path, o.role);
         std::vector<script::ParseError> more;
@@ -308,7 +292,6 @@ int App::start() {
     // The built-in monitor and the thesis firmware are the ALP 85's; another board boots what it is given.
     const bool alp85 = o_.board == script::Session::default_board().name;
     boot.monitor = alp85;
-    if (!o_.rom.empty()) boot.images.push_back(rom_image());
     for (const auto& f : o_.firmware.empty() && alp85 ? std::vector<std::string>{"thesis-fixed"} : o_.firmware) {
         if (firmware::find(f)) boot.firmware.push_back(f);
         else boot.images.push_back({absolute(f), std::nullopt});

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "emu/board/snapshot_file.h"
+#include "emu/program/rom_image.h"
 #include "emu/plot/plot.h"
 #include "asm/files/atomic_file.h"
 #include "emu/util/input_file.h"
@@ -312,6 +313,13 @@ void Session::check(const std::vector<Command>& commands, std::vector<ParseError
                 value_in(c, c.values[0], -(std::int64_t{1} << (c.reg->width - 1)), c.reg->mask(), "value");
                 break;
             case Op::ExpectPort: value_in(c, c.values[0], 0, 0xFF, "value"); break;
+            case Op::Press:
+            case Op::Type:
+            case Op::KeyDown:
+            case Op::KeyUp:
+                for (const KeyRef& k : c.keys)
+                    if (std::string why = check_key(k); !why.empty()) err(c, col_of(c, k.name), std::move(why));
+                break;
             case Op::ExpectSymbol:
                 if (!known.count(c.name)) err(c, col_of(c, c.name), fmt::format("unknown symbol '{}'", c.name));
                 value_in(c, c.values[0], -32768, 0xFFFF, "value");
@@ -397,6 +405,39 @@ Session::Outcome Session::load_monitor() {
     machine_->load(rom.segments);
     debugger_.program().add_table(rom.symbols);
     placed(rom.segments);
+    return {};
+}
+
+namespace {
+// The board's ROM at 0000H (its monitor's), where --rom goes.
+RomSpec rom_at_reset(const board::Board& b) {
+    for (const board::MemoryRegion& r : b.memory)
+        if (r.base == 0 && r.kind == board::MemoryKind::Rom) return {r.base, r.size};
+    return {};
+}
+}  // namespace
+
+std::string Session::check_rom(const std::filesystem::path& path) const {
+    try {
+        read_rom_image(resolve(path.string()), rom_at_reset(machine_->board()));
+    } catch (const LoadError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+Session::Outcome Session::load_rom(const std::filesystem::path& path) {
+    const Changed changed{debugger_};
+    const RomSpec spec = rom_at_reset(machine_->board());
+    try {
+        const RomImage image = read_rom_image(resolve(path.string()), spec);
+        const std::vector<ImageSegment> segments{{spec.base, image.bytes}};
+        machine_->load(segments);
+        if (image.assembly) debugger_.program().add_assembly(*image.assembly);
+        placed(segments);
+    } catch (const LoadError& e) {
+        return fail(e.what());
+    }
     return {};
 }
 
@@ -599,6 +640,17 @@ Session::Outcome Session::set_option(std::string_view name, bool fitted) {
 }
 
 std::string Session::describe_board() const { return machine_->describe_board(); }
+
+std::string Session::check_key(const KeyRef& key) const {
+    if (key.kind != Button::Matrix) return {};  // RESET and VECT INTR: every board has them
+    const board::Board& b = machine_->board();
+    std::string names;
+    for (const board::BoardKey& k : b.keys) {
+        if (k.wire == board::KeyWire::Matrix && k.key == key.key) return {};
+        names += (names.empty() ? "" : " ") + std::string(k.name);
+    }
+    return fmt::format("the {} has no key '{}' (its keys: {})", b.title, key.name, names);
+}
 
 Session::Outcome Session::print(const std::string& text) {
     output(text);

@@ -93,6 +93,10 @@ public:
     };
     Outcome boot(const Boot& b, BootReport* report = nullptr);
     Outcome load_monitor();
+    // The board's ROM at 0000H from the user's file (alp85 run --rom: a 2 KB .bin dump, Intel HEX or
+    // asm85 source; emu/program/rom_image.h); check_rom says why a file will not do ("" if it will).
+    Outcome load_rom(const std::filesystem::path& path);
+    std::string check_rom(const std::filesystem::path& path) const;
     Outcome load_firmware(const std::string& name);
     Outcome load_image(const std::filesystem::path& path, std::optional<std::uint16_t> address = {});
     Outcome reset();
@@ -170,6 +174,7 @@ public:
     std::vector<std::pair<int, std::string>> check_value(const Value& v, std::int64_t lo, std::int64_t hi,
                                                          const char* what, const std::set<std::string>& known) const;
     std::string check_pin(const std::string& pin) const;  // a word of record signals (docs/signals.md)
+    std::string check_key(const KeyRef& key) const;       // a key this board has (the SDK-85 has no R, no PREV)
     // A value against the symbols and the machine of now (nullopt: `error` says why).
     std::optional<std::int64_t> value(const Value& v, std::string& error) const { return resolve(v, error); }
 

@@ -3,7 +3,7 @@
 ; Intel's monitor leans on: the memory-mapped 8279 (keys in, digits out), the single step
 ; (the 8155's timer pulse on TRAP after exactly one user instruction) and a serial line
 ; bit-banged on SID and SOD. docs/sdk85.md runs it:
-;       alp85 run --board sdk85 --rom build/firmware/sdk85/sdk85test.hex   (with --board, issue 38)
+;       alp85 run --board sdk85 --rom build/firmware/sdk85/sdk85test.hex
 ;
 ; ---- the board (the SDK-85's memory and I/O map, docs/sdk85.md) -------------------------------
 ;   0000H-07FFH ROM (the 8355): this program, ORG 0000H
@@ -42,7 +42,9 @@
 ;       keys 0-F: 00H-0FH; EXEC 10H, NEXT 11H, GO 12H, SUBST MEM 13H, EXAM REG 14H,
 ;       SINGLE STEP 15H (RESET and VECT INTR are not in the matrix).
 ; 3. A character received on SID is echoed on SOD: 2400 baud, 8 data bits, no parity, one stop
-;    bit (8N1), least significant bit first, the line idle at mark = 1 (SOD high; SID high).
+;    bit (8N1), least significant bit first, the line idle at mark = 1. The kit's TTY driver
+;    inverts SOD (one transistor into the 20 mA loop), so SOD is low at mark and high at space;
+;    SID follows the loop, high at mark (docs/board.md, "The SDK-85").
 ;    A character whose stop bit is a space (framing error, break) is not echoed. The program
 ;    receives a whole character, then sends it back, then listens again: leave a character's
 ;    time between characters (alp85 run --serial does by default). Keys and characters are
@@ -153,7 +155,7 @@ R1VEC:  RET
 
 ; ---- RESET ----------------------------------------------------------------------------------------
 START:  LXI     SP,MONSP
-        MVI     A,0C0H          ; SOD enable and SOD = 1: the serial line idles at mark
+        MVI     A,40H           ; SOD enable and SOD = 0: the (inverted) serial line idles at mark
         SIM
         CALL    KDCINI
         LXI     H,0
@@ -388,20 +390,24 @@ RXW:    DCX     H               ;  6
 IDLEI:  EI
         JMP     IDLE
 
-FRAMER: RIM                     ; a framing error or a break: wait for mark, then listen again
-        ORA     A
-        JP      FRAMER
-        JMP     IDLEI
+FRAMER: RIM                     ; a framing error, a break, or no terminal at all (SID held
+        ORA     A               ; low, as the kit's switch S25 holds it with the keypad as the
+        JM      IDLEI           ; console): wait for mark, then listen again, serving the keys
+        LDA     KDCCMD          ; meanwhile
+        ANI     KSTCNT
+        JZ      FRAMER
+        JMP     KEY
 
 ; ---- send C: start bit, 8 data bits least significant first, stop bit ---------------------------
 ; Each bit goes out on SOD at a SIM, 1280 T-states after the last:
-;   SIM 4, DCR 4, RZ 6, LXI + wait 24·TXN + 7, padding 22, STC 4, MOV 4, RAR 4, MOV 4, JMP 10,
-;   MVI 7, RAR 4 = 24·TXN + 80.
+;   SIM 4, DCR 4, RZ 6, LXI + wait 24·TXN + 7, padding 18, STC 4, MOV 4, RAR 4, MOV 4, JMP 10,
+;   CMC 4, MVI 7, RAR 4 = 24·TXN + 80.
 ; It returns as soon as the stop bit is on the line; the line stays at mark after it.
 TXCHR:  MVI     B,10            ;  7  start bit, 8 data bits, stop bit
         XRA     A               ;  4  CY = 0: the start bit (space)
-TXBIT:  MVI     A,80H           ;  7
-        RAR                     ;  4  A = CY·80H + 40H: SOD = the bit, SOD enable set
+TXBIT:  CMC                     ;  4  the driver inverts SOD: SOD = the bit's complement
+        MVI     A,80H           ;  7
+        RAR                     ;  4  A = CY·80H + 40H: SOD = not the bit, SOD enable set
         SIM                     ;  4  the bit on SOD
         DCR     B               ;  4
         RZ                      ;  6  the stop bit is out: done (12 when it returns)
@@ -410,9 +416,8 @@ TXW:    DCX     H               ;  6
         MOV     A,H             ;  4
         ORA     L               ;  4
         JNZ     TXW             ; 10  (24·TXN + 7 with the LXI)
-        MVI     A,0             ;  7  22 T-states of padding
+        MVI     A,0             ;  7  18 T-states of padding
         MVI     A,0             ;  7
-        NOP                     ;  4
         NOP                     ;  4
         STC                     ;  4  a 1 comes in behind the data: the stop bit
         MOV     A,C             ;  4

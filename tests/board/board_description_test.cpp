@@ -9,6 +9,8 @@
 
 #include "emu/board/board_map.h"
 #include "emu/board/machine.h"
+#include "emu/board/snapshot_file.h"
+#include "peripherals/serial_terminal.h"
 
 namespace alp85::test {
 namespace {
@@ -29,7 +31,7 @@ const board::MemoryRegion* region(const board::Board& b, board::Memory id) {
 TEST(Sdk85Description, MemoryAndIoMapAsTheManualGives) {
     EXPECT_EQ(kSdk85.clock.crystal_hz, 6'144'000u);
     EXPECT_EQ(kSdk85.clock.cpu_hz(), 3'072'000u);
-    const auto* rom = region(kSdk85, board::Memory::MonitorEprom);
+    const auto* rom = region(kSdk85, board::Memory::Rom8355);
     ASSERT_TRUE(rom);
     EXPECT_EQ(rom->base, 0x0000);
     EXPECT_EQ(rom->size, 0x0800);
@@ -48,7 +50,7 @@ TEST(Sdk85Description, MemoryAndIoMapAsTheManualGives) {
     EXPECT_EQ(ram2->base, 0x2800);
     EXPECT_EQ(ram2->option, "ram2");
 
-    ASSERT_EQ(kSdk85.devices.size(), 3u);
+    ASSERT_EQ(kSdk85.devices.size(), 4u);
     const board::DeviceRegion& kdc = kSdk85.devices[0];
     EXPECT_EQ(kdc.device, board::Device::Kdc8279);
     EXPECT_EQ(kdc.space, board::Space::Memory);
@@ -65,6 +67,13 @@ TEST(Sdk85Description, MemoryAndIoMapAsTheManualGives) {
     EXPECT_EQ(rio2.last, 0x2D);
     EXPECT_EQ(rio2.unit, 1);
     EXPECT_EQ(rio2.option, "ram2");
+    // The 8355's ports: 00H port A, 01H port B, 02H and 03H their direction registers (AD1-AD0).
+    const board::DeviceRegion& rom_io = kSdk85.devices[3];
+    EXPECT_EQ(rom_io.device, board::Device::Rom8355);
+    EXPECT_EQ(rom_io.space, board::Space::Io);
+    EXPECT_EQ(rom_io.first, 0x00);
+    EXPECT_EQ(rom_io.last, 0x03);
+    EXPECT_EQ(rom_io.offset(0x02), 2);
 
     // TIMER OUT -> TRAP, VECT INTR -> RST 7.5, RESET -> RESET IN.
     const auto pin = [](board::Source s) {
@@ -116,19 +125,20 @@ void boot_sdk85(Machine& m, const std::vector<std::uint8_t>& code) {
 // Digits through the memory-mapped 8279: command 90H (8279 data sheet: 100 AI=1 AAAA=0000, write
 // display RAM from 0 with auto-increment) to 1900H, then six bytes to 1800H, the last through the
 // mirror 1A00H (A8 = 0: data). Segment codes worked out by hand with the SDK-85's wiring (a-d on
-// RAM bits 4-7, e f g dp on bits 0-3, lit at 1): 0 = abcdef = F3H, 1 = bc = 60H, 2 = abdeg = B5H,
-// 3 = abcdg = F4H, 4 = bcfg = 66H, 5 = acdfg = D6H. The status read at 1B00H (a mirror of 1900H)
+// RAM bits 4-7, e f g dp on bits 0-3, lit at 0): 0 = abcdef lit = bits 4-7, 0, 1 clear = 0CH,
+// 1 = bc = ~60H = 9FH, 2 = abdeg = ~B5H = 4AH, 3 = abcdg = ~F4H = 0BH, 4 = bcfg = ~66H = 99H,
+// 5 = acdfg = ~D6H = 29H. The status read at 1B00H (a mirror of 1900H)
 // with an empty FIFO and no clear running is 00H (data sheet: FIFO status word).
 TEST(Sdk85Machine, DigitsThroughTheMemoryMapped8279) {
     Machine m(sdk85_options());
     boot_sdk85(m, {
                       0x3E, 0x90, 0x32, 0x00, 0x19,  // MVI A,90H ; STA 1900H
-                      0x3E, 0xF3, 0x32, 0x00, 0x18,  // MVI A,F3H ; STA 1800H
-                      0x3E, 0x60, 0x32, 0x00, 0x18,  // 60H
-                      0x3E, 0xB5, 0x32, 0x00, 0x18,  // B5H
-                      0x3E, 0xF4, 0x32, 0x00, 0x18,  // F4H
-                      0x3E, 0x66, 0x32, 0x00, 0x18,  // 66H
-                      0x3E, 0xD6, 0x32, 0x00, 0x1A,  // D6H to the mirror 1A00H
+                      0x3E, 0x0C, 0x32, 0x00, 0x18,  // MVI A,0CH ; STA 1800H
+                      0x3E, 0x9F, 0x32, 0x00, 0x18,  // 9FH
+                      0x3E, 0x4A, 0x32, 0x00, 0x18,  // 4AH
+                      0x3E, 0x0B, 0x32, 0x00, 0x18,  // 0BH
+                      0x3E, 0x99, 0x32, 0x00, 0x18,  // 99H
+                      0x3E, 0x29, 0x32, 0x00, 0x1A,  // 29H to the mirror 1A00H
                       0x3A, 0x00, 0x1B,              // LDA 1B00H (status, mirror of 1900H)
                       0x32, 0xF0, 0x20,              // STA 20F0H
                       0x76,                          // HLT
@@ -197,6 +207,62 @@ TEST(Sdk85Machine, The8155PortsRamAndTimerToTrap) {
     EXPECT_TRUE(m.poke(0x2800, 0x42));
     EXPECT_EQ(m.peek(0x2F00), 0x42);  // mirrored through 2FFFH
     EXPECT_FALSE(m.set_option("expansion", true));  // the ALP 85's option, not the SDK-85's
+}
+
+// An SDK-85 snapshot restores onto another SDK-85 (its ROM, its second 8155, the 8279's digits),
+// and a machine of the other board refuses it and the other way round: the SDK-85 has an
+// expansion ROM section (EXPR) and a second 8155 (RIO2) the ALP 85 lacks, the ALP 85 a 4 KB RAM.
+TEST(Sdk85Machine, SnapshotsStayOnTheirBoard) {
+    Machine m(sdk85_options());
+    // Clear the display RAM to FFH (8279 command 110 1 11 0 0 = DCH: clear display, CD = 11 all
+    // ones, dark at lit-at-0), wait while the status's DU bit (bit 7) says the clear runs, then 1
+    // (9FH) in digit 0.
+    boot_sdk85(m, {
+                      0x3E, 0xDC, 0x32, 0x00, 0x19,  // 2000: MVI A,0DCH ; STA 1900H
+                      0x3A, 0x00, 0x19,              // 2005: LDA 1900H
+                      0xE6, 0x80,                    //       ANI 80H
+                      0xC2, 0x05, 0x20,              //       JNZ 2005H
+                      0x3E, 0x90, 0x32, 0x00, 0x19,  //       MVI A,90H ; STA 1900H
+                      0x3E, 0x9F, 0x32, 0x00, 0x18,  //       MVI A,9FH ; STA 1800H
+                      0x76,
+                  });
+    m.run_for(Machine::tstates_from_ms(1), [&] { return m.cpu().halted(); });
+    ASSERT_EQ(m.display_text(), "1     ");
+    const std::vector<std::uint8_t> bytes = m.snapshot_bytes();
+    Machine copy(sdk85_options());
+    copy.restore_bytes(bytes);
+    EXPECT_EQ(copy.display_text(), "1     ");
+    EXPECT_EQ(copy.peek(0x0000), 0xC3);
+    EXPECT_EQ(copy.now(), m.now());
+    Machine alp;
+    EXPECT_THROW(alp.restore_bytes(bytes), SnapshotError);
+    EXPECT_THROW(copy.restore_bytes(alp.snapshot_bytes()), SnapshotError);
+    EXPECT_EQ(copy.display_text(), "1     ");  // a refused file changes nothing
+}
+
+// The SDK-85's TTY driver inverts SOD (docs/board.md): SOD low after RESET holds the line at mark,
+// where a terminal receives nothing; SOD set high (SIM with C0H: SOD enable and SOD = 1) holds it
+// at space, which the terminal takes as a character with a framing error (a break) one frame
+// later. The ALP 85 wires SOD straight: there SOD high is the idle line.
+TEST(Sdk85Machine, SodIsInvertedOnTheTtyLine) {
+    periph::UartFormat f;
+    f.baud = 9600;
+    for (const bool sod_high : {false, true}) {
+        Machine m(sdk85_options());
+        periph::SerialTerminal term(board::kCpuHz, f, 0);
+        m.connect_serial(term);
+        boot_sdk85(m, {0x3E, static_cast<std::uint8_t>(sod_high ? 0xC0 : 0x40), 0x30, 0x76});  // MVI A,xx ; SIM ; HLT
+        m.run_for(Machine::tstates_from_ms(5));  // 5 ms: about 5 frames at 9600 baud
+        EXPECT_EQ(term.received() > 0, sod_high) << "SOD " << sod_high;
+        EXPECT_EQ(term.errors() > 0, sod_high) << "SOD " << sod_high;
+    }
+    Machine alp;
+    periph::SerialTerminal term(board::kCpuHz, f, 0);
+    alp.connect_serial(term);
+    alp.load(0x0000, std::vector<std::uint8_t>{0x3E, 0xC0, 0x30, 0x76});
+    alp.reset();
+    alp.run_for(Machine::tstates_from_ms(5));
+    EXPECT_EQ(term.received(), 0u);
 }
 
 // One description changed in one place -- the ALP 85 with its 8279 on ports 10H/11H and GO moved

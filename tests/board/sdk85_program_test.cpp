@@ -1,7 +1,8 @@
 // The SDK-85 test program (firmware/sdk85/sdk85test.asm) on the SDK-85's chips, wired here by
 // hand as the SDK-85 user's manual maps them: the 8355's ROM at 0000H, the 8279 memory-mapped
 // (1800H data, 1900H command/status: A8), the 8155 at I/O 20H-25H with its RAM at 2000H, TIMER
-// OUT on TRAP, 8279 IRQ on RST 5.5, SID/SOD to a serial terminal, 3.072 MHz. Expected values:
+// OUT on TRAP, 8279 IRQ on RST 5.5, SID/SOD to a serial terminal (SOD through the kit's inverting
+// TTY driver, docs/board.md), 3.072 MHz. Expected values:
 // the step records against the assembler's own labels (the address of each instruction in the
 // order it runs), the display against the hex digits' segments on the SDK-85's wiring (a lit
 // segment is a 0 bit; a-d on bits 4-7, e-g on bits 0-2, dp on bit 3), the echo against the
@@ -52,9 +53,9 @@ public:
         kdc_.set_shift(false, 0);
         kdc_.set_cntl_stb(false, 0);
         tty_.on_txd([this](bool level, std::uint64_t) { cpu_.set_sid(level); });
-        cpu_.on_sod = [this](bool level) { tty_.sod(level, cpu_.tstates()); };
+        cpu_.on_sod = [this](bool level) { tty_.sod(!level, cpu_.tstates()); };  // the inverting driver
         cpu_.reset();
-        tty_.set_sod_level(cpu_.sod());
+        tty_.set_sod_level(!cpu_.sod());
         cpu_.set_sid(tty_.txd());
         for (periph::Part* p : parts()) p->reset(0);
     }

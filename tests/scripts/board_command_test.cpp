@@ -73,6 +73,20 @@ TEST(BoardCommand, LaterThanFirstOrUnknownIsAnError) {
     EXPECT_NE(errors[0].message.find("unknown board 'sdk86' (alp85, sdk85)"), std::string::npos) << errors[0].message;
 }
 
+// Keys are the board's: the SDK-85 has no R and no PREV (the ALP 85's), a script pressing one is
+// refused before it runs, at the key.
+TEST(BoardCommand, KeysAreTheBoards) {
+    OneScript s("board sdk85\npress R\n");
+    RunnerOptions o;
+    EXPECT_FALSE(s.prepare(o));
+    ASSERT_EQ(s.errors.size(), 1u);
+    EXPECT_EQ(s.errors[0].where.line, 2);
+    EXPECT_EQ(s.errors[0].where.col, 7);
+    EXPECT_NE(s.errors[0].message.find("the SDK-85 has no key 'R'"), std::string::npos) << s.errors[0].message;
+    OneScript t("board sdk85\ntype MEM 2 0 0 0 NEXT\npress RESET\n");
+    EXPECT_TRUE(t.prepare(o)) << (t.errors.empty() ? "" : t.errors[0].message);
+}
+
 // Options are the board's: the SDK-85 has ram2 (its second 8155), not the ALP 85's expansion EPROM.
 TEST(BoardCommand, OptionsAreTheBoards) {
     OneScript s("board sdk85\nexpect mem 2800H 0FFH\noption ram2 on\nset mem 2800H 5AH\nexpect mem 2F00H 5AH\n");
