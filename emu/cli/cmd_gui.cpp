@@ -17,7 +17,7 @@
 #include "emu/gui/app.h"
 #include "emu/gui/controls.h"
 #include "emu/gui/test_hooks.h"
-#include "emu/program/rom_image.h"
+#include "emu/script/session.h"
 
 namespace alp85::cli {
 namespace {
@@ -161,20 +161,16 @@ void add_gui_command(CLI::App& app, int& status) {
         args->o.motor = motor_model_of(args->motor);
         args->o.board = args->board;
         if (!args->o.rom.empty()) {  // refused before a window opens, by the loader every --rom goes through
-            const board::Board& b = *board_of(args->board);
-            const board::MemoryRegion* rom = nullptr;
-            for (const board::MemoryRegion& r : b.memory)
-                if (r.id == board::Memory::MonitorEprom) rom = &r;
-            if (&b == board::kBoards.front() || !rom) {
+            if (board_of(args->board) == board::kBoards.front()) {
                 std::cerr << argument_error("alp85 gui", args->o.rom,
                                             "--rom is for --board sdk85 (the ALP 85's monitor is built in; a program of "
                                             "yours goes in as a positional argument)");
                 return kUsageError;
             }
-            try {
-                read_rom_image(args->o.rom, RomSpec{rom->base, rom->size});
-            } catch (const LoadError& e) {
-                std::cerr << "alp85 gui: --rom: " << e.what() << '\n';
+            script::SessionOptions so;
+            so.board = board_of(args->board);
+            if (const std::string why = script::Session(so).check_rom(args->o.rom); !why.empty()) {
+                std::cerr << "alp85 gui: --rom: " << why << '\n';
                 return kUsageError;
             }
         }
