@@ -105,30 +105,22 @@ inline constexpr std::array<AxisWiring, 3> kToolWiring{{
      {5, true, "as bit 4"}},
 }};
 
+// The board's clock: a 6.144 MHz crystal on X1/X2; the 8085 divides by two. CLK OUT (3.072 MHz,
+// one pulse per T-state) drives the 8155's TIMER IN and the 8279's CLK. The firmware's DL loop
+// takes 3070 T-states: 0.999 ms at 3.072 MHz, the millisecond its arithmetic assumes.
+inline constexpr Clock kClock{6'144'000, "thesis firmware's DL loop: 3070 T-states = 0.999 ms at 3.072 MHz"};
+// SHIFT and CNTL/STB grounded (docs/peripherals.md): key codes carry 0 there.
+inline constexpr bool kShiftCntlHigh = false;
+// The undriven 8155 inputs (nothing on the board drives them): pulled up, so ports A and B read
+// FFH and the six-bit port C reads 3FH.
+inline constexpr std::uint8_t kUndrivenPortAB = 0xFF, kUndrivenPortC = 0x3F;
+
 }  // namespace alp85::board::alp85
 
 namespace alp85::board {
 
-// The board's clock: a 6.144 MHz crystal on X1/X2; the 8085 divides by two. CLK OUT (3.072 MHz,
-// one pulse per T-state) drives the 8155's TIMER IN and the 8279's CLK. The firmware's DL loop
-// takes 3070 T-states: 0.999 ms at 3.072 MHz, the millisecond its arithmetic assumes.
-//
-// The undriven 8155 inputs (nothing on the board drives them): pulled up, so ports A and B read
-// FFH and the six-bit port C reads 3FH.
-inline constexpr Board kAlp85{
-    "alp85",
-    "ALP 85 (METU 1985 thesis machine)",
-    {6'144'000, "thesis firmware's DL loop: 3070 T-states = 0.999 ms at 3.072 MHz"},
-    alp85::kMemory,
-    alp85::kDevices,
-    alp85::kWiring,
-    alp85::kKeys,
-    alp85::kDisplay,
-    alp85::kOptions,
-    false,  // SHIFT and CNTL/STB grounded (docs/peripherals.md): key codes carry 0 there
-    alp85::kToolWiring,
-    0xFF,
-    0x3F,
-};
+inline constexpr Board kAlp85{"alp85", "ALP 85 (METU 1985 thesis machine)", alp85::kClock, alp85::kMemory,
+                              alp85::kDevices, alp85::kWiring, alp85::kKeys, alp85::kDisplay, alp85::kOptions,
+                              alp85::kShiftCntlHigh, alp85::kToolWiring, alp85::kUndrivenPortAB, alp85::kUndrivenPortC};
 
 }  // namespace alp85::board

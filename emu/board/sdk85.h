@@ -94,30 +94,23 @@ inline constexpr DisplayWiring kDisplay{
     6, {0, 1, 2, 3, 4, 5, 0, 0}, {4, 5, 6, 7, 0, 1, 2, 3}, true,
     "A0-A3 = a-d, B0-B3 = e, f, g, dp, lit at 0 in display RAM; digits 0-3 address, 4-5 data"};
 
+// [UM]: a 6.144 MHz crystal; the 8085 runs at 3.072 MHz (325.5 ns per T-state),
+// which is also the 8155's TIMER IN and the 8279's CLK (CLK OUT).
+inline constexpr Clock kClock{6'144'000, "[UM] 6.144 MHz crystal, 3.072 MHz 8085"};
+inline constexpr bool kShiftCntlHigh = true;  // SHIFT and CNTL/STB tied high
+// The undriven 8155 inputs read as the ALP 85's (pulled up); no machine tool: the ports are the user's.
+inline constexpr std::uint8_t kUndrivenPortAB = 0xFF, kUndrivenPortC = 0x3F;
+// The TTY interface [UM, TTY interface; converter circuit for an RS-232C port]: SOD drives the
+// 20 mA loop through one transistor, which inverts it; the receive side turns the loop's
+// current into SID high (mark) without inverting. MAME's driver inverts SOD likewise.
+inline constexpr bool kSodInverted = true;
+
 }  // namespace alp85::board::sdk85
 
 namespace alp85::board {
 
-// [UM]: a 6.144 MHz crystal; the 8085 runs at 3.072 MHz (325.5 ns per T-state),
-// which is also the 8155's TIMER IN and the 8279's CLK (CLK OUT).
-inline constexpr Board kSdk85{
-    "sdk85",
-    "SDK-85",
-    {6'144'000, "[UM] 6.144 MHz crystal, 3.072 MHz 8085"},
-    sdk85::kMemory,
-    sdk85::kDevices,
-    sdk85::kWiring,
-    sdk85::kKeys,
-    sdk85::kDisplay,
-    sdk85::kOptions,
-    true,  // SHIFT and CNTL/STB tied high
-    {},    // no machine tool: the 8155's ports are the user's
-    0xFF,
-    0x3F,
-    // The TTY interface [UM, TTY interface; converter circuit for an RS-232C port]: SOD drives the
-    // 20 mA loop through one transistor, which inverts it; the receive side turns the loop's
-    // current into SID high (mark) without inverting. MAME's driver inverts SOD likewise.
-    true,
-};
+inline constexpr Board kSdk85{"sdk85", "SDK-85", sdk85::kClock, sdk85::kMemory, sdk85::kDevices, sdk85::kWiring,
+                              sdk85::kKeys, sdk85::kDisplay, sdk85::kOptions, sdk85::kShiftCntlHigh, {},
+                              sdk85::kUndrivenPortAB, sdk85::kUndrivenPortC, sdk85::kSodInverted};
 
 }  // namespace alp85::board
