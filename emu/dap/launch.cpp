@@ -35,8 +35,10 @@ LaunchConfig parse_launch(const Json& args) {
     };
     if (c.firmware.empty() && !c.program.empty() && firmware::find(c.program) && !file(c.program)) std::swap(c.firmware, c.program);
     else if (c.program.empty() && !c.firmware.empty() && !firmware::find(c.firmware) && file(c.firmware)) std::swap(c.firmware, c.program);
-    if (c.program.empty() && c.firmware.empty())
-        throw RequestError("launch needs 'program' (a .asm or .hex file) or 'firmware' (one built in, e.g. thesis-fixed)");
+    c.rom = opt_string(args, "rom").value_or("");
+    if (c.program.empty() && c.firmware.empty() && c.rom.empty())
+        throw RequestError("launch needs 'program' (a .asm or .hex file), 'firmware' (one built in, e.g. thesis-fixed) "
+                           "or, on a board whose ROM is yours, 'rom'");
     for (const auto& [name, value] : opt_object(args, "defines").items()) {
         if (value.is_number_integer()) c.defines.emplace_back(name, std::to_string(value.get<std::int64_t>()));
         else if (value.is_string()) c.defines.emplace_back(name, value.get<std::string>());
@@ -46,6 +48,10 @@ LaunchConfig parse_launch(const Json& args) {
     if (!script::Session::find_board(c.board))
         throw RequestError(fmt::format("argument 'board': no board '{}' ({})", c.board, script::Session::board_names()));
     c.monitor = opt_bool(args, "monitor").value_or(c.board == script::Session::default_board().name);
+    if (!c.rom.empty() && c.board == script::Session::default_board().name)
+        throw RequestError("argument 'rom' is for \"board\": \"sdk85\" (the ALP 85's monitor is built in; a program "
+                           "of yours goes in 'program')");
+    if (!c.rom.empty() && c.monitor) throw RequestError("argument 'rom' replaces the monitor: not with \"monitor\": true");
     const std::string motor = opt_string(args, "motor").value_or("physical");
     if (motor != "ideal" && motor != "physical") throw RequestError("argument 'motor' must be \"ideal\" or \"physical\"");
     c.motor = motor == "ideal" ? periph::MachineTool::MotorModel::Ideal : periph::MachineTool::MotorModel::Physical;
@@ -68,6 +74,12 @@ void load_program(const LaunchConfig& config, script::Session& session, ProgramM
     script::Session::Boot boot;
     boot.motor = config.motor;
     boot.monitor = config.monitor;
+    if (!config.rom.empty()) {
+        std::filesystem::path rom = config.rom;
+        if (rom.is_relative()) rom = config.cwd / rom;
+        session.add_input(rom, "the board's ROM");  // the REPL's save, record, plot must not replace it
+        boot.rom = std::filesystem::absolute(rom);
+    }
     boot.pc_at_program = !config.monitor;
     if (config.monitor && !firmware::have_monitor())
         throw RequestError("this alp85 was built without the monitor ROM (set \"monitor\": false)");

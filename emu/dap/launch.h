@@ -25,6 +25,7 @@ struct LaunchConfig {
                                     // its END address (or its first byte)
     periph::MachineTool::MotorModel motor = periph::MachineTool::MotorModel::Physical;
     std::string board = "alp85";    // the board to build (alp85, sdk85); another than the ALP 85 has no built-in monitor
+    std::string rom;                // that board's ROM from the user's file (.bin, .hex, .asm), as alp85 run --rom
     std::string keys;               // typed after the boot ("R 7 0800 EXEC 0012")
     std::uint64_t boot = 0;         // T-states from RESET to the first key (default 500 ms)
     std::string script;             // a command-language file run before the start

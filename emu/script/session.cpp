@@ -372,6 +372,8 @@ Session::Outcome Session::boot_steps(const Boot& b) {
         if (Outcome o = set_motor(*b.motor); o.status != Status::Ok) return o;
     if (b.monitor)
         if (Outcome o = load_monitor(); o.status != Status::Ok) return o;
+    if (!b.rom.empty())
+        if (Outcome o = load_rom(b.rom); o.status != Status::Ok) return o;
     std::optional<std::uint16_t> start;  // where a board without the monitor starts
     for (const std::string& f : b.firmware) {
         if (Outcome o = load_firmware(f); o.status != Status::Ok) return o;

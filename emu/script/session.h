@@ -67,6 +67,7 @@ public:
     // the session's folder); nothing is parsed from text.
     struct Boot {
         bool monitor = true;                     // the monitor EPROM (options.monitor_rom)
+        std::filesystem::path rom;               // or the board's ROM from the user's file (load_rom)
         std::vector<std::string> firmware;       // built-in names (firmware::find)
         struct Image {
             std::filesystem::path path;          // .asm, .hex or .bin
