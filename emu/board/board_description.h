@@ -187,6 +187,14 @@ struct Board {
     bool sod_inverted = false;
 };
 
+// The ROM the 8085 starts in after RESET (at 0000H: the ALP 85's monitor EPROM, the SDK-85's 8355),
+// where a user's ROM (--rom) goes; nullptr if the board has none there.
+constexpr const MemoryRegion* rom_at_reset(const Board& b) {
+    for (const MemoryRegion& r : b.memory)
+        if (r.base == 0 && r.kind == MemoryKind::Rom) return &r;
+    return nullptr;
+}
+
 constexpr bool has_option(const Board& b, std::string_view name) {
     for (const BoardOption& o : b.options)
         if (o.name == name) return true;

@@ -15,8 +15,7 @@ std::vector<BoardChoice> board_choices() {
 }
 
 std::optional<RomPlace> monitor_rom(const script::Session& s) {
-    for (const board::MemoryRegion& r : s.board().memory)
-        if (r.id == board::Memory::MonitorEprom) return RomPlace{r.base, r.size};
+    if (const board::MemoryRegion* r = board::rom_at_reset(s.board())) return RomPlace{r->base, r->size};
     return std::nullopt;
 }
 

@@ -412,16 +412,15 @@ Session::Outcome Session::load_monitor() {
 
 namespace {
 // The board's ROM at 0000H (its monitor's), where --rom goes.
-RomSpec rom_at_reset(const board::Board& b) {
-    for (const board::MemoryRegion& r : b.memory)
-        if (r.base == 0 && r.kind == board::MemoryKind::Rom) return {r.base, r.size};
-    return {};
+RomSpec rom_spec(const board::Board& b) {
+    const board::MemoryRegion* r = board::rom_at_reset(b);
+    return r ? RomSpec{r->base, r->size} : RomSpec{};
 }
 }  // namespace
 
 std::string Session::check_rom(const std::filesystem::path& path) const {
     try {
-        read_rom_image(resolve(path.string()), rom_at_reset(machine_->board()));
+        read_rom_image(resolve(path.string()), rom_spec(machine_->board()));
     } catch (const LoadError& e) {
         return e.what();
     }
@@ -430,7 +429,7 @@ std::string Session::check_rom(const std::filesystem::path& path) const {
 
 Session::Outcome Session::load_rom(const std::filesystem::path& path) {
     const Changed changed{debugger_};
-    const RomSpec spec = rom_at_reset(machine_->board());
+    const RomSpec spec = rom_spec(machine_->board());
     try {
         const RomImage image = read_rom_image(resolve(path.string()), spec);
         const std::vector<ImageSegment> segments{{spec.base, image.bytes}};
