@@ -12,6 +12,7 @@
 #include "emu/board/board_map.h"
 #include "emu/board/machine.h"
 #include "emu/program/rom_image.h"
+#include "tests/board/sdk85_test_rom.h"
 #include "peripherals/serial_terminal.h"
 
 namespace alp85::test {
@@ -19,15 +20,6 @@ namespace {
 
 using periph::Key;
 
-const RomImage& sdk85_test_rom() {
-    static const RomImage image = read_rom_image(std::string(ALP85_SOURCE_DIR) + "/firmware/sdk85/sdk85test.asm");
-    return image;
-}
-std::uint16_t rom_label(const char* name) {
-    const asm85::Symbol* s = sdk85_test_rom().assembly->find_symbol(name);
-    if (!s) throw std::runtime_error(std::string("no symbol ") + name);
-    return static_cast<std::uint16_t>(s->value);
-}
 
 periph::UartFormat baud2400() {
     periph::UartFormat f;
@@ -66,11 +58,11 @@ TEST(Sdk85Board, SingleStepStopsAfterEachInstructionOfEveryLength) {
     const char* order[] = {"S01", "S02", "S03", "S04", "S05", "S06", "S07", "S08", "S09", "S10",
                            "USUB", "S12", "S13", "S14", "S15", "S16", "S17", "USUBZ", "S19", "S20",
                            "S21", "S22", "R1VEC", "S24", "S25", "S26", "S27", "UEND"};
-    ASSERT_EQ(b.m.peek(rom_label("STEPN")), std::size(order));
-    const std::uint16_t steppc = rom_label("STEPPC");
+    ASSERT_EQ(b.m.peek(sdk85_label("STEPN")), std::size(order));
+    const std::uint16_t steppc = sdk85_label("STEPPC");
     for (std::size_t i = 0; i < std::size(order); ++i)
-        EXPECT_EQ(b.word(static_cast<std::uint16_t>(steppc + 2 * i)), rom_label(order[i])) << "step " << i + 1;
-    EXPECT_EQ(b.m.peek(rom_label("STEPOK")), std::size(order));
+        EXPECT_EQ(b.word(static_cast<std::uint16_t>(steppc + 2 * i)), sdk85_label(order[i])) << "step " << i + 1;
+    EXPECT_EQ(b.m.peek(sdk85_label("STEPOK")), std::size(order));
     EXPECT_EQ(b.m.display_text(), "001C1C");
 }
 
@@ -85,7 +77,7 @@ TEST(Sdk85Board, KeysInDigitsOut) {
     EXPECT_EQ(b.m.display_text(), "0002CA");
     b.key(Key::Step);
     EXPECT_EQ(b.m.display_text(), "0003d5");
-    EXPECT_EQ(b.m.peek(rom_label("LASTKY")), 0xD5);
+    EXPECT_EQ(b.m.peek(sdk85_label("LASTKY")), 0xD5);
 }
 
 // VECT INTR (RST 7.5, 003CH) runs the step test again: after a key, the display is back at 001C 1C.
@@ -113,7 +105,7 @@ TEST(Sdk85Board, EchoesCharactersOverSidAndSod) {
     const auto& got = b.term.text();
     EXPECT_EQ(std::string(got.begin(), got.end()), text);
     EXPECT_EQ(b.term.errors(), 0u);
-    EXPECT_EQ(b.word(rom_label("RXCNT")), text.size());
+    EXPECT_EQ(b.word(sdk85_label("RXCNT")), text.size());
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "emu/core/bus.h"
 #include "emu/core/i8085.h"
 #include "emu/program/rom_image.h"
+#include "tests/board/sdk85_test_rom.h"
 #include "peripherals/i8155.h"
 #include "peripherals/i8279.h"
 #include "peripherals/i8355.h"
@@ -127,15 +128,6 @@ private:
     IoFunctions rio_ports_;
 };
 
-const RomImage& program() {
-    static const RomImage image = read_rom_image(std::string(ALP85_SOURCE_DIR) + "/firmware/sdk85/sdk85test.asm");
-    return image;
-}
-std::uint16_t symbol(const char* name) {
-    const asm85::Symbol* s = program().assembly->find_symbol(name);
-    if (!s) throw std::runtime_error(std::string("no symbol ") + name);
-    return static_cast<std::uint16_t>(s->value);
-}
 
 // A hex digit on the SDK-85's display: the classic a-g patterns (a = bit 0 ... g = bit 6),
 // moved to the SDK-85's wiring (a-d: bits 4-7, e-g: bits 0-2) and inverted (lit at 0).
@@ -154,19 +146,19 @@ void expect_display(const Sdk85& b, const std::array<unsigned, 6>& digits) {
 }
 
 TEST(Sdk85Program, SingleStepStopsAfterEachInstructionOfEveryLength) {
-    Sdk85 b(program());
+    Sdk85 b(sdk85_test_rom());
     b.run_for(20 * kMs);
     // The PC after each step, in the order the stepped program runs (its source's labels).
     const char* order[] = {"S01", "S02", "S03", "S04", "S05", "S06", "S07", "S08", "S09", "S10",
                            "USUB", "S12", "S13", "S14", "S15", "S16", "S17", "USUBZ", "S19", "S20",
                            "S21", "S22", "R1VEC", "S24", "S25", "S26", "S27", "UEND"};
-    const std::uint16_t steppc = symbol("STEPPC");
-    ASSERT_EQ(b.ram(symbol("STEPN")), std::size(order));
+    const std::uint16_t steppc = sdk85_label("STEPPC");
+    ASSERT_EQ(b.ram(sdk85_label("STEPN")), std::size(order));
     for (std::size_t i = 0; i < std::size(order); ++i)
-        EXPECT_EQ(b.ram_word(static_cast<std::uint16_t>(steppc + 2 * i)), symbol(order[i])) << "step " << i + 1;
-    EXPECT_EQ(b.ram(symbol("STEPOK")), std::size(order));  // the program's own check agrees
-    EXPECT_EQ(symbol("NSTEPS"), std::size(order));
-    EXPECT_EQ(symbol("R1VEC"), 0x0008);  // RST 1's vector
+        EXPECT_EQ(b.ram_word(static_cast<std::uint16_t>(steppc + 2 * i)), sdk85_label(order[i])) << "step " << i + 1;
+    EXPECT_EQ(b.ram(sdk85_label("STEPOK")), std::size(order));  // the program's own check agrees
+    EXPECT_EQ(sdk85_label("NSTEPS"), std::size(order));
+    EXPECT_EQ(sdk85_label("R1VEC"), 0x0008);  // RST 1's vector
     expect_display(b, {0, 0, 1, 0xC, 1, 0xC});  // "001C 1C": 28 steps, 28 right
 }
 
@@ -174,10 +166,10 @@ TEST(Sdk85Program, TimerCountIsTheArithmeticInTheSource) {
     // 68 T-states from OUT's first T-state to the user's instruction (OUT 10, POP PSW 10,
     // LHLD 16, SPHL 6, LHLD 16, RET 10); START taken 7 T-states into OUT; the TRAP edge at
     // 7 + N + 1 = 70, two T-states into the user's instruction: N = 62.
-    EXPECT_EQ(symbol("STEPCNT"), 62);
+    EXPECT_EQ(sdk85_label("STEPCNT"), 62);
     // The count as the ROM loads it into the 8155: 3EH, then 80H (single pulse, count bits 13-8 0).
-    const std::uint16_t resume = symbol("RESUME");
-    const auto& rom = program().bytes;
+    const std::uint16_t resume = sdk85_label("RESUME");
+    const auto& rom = sdk85_test_rom().bytes;
     std::size_t at = resume;
     while (at + 4 < rom.size() && !(rom[at] == 0x3E && rom[at + 2] == 0xD3 && rom[at + 3] == 0x24)) ++at;
     ASSERT_LT(at + 4, rom.size()) << "MVI A / OUT 24H not found after RESUME";
@@ -196,7 +188,7 @@ TEST(Sdk85Program, OnlyTheCountsThatTrapInsideTheFirstInstructionStepOne) {
         o.defines.push_back({"STEPCNT", std::to_string(n)});
         Sdk85 b(read_rom_image(std::string(ALP85_SOURCE_DIR) + "/firmware/sdk85/sdk85test.asm", {}, o));
         b.run_for(30 * kMs);
-        return std::pair<int, int>{b.ram(symbol("STEPN")), b.ram(symbol("STEPOK"))};
+        return std::pair<int, int>{b.ram(sdk85_label("STEPN")), b.ram(sdk85_label("STEPOK"))};
     };
     EXPECT_EQ(run(60), (std::pair<int, int>{32, 0}));  // STEPMAX records, none right
     EXPECT_EQ(run(61), (std::pair<int, int>{28, 28}));
@@ -205,18 +197,18 @@ TEST(Sdk85Program, OnlyTheCountsThatTrapInsideTheFirstInstructionStepOne) {
 }
 
 TEST(Sdk85Program, VectIntrRunsTheStepTestAgain) {
-    Sdk85 b(program());
+    Sdk85 b(sdk85_test_rom());
     b.run_for(20 * kMs);
     b.key(Key::K5);
     expect_display(b, {0, 0, 0, 1, 0, 5});
     b.vect_intr();
     b.run_for(20 * kMs);
-    EXPECT_EQ(b.ram(symbol("STEPOK")), 28);
+    EXPECT_EQ(b.ram(sdk85_label("STEPOK")), 28);
     expect_display(b, {0, 0, 1, 0xC, 1, 0xC});
 }
 
 TEST(Sdk85Program, EachKeyShowsItsCodeAndTheCountOfKeys) {
-    Sdk85 b(program());
+    Sdk85 b(sdk85_test_rom());
     b.run_for(20 * kMs);
     b.key(Key::K7);  // row 0, return line 7: 07H
     expect_display(b, {0, 0, 0, 1, 0, 7});
@@ -224,15 +216,15 @@ TEST(Sdk85Program, EachKeyShowsItsCodeAndTheCountOfKeys) {
     expect_display(b, {0, 0, 0, 2, 0, 0xA});
     b.key(Key::Step);  // SINGLE STEP: row 2, line 5: 15H
     expect_display(b, {0, 0, 0, 3, 1, 5});
-    EXPECT_EQ(b.ram(symbol("LASTKY")), 0x15);
-    EXPECT_EQ(b.ram_word(symbol("KEYCNT")), 3);
-    const std::uint16_t buf = symbol("DISPBF");
+    EXPECT_EQ(b.ram(sdk85_label("LASTKY")), 0x15);
+    EXPECT_EQ(b.ram_word(sdk85_label("KEYCNT")), 3);
+    const std::uint16_t buf = sdk85_label("DISPBF");
     const std::array<std::uint8_t, 6> digits{0, 0, 0, 3, 1, 5};
     for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(b.ram(static_cast<std::uint16_t>(buf + i)), digits[i]);
 }
 
 TEST(Sdk85Program, EchoesCharactersAt2400Baud) {
-    Sdk85 b(program());
+    Sdk85 b(sdk85_test_rom());
     b.run_for(20 * kMs);
     const std::string text = "SDK-85\x01\xFF";
     for (char c : text) {
@@ -241,8 +233,8 @@ TEST(Sdk85Program, EchoesCharactersAt2400Baud) {
     }
     const auto& got = b.tty().text();
     EXPECT_EQ(std::string(got.begin(), got.end()), text);
-    EXPECT_EQ(b.ram_word(symbol("RXCNT")), text.size());
-    EXPECT_EQ(b.ram(symbol("LASTCH")), 0xFF);
+    EXPECT_EQ(b.ram_word(sdk85_label("RXCNT")), text.size());
+    EXPECT_EQ(b.ram(sdk85_label("LASTCH")), 0xFF);
 }
 
 }  // namespace
