@@ -3,6 +3,7 @@
 // the session's board. Expected values are the SDK-85's facts (docs/board.md), not the output of
 // the code under test.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -18,7 +19,11 @@ namespace {
 namespace fs = std::filesystem;
 
 struct OneScript {
-    explicit OneScript(const std::string& text) : file(fs::temp_directory_path() / "alp85 board command test.alp") {
+    // A file of its own: ctest runs each test in its own process, several at once.
+    explicit OneScript(const std::string& text)
+        : file(fs::temp_directory_path() /
+               ("alp85 board command " + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                " " + std::to_string(::getpid()) + " " + std::to_string(++made_) + ".alp")) {
         std::ofstream(file) << text;
     }
     ~OneScript() { fs::remove(file); }
@@ -27,6 +32,7 @@ struct OneScript {
         o.out = &out;
         return script::prepare(file, commands, errors, o);
     }
+    static inline int made_ = 0;  // two scripts in one test are two files
     fs::path file;
     std::vector<Command> commands;
     std::vector<ParseError> errors;
