@@ -77,7 +77,7 @@ packages=(
   libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri
   libedit-dev
 )
-# Only the tests: clang (the fuzz targets) and LLVM's linker (the test programs link in half the
+# Only the tests: clang (the sanitizer build, scripts/test.sh; the fuzz targets) and LLVM's linker (the test programs link in half the
 # time; CMakeLists.txt), the window under Xvfb, the Debian package and its test
 # (scripts/package.sh, tests/install: dpkg-shlibdeps, man -l, the man pages from --help, the
 # package check, the bash completion's helpers, fish for its completion), the web page

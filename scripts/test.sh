@@ -48,7 +48,17 @@ phase "release tests"
 phase "ASan + UBSan build and every other test (build-asan/)"
 # fontconfig's process-lifetime caches are not leaks of ours (tests/lsan.supp)
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-configure build-asan -DCMAKE_BUILD_TYPE=Release -DALP85_SANITIZE=ON -DALP85_BENCH=OFF
+# Clang compiles the instrumented build in about two thirds of GCC's CPU time (455 against 702
+# CPU-s on a fresh clone), and its programs start in half the time (alp85: 0.13 against 0.26 s,
+# most of GCC's in LeakSanitizer scanning UBSan's 31 MB of check descriptors at each exit).
+# scripts/setup.sh --tests installs it; without it the pass is built with the default compiler.
+sanitizer_compiler=()
+if command -v clang++ >/dev/null && command -v clang >/dev/null; then
+  sanitizer_compiler=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++)
+else
+  echo "scripts/test.sh: no clang++ (scripts/setup.sh --tests installs it): the sanitizer build uses $(c++ --version | head -1)"
+fi
+configure build-asan -DCMAKE_BUILD_TYPE=Release -DALP85_SANITIZE=ON -DALP85_BENCH=OFF "${sanitizer_compiler[@]}"
 cmake --build build-asan -j "$jobs"
 phase "ASan + UBSan tests"
 # One test more than the cores: a sixth of the sanitizer pass waits (Xvfb and the window's frames,

@@ -251,7 +251,9 @@ test('pause ends a long reverseContinue at once', async () => {
     await stopAfter(dc, dc.configurationDoneRequest());
     let r = await dc.setFunctionBreakpointsRequest({ breakpoints: [{ name: 'SOBE' }] });
     assert.equal(r.body.breakpoints[0].verified, true, r.body.breakpoints[0].message);
-    const ran = dc.waitForEvent('stopped');  // the console's command moved the machine
+    // the console's command moved the machine: 600 s of machine time take up to 20 s of CPU in
+    // the sanitizer pass (the CPU's loop at -O0 under clang), more on a loaded host
+    const ran = dc.waitForEvent('stopped', 120000);
     r = await dc.evaluateRequest({ expression: 'run 600s', context: 'repl' });
     assert.ok(r.success);
     await ran;
