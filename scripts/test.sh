@@ -2,10 +2,12 @@
 # Builds ALP85 and runs every test through CTest. Each test program is built and run once, under
 # AddressSanitizer and UndefinedBehaviorSanitizer; the release build makes only what ships.
 #   scripts/test.sh          1. build/: the release build of what ships (`shipped`: alp85, asm85,
-#                               pisa-asm, the firmware, the man pages; -Werror) and the tests that
-#                               need those very programs (label `release`): the web page built and
-#                               run in chromium, the Debian package, the chord sweep
-#                            2. build-asan/: every test program, and every other test
+#                               pisa-asm, the firmware, the man pages; -Werror), at low priority
+#                               beside step 2
+#                            2. build-asan/ (clang): every test program, and every other test
+#                            3. build/: the tests that need the shipped programs themselves (label
+#                               `release`): the web page built and run in chromium, the Debian
+#                               package, the chord sweep, the master firmware's runs
 #   scripts/test.sh --fast   step 1, then every test in build/ without the sanitizers
 # Screenshots land in the build trees; scripts/doc-images.sh refreshes docs/img on request.
 set -euo pipefail
@@ -34,18 +36,27 @@ seed_costs() {  # build dir: ctest's cost data from tests/test-costs.txt, unless
   mkdir -p "$1/Testing/Temporary"
   { grep -v '^#' tests/test-costs.txt; echo ---; } > "$data"
 }
-phase "release build of what ships, and its tests (build/)"
 configure build -DCMAKE_BUILD_TYPE=Release -DALP85_DOC_IMAGES=OFF
 if [ $fast -eq 1 ]; then
+  phase "release build and every test in build/, without the sanitizers"
   cmake --build build -j "$jobs"
   (cd build && ctest --output-on-failure -j "$jobs")
   exit 0
 fi
-cmake --build build -j "$jobs" --target shipped
-phase "release tests"
-(cd build && ctest --output-on-failure -j "$jobs" -L release)
 
-phase "ASan + UBSan build and every other test (build-asan/)"
+# The release build runs beside the sanitizer pass at the lowest priority (nice 19): it takes the
+# CPU the sanitizer pass leaves idle (links, and the tests that wait on Xvfb, the DAP client and
+# Python) and does not slow the tests that time themselves against the wall clock. Its tests run
+# after the sanitizer pass's, at normal priority (the web page's waits, the package's timeout).
+# It runs in a process group of its own, ended with this script; its log is printed when it ends.
+release_log=build/release-build.log
+phase "release build of what ships (build/), beside the sanitizer pass; log: $release_log"
+setsid -w nice -n 19 cmake --build build -j "$jobs" --target shipped > "$release_log" 2>&1 &
+release_pid=$!
+trap 'kill -- -$release_pid 2>/dev/null || true' EXIT
+trap 'exit 143' TERM INT
+
+phase "ASan + UBSan build (build-asan/)"
 # fontconfig's process-lifetime caches are not leaks of ours (tests/lsan.supp)
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 # Clang compiles the instrumented build in about two thirds of GCC's CPU time (455 against 702
@@ -66,5 +77,21 @@ phase "ASan + UBSan tests"
 # The longest tests start first (tests/test-costs.txt), so that none of them is left running alone
 # at the end.
 seed_costs build-asan
-(cd build-asan && ctest --output-on-failure -j "$((jobs + 1))")
+asan_status=0
+(cd build-asan && ctest --output-on-failure -j "$((jobs + 1))") || asan_status=$?
+
+phase "waiting for the release build"
+release_status=0
+wait "$release_pid" || release_status=$?
+trap - EXIT
+tail -n 5 "$release_log"
+if [ "$release_status" -ne 0 ]; then
+  cat "$release_log"
+  echo "scripts/test.sh: the release build failed (status $release_status)"
+else
+  phase "release tests (build/, label release)"
+  (cd build && ctest --output-on-failure -j "$jobs" -L release) || release_status=$?
+fi
+[ "$asan_status" -eq 0 ] || echo "scripts/test.sh: the sanitizer pass failed (status $asan_status)"
 phase "done"
+[ "$release_status" -eq 0 ] && [ "$asan_status" -eq 0 ]
