@@ -272,7 +272,7 @@ def record_cap():
     write(d, "x.asm", PROGRAM)
     # 500 ms at 3.072 MHz (docs/board.md: the 6.144 MHz crystal divided by two) is 1,536,000 T-states: past the cap.
     write(d, "r.alp", "load x.asm\nreset\nrecord r.csv every 1t\nrun 500ms\nrecord stop\n")
-    rc, _, err = run([ALP85, "script", "r.alp"], d, timeout=300)
+    rc, peak_500, err = peak_resident_mb([ALP85, "script", "r.alp"], d)
     rows = 0
     if os.path.exists(os.path.join(d, "r.csv")):
         with open(os.path.join(d, "r.csv"), "rb") as f:
@@ -284,10 +284,9 @@ def record_cap():
     # (the release build's 128 MB for the first million); the sanitizers' own overhead is the same
     # in both runs, so the difference holds in either build.
     write(d, "r2.alp", "load x.asm\nreset\nrecord r2.csv every 1t\nrun 1000ms\nrecord stop\n")
-    rc1, peak_500 = peak_resident_mb([ALP85, "script", "r.alp"], d)
-    rc2, peak_1000 = peak_resident_mb([ALP85, "script", "r2.alp"], d)
+    rc2, peak_1000, err2 = peak_resident_mb([ALP85, "script", "r2.alp"], d)
     print(f"record every 1t: peak resident {peak_500:.0f} MB over 500 ms, {peak_1000:.0f} MB over 1000 ms")
-    check(rc1 == 1 and rc2 == 1, f"record every 1t over the cap: exit {rc1}, {rc2}")
+    check(rc2 == 1, f"record every 1t over the cap for 1000 ms: exit {rc2}: {err2.strip()[:200]}")
     check(peak_1000 - peak_500 < 30, f"record every 1t: {peak_500:.0f} MB over 500 ms but {peak_1000:.0f} MB over 1000 ms")
 
 

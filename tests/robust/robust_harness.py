@@ -7,6 +7,7 @@ import os
 import shutil
 import subprocess
 import sys
+import tempfile
 import threading
 
 BIN, WORK, CASE = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
@@ -39,17 +40,19 @@ def run(args, cwd, stdin=None, env=None, timeout=120):
 
 
 def peak_resident_mb(args, cwd, timeout=300):
-    """(status, the process's own peak resident memory in MB), from its rusage as wait4 reaps it;
-    killed after `timeout` seconds."""
-    p = subprocess.Popen(args, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    timer = threading.Timer(timeout, p.kill)
-    timer.start()
-    try:
-        _, status, usage = os.wait4(p.pid, 0)
-    finally:
-        timer.cancel()
-    p.returncode = os.waitstatus_to_exitcode(status)  # reaped here: Popen must not wait again
-    return p.returncode, usage.ru_maxrss / 1024
+    """(status, the process's own peak resident memory in MB, its standard error), the memory from
+    its rusage as wait4 reaps it; killed after `timeout` seconds."""
+    with tempfile.TemporaryFile() as err:
+        p = subprocess.Popen(args, cwd=cwd, stdout=subprocess.DEVNULL, stderr=err)
+        timer = threading.Timer(timeout, p.kill)
+        timer.start()
+        try:
+            _, status, usage = os.wait4(p.pid, 0)
+        finally:
+            timer.cancel()
+        p.returncode = os.waitstatus_to_exitcode(status)  # reaped here: Popen must not wait again
+        err.seek(0)
+        return p.returncode, usage.ru_maxrss / 1024, err.read().decode(errors="replace")
 
 
 def fresh(name):
