@@ -48,13 +48,14 @@ fi
 # CPU the sanitizer pass leaves idle (links, and the tests that wait on Xvfb, the DAP client and
 # Python) and does not slow the tests that time themselves against the wall clock. Its tests run
 # after the sanitizer pass's, at normal priority (the web page's waits, the package's timeout).
+# One job more than the cores: its last links, after the sanitizer pass, are single-threaded.
 # It runs in a process group of its own (job control), ended with this script, and in this
 # script's session: with the kernel's autogroups, a niceness counts only inside its session (under
 # setsid the build took half the CPU). Its log is printed when it ends.
 release_log=build/release-build.log
 phase "release build of what ships (build/), beside the sanitizer pass; log: $release_log"
 set -m
-nice -n 19 cmake --build build -j "$jobs" --target shipped > "$release_log" 2>&1 &
+nice -n 19 cmake --build build -j "$((jobs + 1))" --target shipped > "$release_log" 2>&1 &
 release_pid=$!
 set +m
 trap 'kill -- -$release_pid 2>/dev/null || true' EXIT
@@ -94,7 +95,8 @@ if [ "$release_status" -ne 0 ]; then
   echo "scripts/test.sh: the release build failed (status $release_status)"
 else
   phase "release tests (build/, label release)"
-  (cd build && ctest --output-on-failure -j "$jobs" -L release) || release_status=$?
+  # One test more than the cores: web:build's link and the package's lintian are single-threaded.
+  (cd build && ctest --output-on-failure -j "$((jobs + 1))" -L release) || release_status=$?
 fi
 [ "$asan_status" -eq 0 ] || echo "scripts/test.sh: the sanitizer pass failed (status $asan_status)"
 phase "done"
