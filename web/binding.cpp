@@ -99,7 +99,7 @@ public:
     // offers Load ROM... and runs the test program until then).
     std::string name() const { return std::string(session_.board().name); }
     std::string title() const { return std::string(session_.board().title); }
-    bool user_rom() const { return &session_.board() != &script::Session::default_board() && front::monitor_rom(session_); }
+    bool user_rom() const { return !session_.board().builtin_firmware && front::monitor_rom(session_); }
     bool has_tool() const { return front::has_tool(session_); }
     int digits() const { return static_cast<int>(front::display_digits(session_)); }
 

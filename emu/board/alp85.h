@@ -111,6 +111,9 @@ inline constexpr std::array<AxisWiring, 3> kToolWiring{{
 inline constexpr Clock kClock{6'144'000, "thesis firmware's DL loop: 3070 T-states = 0.999 ms at 3.072 MHz"};
 // SHIFT and CNTL/STB grounded (docs/peripherals.md): key codes carry 0 there.
 inline constexpr bool kShiftCntlHigh = false;
+// The ALP 85's SOD drives no inverting line driver; the monitor and firmware alp85 carries are its own.
+inline constexpr bool kSodInverted = false;
+inline constexpr bool kBuiltinFirmware = true;
 // The undriven 8155 inputs (nothing on the board drives them): pulled up, so ports A and B read
 // FFH and the six-bit port C reads 3FH.
 inline constexpr std::uint8_t kUndrivenPortAB = 0xFF, kUndrivenPortC = 0x3F;
@@ -121,6 +124,7 @@ namespace alp85::board {
 
 inline constexpr Board kAlp85{"alp85", "ALP 85 (METU 1985 thesis machine)", alp85::kClock, alp85::kMemory,
                               alp85::kDevices, alp85::kWiring, alp85::kKeys, alp85::kDisplay, alp85::kOptions,
-                              alp85::kShiftCntlHigh, alp85::kToolWiring, alp85::kUndrivenPortAB, alp85::kUndrivenPortC};
+                              alp85::kShiftCntlHigh, alp85::kToolWiring, alp85::kUndrivenPortAB, alp85::kUndrivenPortC,
+                              alp85::kSodInverted, alp85::kBuiltinFirmware};
 
 }  // namespace alp85::board

@@ -185,6 +185,9 @@ struct Board {
     // The serial terminal's line on SOD: true where the board's line driver inverts SOD (the line
     // is high, at mark, while SOD is low). SID always follows the line.
     bool sod_inverted = false;
+    // The monitor ROM and the firmware alp85 carries built in (emu/program) are this board's: they
+    // boot it by default and --rom is refused. Otherwise the ROM at reset is the user's (--rom).
+    bool builtin_firmware = false;
 };
 
 // The ROM the 8085 starts in after RESET (at 0000H: the ALP 85's monitor EPROM, the SDK-85's 8355),

@@ -104,6 +104,8 @@ inline constexpr std::uint8_t kUndrivenPortAB = 0xFF, kUndrivenPortC = 0x3F;
 // 20 mA loop through one transistor, which inverts it; the receive side turns the loop's
 // current into SID high (mark) without inverting. MAME's driver inverts SOD likewise.
 inline constexpr bool kSodInverted = true;
+// Its ROM is the user's (--rom: Intel's monitor, or a program of theirs), not alp85's built-in monitor.
+inline constexpr bool kBuiltinFirmware = false;
 
 }  // namespace alp85::board::sdk85
 
@@ -111,6 +113,7 @@ namespace alp85::board {
 
 inline constexpr Board kSdk85{"sdk85", "SDK-85", sdk85::kClock, sdk85::kMemory, sdk85::kDevices, sdk85::kWiring,
                               sdk85::kKeys, sdk85::kDisplay, sdk85::kOptions, sdk85::kShiftCntlHigh, {},
-                              sdk85::kUndrivenPortAB, sdk85::kUndrivenPortC, sdk85::kSodInverted};
+                              sdk85::kUndrivenPortAB, sdk85::kUndrivenPortC, sdk85::kSodInverted,
+                              sdk85::kBuiltinFirmware};
 
 }  // namespace alp85::board

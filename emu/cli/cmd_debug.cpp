@@ -180,7 +180,7 @@ void add_debug_command(CLI::App& app, int& status) {
         }
         // The monitor first (the thesis firmware calls its routines), then the programs, then RESET.
         script::Session::Boot boot;
-        boot.monitor = firmware::have_monitor() && args->board == "alp85";  // the built-in monitor is the ALP 85's
+        boot.monitor = firmware::have_monitor() && board_of(args->board)->builtin_firmware;  // the built-in monitor is the ALP 85's
         boot.motor = motor_model_of(args->motor);
         for (const std::string& f : args->firmware) {
             if (firmware::find(f)) {
@@ -200,7 +200,7 @@ void add_debug_command(CLI::App& app, int& status) {
         }
         if (!args->script.empty()) shell.session().add_input(std::filesystem::absolute(args->script), "the script");
         if (!args->rom.empty()) {  // the board's ROM, before the programs and the RESET
-            std::string why = args->board == "alp85" ? "--rom is for --board sdk85 (the ALP 85's monitor is built in)"
+            std::string why = board_of(args->board)->builtin_firmware ? "--rom is for --board sdk85 (the ALP 85's monitor is built in)"
                                                      : shell.session().check_rom(std::filesystem::absolute(args->rom));
             if (why.empty()) why = shell.session().load_rom(std::filesystem::absolute(args->rom)).message;
             if (!why.empty()) {

@@ -161,7 +161,7 @@ void add_gui_command(CLI::App& app, int& status) {
         args->o.motor = motor_model_of(args->motor);
         args->o.board = args->board;
         if (!args->o.rom.empty()) {  // refused before a window opens, by the loader every --rom goes through
-            if (board_of(args->board) == board::kBoards.front()) {
+            if (board_of(args->board)->builtin_firmware) {
                 std::cerr << argument_error("alp85 gui", args->o.rom,
                                             "--rom is for --board sdk85 (the ALP 85's monitor is built in; a program of "
                                             "yours goes in as a positional argument)");

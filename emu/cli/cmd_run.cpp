@@ -165,8 +165,8 @@ void add_run_command(CLI::App& app, int& status) {
         script::SessionOptions so;
         so.board = board_of(args->board);
         // The built-in monitor is the ALP 85's; another board's ROM is the user's (--rom).
-        if (args->board != "alp85") args->no_monitor = true;
-        if (!args->rom.empty() && args->board == "alp85")
+        if (!so.board->builtin_firmware) args->no_monitor = true;
+        if (!args->rom.empty() && so.board->builtin_firmware)
             errors.push_back(argument_error(args->rom, 0, "--rom is for --board sdk85 (the ALP 85's monitor is built in; a program "
                                                           "of yours goes in as a positional argument)"));
         so.base_dir = "";  // paths as the user typed them

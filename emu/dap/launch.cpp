@@ -47,8 +47,9 @@ LaunchConfig parse_launch(const Json& args) {
     c.board = opt_string(args, "board").value_or(std::string(script::Session::default_board().name));
     if (!script::Session::find_board(c.board))
         throw RequestError(fmt::format("argument 'board': no board '{}' ({})", c.board, script::Session::board_names()));
-    c.monitor = opt_bool(args, "monitor").value_or(c.board == script::Session::default_board().name);
-    if (!c.rom.empty() && c.board == script::Session::default_board().name)
+    const bool builtin = script::Session::find_board(c.board)->builtin_firmware;  // the ALP 85's monitor and firmware
+    c.monitor = opt_bool(args, "monitor").value_or(builtin);
+    if (!c.rom.empty() && builtin)
         throw RequestError("argument 'rom' is for \"board\": \"sdk85\" (the ALP 85's monitor is built in; a program "
                            "of yours goes in 'program')");
     if (!c.rom.empty() && c.monitor) throw RequestError("argument 'rom' replaces the monitor: not with \"monitor\": true");

@@ -97,7 +97,7 @@ public:
         session_.debugger().listen([this](const debug::Event& e) { ui_.add_log(e.text); });
         // The built-in firmware is the ALP 85's (the default board's); the machine tool's menu only
         // on a board that has the tool.
-        if (&session_.board() == &script::Session::default_board())
+        if (session_.board().builtin_firmware)
             for (const auto& e : firmware::builtin()) ui_.firmware_names.emplace_back(e.name);
         ui_.tool = has_tool(session_);
         for (std::size_t i = 0; i < ui_.firmware_names.size(); ++i)
@@ -290,7 +290,7 @@ int App::start() {
     }
     script::Session::Boot boot;
     // The built-in monitor and the thesis firmware are the ALP 85's; another board boots what it is given.
-    const bool alp85 = o_.board == script::Session::default_board().name;
+    const bool alp85 = session_.board().builtin_firmware;
     boot.monitor = alp85;
     for (const auto& f : o_.firmware.empty() && alp85 ? std::vector<std::string>{"thesis-fixed"} : o_.firmware) {
         if (firmware::find(f)) boot.firmware.push_back(f);
