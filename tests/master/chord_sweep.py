@@ -22,6 +22,7 @@ toolpath with eq. 7 and eps_A + 1 step (the arcs' times within ARC_LATE_MS of th
 --plan: write the programs and check the coverage only.
 Exit 1 on any failure.
 """
+import concurrent.futures
 import math
 import os
 import subprocess
@@ -189,22 +190,30 @@ def main():
           f" (arcs along X to {X_ARC_MAX})")
     if "--plan" in sys.argv:
         return 0
-    bad = []
-    for (name, _), h in zip(progs, hexes):
+    def run_one(name, h):
+        """(report, ok) of one program: its run on the board, then its samples against the model."""
         alp = os.path.join(out, name + ".alp")
         with open(alp, "w") as f:
             f.write(mksampling.script(name, h, name + ".nc"))
         run = subprocess.run([alp85, "script", alp, "--out-dir", out], capture_output=True, text=True)
         if run.returncode != 0:
-            print(f"{name}: alp85 script failed ({run.returncode}):\n{run.stdout[-2000:]}{run.stderr[-2000:]}")
-            bad.append(name)
-            continue
+            return f"{name}: alp85 script failed ({run.returncode}):\n{run.stdout[-2000:]}{run.stderr[-2000:]}", False
         late = ["--late", str(ARC_LATE_MS)] if name.startswith("arcs") else []
         chk = subprocess.run([sys.executable, os.path.join(os.path.dirname(os.path.abspath(__file__)), "check_samples.py"), h,
                               os.path.join(out, name + ".csv")] + late, capture_output=True, text=True)
-        print(f"{name}: {chk.stdout.strip().splitlines()[0] if chk.stdout.strip() else ''}")
+        report = f"{name}: {chk.stdout.strip().splitlines()[0] if chk.stdout.strip() else ''}"
         if chk.returncode != 0:
-            print(chk.stdout[-3000:] + chk.stderr[-2000:])
+            return report + "\n" + chk.stdout[-3000:] + chk.stderr[-2000:], False
+        return report, True
+
+    # The programs are independent (each its own files in OUT_DIR): one at a time a core, reported
+    # in their order.
+    bad = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+        results = list(pool.map(lambda p: run_one(p[0][0], p[1]), zip(progs, hexes)))
+    for (name, _), (report, ok) in zip(progs, results):
+        print(report)
+        if not ok:
             bad.append(name)
     if bad:
         print(f"chord_sweep: failed: {' '.join(bad)}")
