@@ -290,9 +290,9 @@ int App::start() {
     }
     script::Session::Boot boot;
     // The built-in monitor and the thesis firmware are the ALP 85's; another board boots what it is given.
-    const bool alp85 = session_.board().builtin_firmware;
-    boot.monitor = alp85;
-    for (const auto& f : o_.firmware.empty() && alp85 ? std::vector<std::string>{"thesis-fixed"} : o_.firmware) {
+    const bool builtin = session_.board().builtin_firmware;
+    boot.monitor = builtin;
+    for (const auto& f : o_.firmware.empty() && builtin ? std::vector<std::string>{"thesis-fixed"} : o_.firmware) {
         if (firmware::find(f)) boot.firmware.push_back(f);
         else boot.images.push_back({absolute(f), std::nullopt});
     }
