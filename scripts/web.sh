@@ -29,6 +29,13 @@ if ! command -v emcmake >/dev/null 2>&1; then
 fi
 # Debian's emscripten finds Debian's node-acorn only here.
 export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
+# Debian's emscripten runs its tools (em++, emcmake) on the "python3" first on the PATH. Debian's
+# own is the one it is packaged for, and a version manager's shim there costs each start dearly
+# (pyenv's resolves the version: an em++ took 0.39 CPU-s through it, 0.13 on Debian's python);
+# the module's build from nothing starts 27 of them.
+if [ -z "${EMSDK_PYTHON:-}" ] && [ -x /usr/bin/python3 ]; then
+  export EMSDK_PYTHON=/usr/bin/python3
+fi
 
 # The firmware the page carries, assembled by the native build: only its generated texts (the
 # monitor ROM and map, the thesis and master images and maps) and the SDK-85 test program's ROM,

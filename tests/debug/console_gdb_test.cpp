@@ -245,16 +245,16 @@ TEST_F(Gdb, FinishThatGivesUpSaysWhy) {
     run("continue");
     ASSERT_EQ(m().cpu().regs().pc, symbol("DGIR1"));
     run("delete");
-    // The limit is 10 min of machine time; 20 s give the same answer sooner (600 s took 87 s of
-    // the sanitizer pass).
+    // The limit is 10 min of machine time; 2 s give the same answer sooner (DGIR1 waits for a key
+    // that never comes; 600 s took 87 s of the sanitizer pass, 20 s took 4.9).
     EXPECT_EQ(debug::Debugger::kContinueLimit, 600ull * 3'072'000);
     EXPECT_EQ(shell.debugger().continue_limit(), debug::Debugger::kContinueLimit);
-    EXPECT_EQ(run("set limit 20s"), "continue, finish, until and advance give up after 20.000 s of machine time.\n");
+    EXPECT_EQ(run("set limit 2s"), "continue, finish, until and advance give up after 2.000 s of machine time.\n");
     const std::uint64_t t0 = m().now();
     const std::string f = run("finish");
-    EXPECT_NE(f.find("the routine did not return within 20 s of simulated time"), std::string::npos) << f;
-    EXPECT_GE(m().now() - t0, 20ull * 3'072'000);
-    EXPECT_LT(m().now() - t0, 21ull * 3'072'000);
+    EXPECT_NE(f.find("the routine did not return within 2 s of simulated time"), std::string::npos) << f;
+    EXPECT_GE(m().now() - t0, 2ull * 3'072'000);
+    EXPECT_LT(m().now() - t0, 3ull * 3'072'000);
 }
 
 TEST_F(Gdb, SetLimitRefusesWhatIsNoTime) {
