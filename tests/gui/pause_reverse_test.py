@@ -2,7 +2,7 @@
 """Pause in the window ends a long reverse run within 100 ms.
 
 Under its own Xvfb the window types the worked line's keys (debug_enter.alp), lets 200 s of
-machine time pass into the history, and clicks Rev continue towards a breakpoint that never hit
+machine time (40 under the sanitizers) pass into the history, and clicks Rev continue towards a breakpoint that never hit
 (SOBE: the firmware waits at the feedrate prompt), which would re-execute the whole history.
 0.2 s into it this test clicks the run pane's Pause button through the X server (XTEST), as a
 person's click arrives, and times the click to the window's log line of the stop.
@@ -22,6 +22,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sigterm_test import start_xvfb  # noqa: E402
 
 ALP85, SCRIPT = sys.argv[1], sys.argv[2]
+HISTORY_S = int(os.environ.get("ALP85_LONG_HISTORY_S", "200"))  # s of machine time (tests/CMakeLists.txt)
 
 
 def click(display, x, y):
@@ -48,9 +49,9 @@ def main():
     xvfb, display = start_xvfb()
     gui = None
     try:
-        # 200 s of history: reverse-continue over it re-executes for about 45 s under the sanitizers and
-        # 1.3 s in the release build, far longer than the wait before the interrupt.
-        hooks = ["break SOBE", "run 200s", "where:debug.continue", "click:debug.reverse-continue"]
+        # The history (tests/CMakeLists.txt: ALP85_LONG_HISTORY_S, 200 s, 40 under the sanitizers):
+        # reverse-continue over it re-executes for seconds, far longer than the wait before the click.
+        hooks = ["break SOBE", f"run {HISTORY_S}s", "where:debug.continue", "click:debug.reverse-continue"]
         argv = [ALP85, "gui", "--speed", "max", "--debug", "--script", SCRIPT]
         for h in hooks:
             argv += ["--debug-command", h]
