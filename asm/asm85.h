@@ -45,6 +45,9 @@ struct Options {
     // Significant characters of a symbol name; 0 = all. Intel's ASM80 and M80 kept six, so a
     // source may define RESTART and use RESTAR: assemble such a source with 6.
     int name_length = 0;
+    // A pass ends with an error after this many lines (expansions of macros and REPT counted) or
+    // 32 MB of text: a runaway REPT or macro recursion stops instead of running for hours.
+    std::size_t max_lines_per_pass = 1'000'000;
 };
 
 enum class Severity : std::uint8_t { Note, Warning, Error };

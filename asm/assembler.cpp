@@ -9,7 +9,6 @@ namespace {
 constexpr int kMaxPasses = 10;
 constexpr std::size_t kMaxExpandedLine = 4096;
 constexpr std::size_t kMaxCharsPerPass = 32u << 20;
-constexpr std::size_t kMaxLinesPerPass = 1'000'000;  // bounds REPT/macro bombs
 
 }  // namespace
 
@@ -175,10 +174,11 @@ bool Assembler::fetch(Line& out) {
             }
         }
         chars_this_pass_ += out.text.size();
-        if (++lines_this_pass_ > kMaxLinesPerPass || chars_this_pass_ > kMaxCharsPerPass) {
+        if (++lines_this_pass_ > opt_.max_lines_per_pass || chars_this_pass_ > kMaxCharsPerPass) {
             if (!limit_reported_) {
                 cur_line_ = &out;
-                error(0, "more than 1000000 lines or 32 MB of text in one pass (runaway REPT or macro recursion?)");
+                error(0, "more than " + std::to_string(opt_.max_lines_per_pass) +
+                             " lines or 32 MB of text in one pass (runaway REPT or macro recursion?)");
                 limit_reported_ = true;
             }
             ended_ = true;
